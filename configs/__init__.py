@@ -1,0 +1,1 @@
+"""Bundled unit files (TOML), installed as package data; see `pumpjack units`."""

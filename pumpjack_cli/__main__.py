@@ -1,0 +1,13 @@
+"""`python -m pumpjack_cli` and the `pumpjack` console script."""
+
+import sys
+
+from .cli import main
+
+
+def run() -> None:
+    sys.exit(main())
+
+
+if __name__ == "__main__":
+    run()

@@ -1,0 +1,317 @@
+"""Validated unit configs: geometry, masses, drive and motor, well.
+
+A unit file is TOML, YAML or JSON. Values are SI numbers or strings with a unit
+(``"3500 mm"``, ``"137.5 in"``, ``"1460 rpm"``), converted once here by
+:func:`pumpjack_cli.units.parse_quantity`; everything downstream is SI. Unknown keys
+are rejected. Geometry may be written with the GOST / Soviet-textbook names or the
+API Spec 11E letters (see ``docs/glossary.md``):
+
+=================  ======  ===========  ============================================
+field              GOST    API 11E      meaning
+=================  ======  ===========  ============================================
+front_arm          k1      A            centre bearing to horsehead arc (polished rod)
+rear_arm           k       C            centre bearing to equalizer bearing
+crank_radius       r       R            crank shaft to crank pin
+pitman             l       P            crank pin to equalizer bearing
+horizontal_offset  l1      I            crank shaft to centre bearing, horizontal
+vertical_offset    l2      H - G or     centre bearing above crank shaft;
+                           sqrt(K²-I²)  K is the straight distance
+=================  ======  ===========  ============================================
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from functools import partial
+from importlib import resources
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
+
+from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly
+from .errors import ConfigError, GeometryError
+from .units import parse_quantity
+
+
+def _quantity(dimension: str) -> BeforeValidator:
+    return BeforeValidator(partial(parse_quantity, dimension=dimension))
+
+
+Length = Annotated[float, _quantity("length")]
+Mass = Annotated[float, _quantity("mass")]
+MomentOfInertia = Annotated[float, _quantity("moment_of_inertia")]
+RotationalSpeed = Annotated[float, _quantity("rotational_speed")]
+Power = Annotated[float, _quantity("power")]
+Density = Annotated[float, _quantity("density")]
+KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
+Fraction = Annotated[float, _quantity("fraction")]
+
+
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+#: Accepted spellings of each geometry field: (GOST / Soviet textbook, API Spec 11E).
+GEOMETRY_ALIASES: dict[str, tuple[str, ...]] = {
+    "front_arm": ("k1", "A"),
+    "rear_arm": ("k", "C"),
+    "crank_radius": ("r", "R"),
+    "pitman": ("l", "P"),
+    "horizontal_offset": ("l1", "I"),
+    "vertical_offset": ("l2",),
+}
+
+
+class Geometry(_Section):
+    """Four-bar geometry of a conventional (class I) unit, rotation direction included."""
+
+    front_arm: Length = Field(gt=0, le=20, description="k1 / A: centre bearing to horsehead arc [m]")
+    rear_arm: Length = Field(gt=0, le=20, description="k / C: centre bearing to equalizer bearing [m]")
+    crank_radius: Length = Field(gt=0, le=5, description="r / R: crank shaft to crank pin [m]")
+    pitman: Length = Field(gt=0, le=20, description="l / P: crank pin to equalizer bearing [m]")
+    horizontal_offset: Length = Field(
+        ge=0, le=20, description="l1 / I: horizontal distance crank shaft - centre bearing [m]"
+    )
+    vertical_offset: Length = Field(
+        gt=0, le=20, description="l2 / H-G: height of the centre bearing above the crank shaft [m]"
+    )
+    rotation: Literal["clockwise", "counterclockwise"] = Field(
+        description="crank rotation seen with the well to the right"
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _names(cls, data: Any) -> Any:
+        """Map GOST names and API letters to field names; reject double definitions."""
+        if not isinstance(data, dict):
+            return data
+        data = dict(data)
+        api_height = [key for key in ("H", "G", "K") if key in data]
+        if api_height:
+            if "K" in data and ("H" in data or "G" in data):
+                raise ValueError("give either K or both H and G, not both")
+            if "K" not in data and not ("H" in data and "G" in data):
+                raise ValueError("API letters H and G come together (vertical offset = H - G)")
+        for field, aliases in GEOMETRY_ALIASES.items():
+            given = [name for name in (field, *aliases) if name in data]
+            if field == "vertical_offset" and api_height:
+                given.append("H and G" if "H" in data else "K")
+            if len(given) > 1:
+                raise ValueError(f"{field} is given twice (as {' and '.join(given)}); give one")
+            if given and given[0] != field and given[0] in aliases:
+                data[field] = data.pop(given[0])
+        if "H" in data and "G" in data:
+            data["vertical_offset"] = parse_quantity(data.pop("H"), "length") - parse_quantity(data.pop("G"), "length")
+        elif "K" in data:
+            k = parse_quantity(data.pop("K"), "length")
+            i = parse_quantity(data.get("horizontal_offset", 0.0), "length")
+            if not k > i:
+                raise ValueError(f"K = {k:.4g} m must exceed I = {i:.4g} m")
+            data["vertical_offset"] = math.sqrt(k * k - i * i)
+        rotation = data.get("rotation")
+        if isinstance(rotation, str):
+            data["rotation"] = {"cw": "clockwise", "ccw": "counterclockwise"}.get(rotation.lower(), rotation.lower())
+        return data
+
+    @model_validator(mode="after")
+    def _assembles(self) -> "Geometry":
+        try:
+            check_assembly(self.linkage())
+        except GeometryError as exc:
+            raise ValueError(str(exc)) from None
+        return self
+
+    def linkage(self) -> Linkage:
+        """The numerical core's view of this geometry."""
+        return Linkage(
+            front_arm=self.front_arm,
+            rear_arm=self.rear_arm,
+            crank_radius=self.crank_radius,
+            pitman=self.pitman,
+            horizontal_offset=self.horizontal_offset,
+            vertical_offset=self.vertical_offset,
+            rotation=CLOCKWISE if self.rotation == "clockwise" else COUNTERCLOCKWISE,
+        )
+
+
+class Masses(_Section):
+    """Masses of the moving links (seed 004 names in brackets)."""
+
+    crank_arm: Mass = Field(gt=0, le=2e4, description="one crank arm without counterweights (m_kr) [kg]")
+    pitman: Mass = Field(gt=0, le=5e3, description="one pitman (m_2) [kg]")
+    counterweight: Mass = Field(ge=0, le=5e3, description="one counterweight block (m_pr1) [kg]")
+    counterweight_count: int = Field(ge=0, le=16, description="number of counterweight blocks on both crank arms")
+    counterweight_radius: Length = Field(
+        ge=0, le=5, description="crank shaft to the centre of mass of the counterweights (r_pr) [m]"
+    )
+    beam: Mass = Field(gt=0, le=5e4, description="walking beam body (m_b) [kg]")
+    horsehead: Mass = Field(ge=0, le=2e4, description="horsehead (m_gb) [kg]")
+    equalizer: Mass = Field(ge=0, le=2e4, description="equalizer, cross-yoke (m_tr) [kg]")
+
+
+class Motor(_Section):
+    """Induction motor nameplate data (seed 004, eqs. 25-26)."""
+
+    model: str = Field(description="motor type designation")
+    rated_power: Power = Field(gt=0, le=1e6, description="rated shaft power [W]")
+    synchronous_speed: RotationalSpeed = Field(gt=0, le=400, description="synchronous speed n_s [rad/s]")
+    rated_speed: RotationalSpeed = Field(gt=0, le=400, description="rated speed n_n [rad/s]")
+    starting_torque_ratio: float = Field(gt=0, le=10, description="starting torque / rated torque")
+    breakdown_torque_ratio: float = Field(gt=1, le=10, description="pull-out (maximum) torque / rated torque")
+    rotor_inertia: MomentOfInertia = Field(gt=0, le=1e3, description="rotor moment of inertia [kg·m²]")
+
+    @model_validator(mode="after")
+    def _slip(self) -> "Motor":
+        if not self.rated_speed < self.synchronous_speed:
+            raise ValueError("rated_speed must be below synchronous_speed (an induction motor has slip)")
+        return self
+
+
+class Drive(_Section):
+    """Motor, V-belt drive and gearbox between the motor and the crank shaft."""
+
+    motor: Motor
+    gearbox: str = Field(description="gearbox type designation")
+    gearbox_ratio: float = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
+    motor_sheave_diameter: Length = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
+    gearbox_sheave_diameter: Length = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
+
+    @property
+    def belt_ratio(self) -> float:
+        """V-belt reduction u_belt = d_2 / d_1."""
+        return self.gearbox_sheave_diameter / self.motor_sheave_diameter
+
+    @property
+    def total_ratio(self) -> float:
+        """Motor speed / crank speed, u = u_r u_belt (belt slip neglected)."""
+        return self.gearbox_ratio * self.belt_ratio
+
+    @property
+    def rated_crank_speed(self) -> float:
+        """Crank speed at the motor's rated speed, omega_1 = pi n_n / (30 u) [1/s] (seed 004)."""
+        return self.motor.rated_speed / self.total_ratio
+
+
+class RodSection(_Section):
+    """One section of a tapered rod string."""
+
+    diameter: Length = Field(gt=0, le=0.06, description="rod diameter [m]")
+    fraction: Fraction = Field(gt=0, le=1, description="share of the string length (0..1, or '51 %')")
+
+
+class Well(_Section):
+    """Downhole data of the well the unit pumps (seed 004)."""
+
+    pump_depth: Length = Field(gt=0, le=5000, description="pump setting depth [m]")
+    plunger_diameter: Length = Field(gt=0, le=0.15, description="pump plunger diameter [m]")
+    rod_string: tuple[RodSection, ...] = Field(min_length=1, description="rod sections from the top down")
+    fluid_density: Density = Field(gt=100, le=2000, description="produced fluid density [kg/m³]")
+    fluid_kinematic_viscosity: KinematicViscosity = Field(
+        gt=0, le=1e-2, description="produced fluid kinematic viscosity [m²/s]"
+    )
+    tubing_inner_diameter: Length = Field(gt=0, le=0.2, description="tubing inner diameter [m]")
+
+    @model_validator(mode="after")
+    def _taper(self) -> "Well":
+        total = sum(section.fraction for section in self.rod_string)
+        if abs(total - 1.0) > 0.005:
+            raise ValueError(f"rod_string fractions add up to {total:.3f}, not 1")
+        return self
+
+
+class UnitConfig(_Section):
+    """A whole pumping unit: identification, geometry and optional masses, drive, well."""
+
+    name: str = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
+    description: str = Field(default="", description="one line shown by `pumpjack units`")
+    sources: tuple[str, ...] = Field(default=(), description="where the data come from")
+    geometry: Geometry
+    masses: Masses | None = None
+    drive: Drive | None = None
+    well: Well | None = None
+
+
+# --- reading files ---------------------------------------------------------------
+
+BUNDLED_PACKAGE = "pumpjack_cli.configs"
+SUFFIXES = (".toml", ".yaml", ".yml", ".json")
+
+
+def _parse_text(path: Path, text: str) -> Any:
+    suffix = path.suffix.lower()
+    try:
+        if suffix == ".toml":
+            return tomllib.loads(text)
+        if suffix == ".json":
+            return json.loads(text)
+        if suffix in (".yaml", ".yml"):
+            import yaml
+
+            return yaml.safe_load(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+    except json.JSONDecodeError as exc:
+        raise ConfigError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno}") from None
+    except Exception as exc:  # yaml.YAMLError; yaml is imported lazily
+        mark = getattr(exc, "problem_mark", None)
+        where = f" at line {mark.line + 1}" if mark is not None else ""
+        raise ConfigError(f"{path}: not valid YAML: {getattr(exc, 'problem', exc)}{where}") from None
+    raise ConfigError(f"{path}: unknown file type {suffix!r}; use one of {', '.join(SUFFIXES)}")
+
+
+def format_validation_error(source: str, error: ValidationError) -> str:
+    """One line naming the file, the field and what is wrong with it."""
+    first = error.errors()[0]
+    where = ".".join(str(part) for part in first["loc"]) or "(top level)"
+    message = first["msg"].removeprefix("Value error, ")
+    if first["type"] == "extra_forbidden":
+        message = "unknown key"
+    more = len(error.errors()) - 1
+    tail = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
+    return f"{source}: {where}: {message}{tail}"
+
+
+def parse_unit(data: Any, source: str) -> UnitConfig:
+    """Validate parsed file contents; ``source`` names the file in error messages."""
+    if not isinstance(data, dict):
+        raise ConfigError(f"{source}: expected a table of sections at the top level")
+    try:
+        return UnitConfig.model_validate(data)
+    except ValidationError as exc:
+        raise ConfigError(format_validation_error(source, exc)) from None
+
+
+def read_unit_file(path: Path) -> UnitConfig:
+    """Read and validate one unit file."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ConfigError(f"{path}: cannot read: {exc.strerror}") from None
+    return parse_unit(_parse_text(path, text), str(path))
+
+
+def bundled_units() -> dict[str, Path]:
+    """Bundled unit files by name (file stem), sorted."""
+    folder = resources.files(BUNDLED_PACKAGE)
+    return {
+        Path(entry.name).stem: Path(str(entry))
+        for entry in sorted(folder.iterdir(), key=lambda e: e.name)
+        if Path(entry.name).suffix in SUFFIXES
+    }
+
+
+def load_unit(spec: str) -> UnitConfig:
+    """A unit by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
+    path = Path(spec)
+    if path.suffix.lower() in SUFFIXES or path.exists():
+        if not path.exists():
+            raise ConfigError(f"{spec}: no such file")
+        return read_unit_file(path)
+    units = bundled_units()
+    key = spec.lower().replace(",", ".")
+    if key not in units:
+        raise ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(units)}")
+    return read_unit_file(units[key])

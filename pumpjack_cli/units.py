@@ -1,0 +1,149 @@
+"""Physical quantities at the edges: parsing field units on input, labelling output.
+
+Inside the package every number is SI (m, kg, s, N, rad). Config values may be plain
+numbers (taken as SI) or strings with a unit (``"3500 mm"``, ``"137.5 in"``,
+``"1460 rpm"``); :func:`parse_quantity` converts them once. The renderer converts
+results back for display through :data:`OUTPUT_QUANTITIES`.
+
+Conversion factors are exact definitions or the values of NIST Special Publication
+811 (2008), Appendix B (in = 0.0254 m, ft = 0.3048 m, lb = 0.45359237 kg,
+lbf = 4.4482216152605 N, kgf = 9.80665 N, hp = 745.699872 W).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from .errors import ConfigError
+
+INCH = 0.0254
+FOOT = 0.3048
+POUND_MASS = 0.45359237
+POUND_FORCE = 4.4482216152605
+KILOGRAM_FORCE = 9.80665
+HORSEPOWER = 745.69987158227022
+
+#: Accepted input units for each dimension: normalised unit text -> factor to SI.
+INPUT_UNITS: dict[str, dict[str, float]] = {
+    "length": {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "km": 1e3, "in": INCH, "ft": FOOT},
+    "mass": {"kg": 1.0, "t": 1e3, "g": 1e-3, "lb": POUND_MASS, "lbm": POUND_MASS},
+    "force": {
+        "n": 1.0,
+        "kn": 1e3,
+        "lbf": POUND_FORCE,
+        "klbf": 1e3 * POUND_FORCE,
+        "kgf": KILOGRAM_FORCE,
+        "tf": 1e3 * KILOGRAM_FORCE,
+    },
+    "torque": {
+        "n*m": 1.0,
+        "kn*m": 1e3,
+        "kgf*m": KILOGRAM_FORCE,
+        "lbf*in": POUND_FORCE * INCH,
+        "in*lbf": POUND_FORCE * INCH,
+        "lbf*ft": POUND_FORCE * FOOT,
+        "ft*lbf": POUND_FORCE * FOOT,
+    },
+    "moment_of_inertia": {
+        "kg*m2": 1.0,
+        "lb*ft2": POUND_MASS * FOOT**2,
+        "lb*in2": POUND_MASS * INCH**2,
+    },
+    "rotational_speed": {
+        "rad/s": 1.0,
+        "1/s": 1.0,
+        "rpm": 2 * math.pi / 60,
+        "1/min": 2 * math.pi / 60,
+        "spm": 2 * math.pi / 60,
+    },
+    "angle": {"rad": 1.0, "deg": math.pi / 180},
+    "power": {"w": 1.0, "kw": 1e3, "hp": HORSEPOWER},
+    "density": {"kg/m3": 1.0, "g/cm3": 1e3, "lb/ft3": POUND_MASS / FOOT**3},
+    "kinematic_viscosity": {"m2/s": 1.0, "mm2/s": 1e-6, "cst": 1e-6},
+    "fraction": {"%": 1e-2},
+}
+
+_NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+
+
+def _normalise_unit(text: str) -> str:
+    """Fold the spellings of a unit: case, multiplication dots, superscripts."""
+    text = text.lower().replace(" ", "")
+    for dot in ("·", "⋅", "×", "."):
+        text = text.replace(dot, "*")
+    return text.replace("²", "2").replace("³", "3").replace("^", "").replace("°", "deg")
+
+
+def parse_quantity(value: object, dimension: str) -> float:
+    """Convert a config value of the given dimension to an SI float.
+
+    Plain numbers are taken as SI. Strings carry a unit from :data:`INPUT_UNITS`;
+    a string without a unit is taken as SI. A decimal comma is rejected, never
+    guessed (``"3,5 m"`` could be 3.5 m or 35 m).
+
+    >>> parse_quantity("3500 mm", "length")
+    3.5
+    >>> round(parse_quantity("137.5 in", "length"), 6)
+    3.4925
+    >>> round(parse_quantity("1460 rpm", "rotational_speed"), 4)
+    152.8909
+    """
+    if isinstance(value, bool):
+        raise ValueError("expected a number or a string with a unit, got a boolean")
+    if isinstance(value, (int, float)):
+        return float(value)
+    if not isinstance(value, str):
+        raise ValueError(f"expected a number or a string with a unit, got {type(value).__name__}")
+    if re.search(r"\d,\d", value):
+        raise ValueError(f"{value!r} has a decimal comma, which is ambiguous: write it with a point")
+    match = _NUMBER.match(value)
+    if not match:
+        raise ValueError(f"{value!r} is not a number with a unit")
+    number, unit = float(match.group(1)), _normalise_unit(match.group(2))
+    if not unit:
+        return number
+    units = INPUT_UNITS[dimension]
+    if unit not in units:
+        for other, table in INPUT_UNITS.items():
+            if unit in table:
+                raise ValueError(f"{value!r} is a {other.replace('_', ' ')}, not a {dimension.replace('_', ' ')}")
+        raise ValueError(f"unknown unit {match.group(2)!r} for a {dimension.replace('_', ' ')}; use one of {', '.join(units)}")
+    return number * units[unit]
+
+
+@dataclass(frozen=True)
+class OutputUnit:
+    """How one quantity is shown: a label, a column-name suffix and a scale from SI."""
+
+    label: str
+    suffix: str
+    scale: float
+
+
+#: Output quantities: kind -> (SI display, oilfield display). Angles are shown in
+#: degrees in both systems; the internal value is radians.
+OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
+    "angle": {"si": OutputUnit("deg", "deg", 180 / math.pi), "field": OutputUnit("deg", "deg", 180 / math.pi)},
+    "time": {"si": OutputUnit("s", "s", 1.0), "field": OutputUnit("s", "s", 1.0)},
+    "length": {"si": OutputUnit("m", "m", 1.0), "field": OutputUnit("in", "in", 1 / INCH)},
+    "velocity": {"si": OutputUnit("m/s", "m_s", 1.0), "field": OutputUnit("ft/s", "ft_s", 1 / FOOT)},
+    "acceleration": {"si": OutputUnit("m/s²", "m_s2", 1.0), "field": OutputUnit("ft/s²", "ft_s2", 1 / FOOT)},
+    "angular_velocity": {"si": OutputUnit("rad/s", "rad_s", 1.0), "field": OutputUnit("rad/s", "rad_s", 1.0)},
+    "angular_acceleration": {
+        "si": OutputUnit("rad/s²", "rad_s2", 1.0),
+        "field": OutputUnit("rad/s²", "rad_s2", 1.0),
+    },
+    "stroke_rate": {"si": OutputUnit("1/min", "spm", 60 / (2 * math.pi)), "field": OutputUnit("1/min", "spm", 60 / (2 * math.pi))},
+    "force": {"si": OutputUnit("N", "n", 1.0), "field": OutputUnit("lbf", "lbf", 1 / POUND_FORCE)},
+    "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
+    "percent": {"si": OutputUnit("%", "pct", 100.0), "field": OutputUnit("%", "pct", 100.0)},
+}
+
+UNIT_SYSTEMS = ("si", "field")
+
+
+def output_unit(quantity: str, system: str) -> OutputUnit:
+    """The display unit of a quantity kind in a unit system (``"si"`` or ``"field"``)."""
+    return OUTPUT_QUANTITIES[quantity][system]
