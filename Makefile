@@ -1,0 +1,23 @@
+# A virtual environment in .venv, installed once per change of pyproject.toml.
+PYTHON ?= python3
+VENV := .venv
+STAMP := $(VENV)/.installed-stamp
+
+.PHONY: demo test bench
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(VENV)/bin/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+# The main job on a bundled unit: exact kinematics of SK8-3,5-4000 (seed 004).
+demo: $(STAMP)
+	$(VENV)/bin/pumpjack kinematics sk8-3.5-4000 --format table
+
+# The whole test suite (unit, validation, CLI, doctests).
+test: $(STAMP)
+	$(VENV)/bin/python -m pytest -q
+
+bench: $(STAMP)
+	PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(VENV)/bin/python benchmarks/bench_kinematics.py
