@@ -91,7 +91,7 @@ def _display_values(column: Column, values, system: str) -> list:
     """A column's values in display units (text columns pass through)."""
     if column.quantity == TEXT:
         return list(values)
-    return (np.asarray(values, dtype=float) * output_unit(column.quantity, system).scale).tolist()
+    return output_unit(column.quantity, system).convert(np.asarray(values, dtype=float)).tolist()
 
 
 def _unit_label(quantity: str, system: str) -> str:
@@ -101,7 +101,7 @@ def _unit_label(quantity: str, system: str) -> str:
 def converted_summary(report: Report, system: str) -> dict[str, float]:
     """Summary values in the display units of ``system``, keyed by suffixed name."""
     return {
-        display_name(s.name, s.quantity, system): s.value * output_unit(s.quantity, system).scale
+        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(s.value))
         for s in report.summary
     }
 
@@ -175,7 +175,7 @@ def write_table(report: Report, system: str, stream: TextIO, width: int | None =
         summary.add_column(heading, justify="right" if heading == "value" else "left")
     for s in report.summary:
         unit = output_unit(s.quantity, system)
-        summary.add_row(s.name, _format(s.value * unit.scale), escape(unit.label), escape(s.description))
+        summary.add_row(s.name, _format(unit.convert(s.value)), escape(unit.label), escape(s.description))
     if report.summary:
         console.print(summary)
     brief = [c for c in report.columns if c.brief]
@@ -202,13 +202,13 @@ def write_plot(report: Report, system: str, path: Path) -> None:
 
     x_col = report.columns[0]
     x_unit = output_unit(x_col.quantity, system)
-    x = np.asarray(report.series[x_col.name]) * x_unit.scale
+    x = x_unit.convert(np.asarray(report.series[x_col.name]))
     fig, axes = plt.subplots(len(report.panels), 1, sharex=True, figsize=(8, 2.6 * len(report.panels)))
     for ax, panel in zip(np.atleast_1d(axes), report.panels):
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
                 unit = output_unit(report.column(name).quantity, system)
-                ax.plot(x, np.asarray(report.series[name]) * unit.scale, style, label=name)
+                ax.plot(x, unit.convert(np.asarray(report.series[name])), style, label=name)
         unit = output_unit(report.column(panel.solid[0]).quantity, system)
         ax.set_ylabel(f"{panel.title} [{unit.label}]")
         ax.grid(True, alpha=0.3)
@@ -239,6 +239,9 @@ class atomic_path:
 
     def __exit__(self, exc_type, exc, tb) -> None:
         if exc_type is None:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the usual mode
             os.replace(self.tmp, self.path)
         else:
             self.tmp.unlink(missing_ok=True)

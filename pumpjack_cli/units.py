@@ -16,6 +16,8 @@ import math
 import re
 from dataclasses import dataclass
 
+import numpy as np
+
 from .errors import ConfigError
 
 INCH = 0.0254
@@ -115,17 +117,27 @@ def parse_quantity(value: object, dimension: str) -> float:
 
 @dataclass(frozen=True)
 class OutputUnit:
-    """How one quantity is shown: a label, a column-name suffix and a scale from SI."""
+    """How one quantity is shown: a label, a column-name suffix, a scale from SI and,
+    for angles, the decimals kept (so that 60 degrees prints as 60.0, not
+    59.99999999999999 after the round trip through radians)."""
 
     label: str
     suffix: str
     scale: float
+    decimals: int | None = None
 
+    def convert(self, si_values):
+        """SI value(s) -> display value(s)."""
+        shown = np.multiply(si_values, self.scale)
+        return shown if self.decimals is None else np.round(shown, self.decimals)
+
+
+_DEGREES = OutputUnit("deg", "deg", 180 / math.pi, decimals=9)
 
 #: Output quantities: kind -> (SI display, oilfield display). Angles are shown in
-#: degrees in both systems; the internal value is radians.
+#: degrees in both systems, to 1e-9 degree; the internal value is radians.
 OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
-    "angle": {"si": OutputUnit("deg", "deg", 180 / math.pi), "field": OutputUnit("deg", "deg", 180 / math.pi)},
+    "angle": {"si": _DEGREES, "field": _DEGREES},
     "time": {"si": OutputUnit("s", "s", 1.0), "field": OutputUnit("s", "s", 1.0)},
     "length": {"si": OutputUnit("m", "m", 1.0), "field": OutputUnit("in", "in", 1 / INCH)},
     "velocity": {"si": OutputUnit("m/s", "m_s", 1.0), "field": OutputUnit("ft/s", "ft_s", 1 / FOOT)},
