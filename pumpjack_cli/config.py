@@ -31,7 +31,7 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
 
-from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly
+from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
 from .errors import ConfigError, GeometryError
 from .units import parse_quantity
 
@@ -225,6 +225,7 @@ class Well(_Section):
 class UnitConfig(_Section):
     """A whole pumping unit: identification, geometry and optional masses, drive, well."""
 
+    kind: Literal["beam-pump"] = Field(default="beam-pump", description="machine kind (see UNIT_KINDS)")
     name: str = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
     description: str = Field(default="", description="one line shown by `pumpjack units`")
     sources: tuple[str, ...] = Field(default=(), description="where the data come from")
@@ -232,6 +233,12 @@ class UnitConfig(_Section):
     masses: Masses | None = None
     drive: Drive | None = None
     well: Well | None = None
+
+    def stroke(self) -> float:
+        """Exact polished-rod stroke [m], from the dead positions of the four-bar."""
+        linkage = self.geometry.linkage()
+        dead = dead_positions(linkage)
+        return linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
 
 
 # --- reading files ---------------------------------------------------------------
@@ -274,17 +281,24 @@ def format_validation_error(source: str, error: ValidationError) -> str:
     return f"{source}: {where}: {message}{tail}"
 
 
-def parse_unit(data: Any, source: str) -> UnitConfig:
+#: Machine kinds a file can describe, by its top-level ``kind`` key (default beam-pump).
+UNIT_KINDS: dict[str, type[BaseModel]] = {"beam-pump": UnitConfig}
+
+
+def parse_unit(data: Any, source: str) -> BaseModel:
     """Validate parsed file contents; ``source`` names the file in error messages."""
     if not isinstance(data, dict):
         raise ConfigError(f"{source}: expected a table of sections at the top level")
+    kind = data.get("kind", "beam-pump")
+    if kind not in UNIT_KINDS:
+        raise ConfigError(f"{source}: kind: unknown machine kind {kind!r}; use one of {', '.join(UNIT_KINDS)}")
     try:
-        return UnitConfig.model_validate(data)
+        return UNIT_KINDS[kind].model_validate(data)
     except ValidationError as exc:
         raise ConfigError(format_validation_error(source, exc)) from None
 
 
-def read_unit_file(path: Path) -> UnitConfig:
+def read_unit_file(path: Path) -> BaseModel:
     """Read and validate one unit file."""
     try:
         text = path.read_text(encoding="utf-8")
@@ -303,8 +317,8 @@ def bundled_units() -> dict[str, Path]:
     }
 
 
-def load_unit(spec: str) -> UnitConfig:
-    """A unit by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
+def load_any_unit(spec: str) -> BaseModel:
+    """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
     path = Path(spec)
     if path.suffix.lower() in SUFFIXES or path.exists():
         if not path.exists():
@@ -315,3 +329,11 @@ def load_unit(spec: str) -> UnitConfig:
     if key not in units:
         raise ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(units)}")
     return read_unit_file(units[key])
+
+
+def load_unit(spec: str) -> UnitConfig:
+    """A beam pumping unit by bundled name or file path; other machine kinds are an error."""
+    config = load_any_unit(spec)
+    if not isinstance(config, UnitConfig):
+        raise ConfigError(f"{spec}: is a {config.kind} machine, not a beam pumping unit")
+    return config
