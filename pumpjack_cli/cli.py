@@ -8,7 +8,6 @@ the traceback instead.
 from __future__ import annotations
 
 import sys
-from typing import Annotated
 
 import typer
 
@@ -19,7 +18,7 @@ from .errors import PumpjackError
 app = typer.Typer(
     name="pumpjack",
     help="Engineering calculator for beam pumping units: exact kinematics and more.",
-    no_args_is_help=True,
+    epilog="Add --debug anywhere on the command line to see a traceback on errors.",
     add_completion=False,
     pretty_exceptions_enable=False,
 )
@@ -28,9 +27,7 @@ app.command("kinematics")(kinematics)
 
 
 @app.callback()
-def _root(
-    debug: Annotated[bool, typer.Option("--debug", help="show a traceback on errors")] = False,
-) -> None:
+def _root() -> None:
     """Engineering calculator for beam pumping units (pumpjacks)."""
 
 
@@ -43,6 +40,7 @@ def main(argv: list[str] | None = None) -> int:
     """Run the CLI; return the exit code (console-script entry point)."""
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
+    args = [arg for arg in args if arg != "--debug"] or ["--help"]
     command = typer.main.get_command(app)
     try:
         code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)

@@ -29,7 +29,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, Strict, ValidationError, model_validator
 
 from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
 from .errors import ConfigError, GeometryError
@@ -48,6 +48,9 @@ Power = Annotated[float, _quantity("power")]
 Density = Annotated[float, _quantity("density")]
 KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
 Fraction = Annotated[float, _quantity("fraction")]
+#: Plain numbers without a unit; strict so that ``true`` is not read as 1.
+Number = Annotated[float, Strict()]
+Count = Annotated[int, Strict()]
 
 
 class _Section(BaseModel):
@@ -143,7 +146,7 @@ class Masses(_Section):
     crank_arm: Mass = Field(gt=0, le=2e4, description="one crank arm without counterweights (m_kr) [kg]")
     pitman: Mass = Field(gt=0, le=5e3, description="one pitman (m_2) [kg]")
     counterweight: Mass = Field(ge=0, le=5e3, description="one counterweight block (m_pr1) [kg]")
-    counterweight_count: int = Field(ge=0, le=16, description="number of counterweight blocks on both crank arms")
+    counterweight_count: Count = Field(ge=0, le=16, description="number of counterweight blocks on both crank arms")
     counterweight_radius: Length = Field(
         ge=0, le=5, description="crank shaft to the centre of mass of the counterweights (r_pr) [m]"
     )
@@ -159,8 +162,8 @@ class Motor(_Section):
     rated_power: Power = Field(gt=0, le=1e6, description="rated shaft power [W]")
     synchronous_speed: RotationalSpeed = Field(gt=0, le=400, description="synchronous speed n_s [rad/s]")
     rated_speed: RotationalSpeed = Field(gt=0, le=400, description="rated speed n_n [rad/s]")
-    starting_torque_ratio: float = Field(gt=0, le=10, description="starting torque / rated torque")
-    breakdown_torque_ratio: float = Field(gt=1, le=10, description="pull-out (maximum) torque / rated torque")
+    starting_torque_ratio: Number = Field(gt=0, le=10, description="starting torque / rated torque")
+    breakdown_torque_ratio: Number = Field(gt=1, le=10, description="pull-out (maximum) torque / rated torque")
     rotor_inertia: MomentOfInertia = Field(gt=0, le=1e3, description="rotor moment of inertia [kg·m²]")
 
     @model_validator(mode="after")
@@ -175,7 +178,7 @@ class Drive(_Section):
 
     motor: Motor
     gearbox: str = Field(description="gearbox type designation")
-    gearbox_ratio: float = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
+    gearbox_ratio: Number = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
     motor_sheave_diameter: Length = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
     gearbox_sheave_diameter: Length = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
 

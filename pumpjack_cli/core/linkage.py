@@ -115,9 +115,13 @@ def check_assembly(linkage: Linkage) -> None:
         "rear_arm": linkage.rear_arm,
         "crank_radius": linkage.crank_radius,
         "pitman": linkage.pitman,
+        "horizontal_offset": linkage.horizontal_offset,
+        "vertical_offset": linkage.vertical_offset,
     }
     for name, value in lengths.items():
-        if not value > 0:
+        if not np.isfinite(value):
+            raise GeometryError(f"{name} must be a finite length, got {value}")
+        if name not in ("horizontal_offset", "vertical_offset") and not value > 0:
             raise GeometryError(f"{name} must be positive, got {value} m")
     k, r, p, c = linkage.frame_length, linkage.crank_radius, linkage.pitman, linkage.rear_arm
     if k + r >= p + c:
@@ -132,7 +136,7 @@ def check_assembly(linkage: Linkage) -> None:
             f"the unit cannot assemble: with the crank pin nearest the centre bearing "
             f"(K - R = {k:.4g} - {r:.4g} = {k - r:.4g} m) the pitman and rear arm "
             f"(|P - C| = |{p:.4g} - {c:.4g}| = {abs(p - c):.4g} m) fold past each other; "
-            f"crank_radius is too large or the offsets too small for this pitman and rear arm"
+            f"crank_radius is too large or the offsets too small for this pitman/rear_arm"
         )
 
 
