@@ -48,6 +48,7 @@ Power = Annotated[float, _quantity("power")]
 Density = Annotated[float, _quantity("density")]
 KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
 Fraction = Annotated[float, _quantity("fraction")]
+Angle = Annotated[float, _quantity("angle")]
 #: Plain numbers without a unit; strict so that ``true`` is not read as 1.
 Number = Annotated[float, Strict()]
 Count = Annotated[int, Strict()]
@@ -83,6 +84,13 @@ class Geometry(_Section):
     )
     rotation: Literal["clockwise", "counterclockwise"] = Field(
         description="crank rotation seen with the well to the right"
+    )
+    crank_half_spacing: Length | None = Field(
+        default=None, gt=0, le=5,
+        description="spatial model: crank shaft mid-plane to each crank pin, along the shaft [m]",
+    )
+    equalizer_half_length: Length | None = Field(
+        default=None, gt=0, le=5, description="spatial model: equalizer bearing D to each pin, BD = DB1 [m]"
     )
 
     @model_validator(mode="before")
@@ -140,19 +148,75 @@ class Geometry(_Section):
         )
 
 
-class Masses(_Section):
-    """Masses of the moving links (seed 004 names in brackets)."""
+class CrankArm(_Section):
+    """One of the two crank arms of the double crank (link 1), without counterweights."""
 
-    crank_arm: Mass = Field(gt=0, le=2e4, description="one crank arm without counterweights (m_kr) [kg]")
-    pitman: Mass = Field(gt=0, le=5e3, description="one pitman (m_2) [kg]")
-    counterweight: Mass = Field(ge=0, le=5e3, description="one counterweight block (m_pr1) [kg]")
-    counterweight_count: Count = Field(ge=0, le=16, description="number of counterweight blocks on both crank arms")
-    counterweight_radius: Length = Field(
-        ge=0, le=5, description="crank shaft to the centre of mass of the counterweights (r_pr) [m]"
+    mass: Mass = Field(gt=0, le=2e4, description="one crank arm (m_kr, m_1) [kg]")
+    cg_radius: Length = Field(
+        ge=0, le=5, description="crank shaft to the arm's centre of mass, towards the crank pin (OS_1) [m]"
     )
-    beam: Mass = Field(gt=0, le=5e4, description="walking beam body (m_b) [kg]")
-    horsehead: Mass = Field(ge=0, le=2e4, description="horsehead (m_gb) [kg]")
-    equalizer: Mass = Field(ge=0, le=2e4, description="equalizer, cross-yoke (m_tr) [kg]")
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about its centre of mass, axis along the crank shaft [kg·m²]"
+    )
+
+
+class Counterweights(_Section):
+    """Counterweight blocks on the crank arms, treated as point masses at their centre of mass."""
+
+    mass: Mass = Field(ge=0, le=5e3, description="one block (m_pr1) [kg]")
+    count: Count = Field(ge=0, le=16, description="number of blocks on both arms together (shared equally)")
+    radius: Length = Field(ge=0, le=5, description="crank shaft to the blocks' centre of mass (r_pr, OS_pr) [m]")
+    phase: Angle = Field(
+        default=math.pi, ge=0, lt=2 * math.pi,
+        description="angle from the crank pin direction to the blocks' centre of mass, in the direction of rotation [rad]",
+    )
+
+
+class Pitman(_Section):
+    """One pitman (links 2 and 3 are equal)."""
+
+    mass: Mass = Field(gt=0, le=5e3, description="one pitman (m_2) [kg]")
+    cg_from_crank_pin: Length = Field(
+        ge=0, le=20, description="crank pin A to the centre of mass, along the pitman (AS_2) [m]"
+    )
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about its centre of mass, across the pitman (J_S2) [kg·m²]"
+    )
+
+
+class Equalizer(_Section):
+    """Equalizer (cross-yoke, link 4); centre of mass at its bearing D on the beam."""
+
+    mass: Mass = Field(ge=0, le=2e4, description="equalizer (m_tr, m_4) [kg]")
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about D, axis along the crank shaft (its pin line BB1) [kg·m²]"
+    )
+    transverse_inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about D, axes across the pin line [kg·m²]"
+    )
+
+
+class BeamPart(_Section):
+    """The walking beam body or the horsehead; centre of mass on the beam line D-C-E."""
+
+    mass: Mass = Field(ge=0, le=5e4, description="mass [kg]")
+    cg: Length = Field(
+        ge=-20, le=20, description="centre bearing C to the centre of mass along the beam, towards the well positive [m]"
+    )
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e6, description="moment of inertia about its centre of mass, axis along the crank shaft [kg·m²]"
+    )
+
+
+class Masses(_Section):
+    """Masses, centres of mass and inertias of the moving links (seed 000/003/004 names in brackets)."""
+
+    crank_arm: CrankArm
+    counterweights: Counterweights
+    pitman: Pitman
+    equalizer: Equalizer
+    beam: BeamPart = Field(description="walking beam body (m_b, m_bal)")
+    horsehead: BeamPart = Field(description="horsehead (m_gb)")
 
 
 class Motor(_Section):

@@ -133,13 +133,14 @@ def test_sk8_geometry_seed_004(sk8):
 def test_sk8_masses_seed_004(sk8):
     m = sk8.masses
     assert m is not None
-    expected = {"crank_arm": 1373.0, "pitman": 130.0, "counterweight": 650.0, "counterweight_radius": 0.83,
+    expected = {"crank_arm": 1373.0, "pitman": 130.0, "counterweights": 650.0,
                 "beam": 1220.0, "horsehead": 490.0, "equalizer": 495.0}
     for field, value in expected.items():
-        assert getattr(m, field) == pytest.approx(value, rel=REL_UNIT), field
-    assert m.counterweight_count == 8
+        assert getattr(m, field).mass == pytest.approx(value, rel=REL_UNIT), field
+    assert m.counterweights.radius == pytest.approx(0.83, rel=REL_UNIT)
+    assert m.counterweights.count == 8
     # Seed 004: counterweights of 5200 kg in all.
-    assert m.counterweight * m.counterweight_count == pytest.approx(5200.0, rel=REL_UNIT)
+    assert m.counterweights.mass * m.counterweights.count == pytest.approx(5200.0, rel=REL_UNIT)
 
 
 def test_sk8_drive_seed_004(sk8):
@@ -277,21 +278,21 @@ INVALID = [
     ("negative-length", _set("geometry.r", "-1 m"), "geometry.crank_radius", "greater than 0"),
     ("negative-plain-number", _set("geometry.l", -3.0), "geometry.pitman", "greater than 0"),
     ("zero-length", _set("geometry.k", 0), "geometry.rear_arm", "greater than 0"),
-    ("zero-mass", _set("masses.pitman", "0 kg"), "masses.pitman", "greater than 0"),
+    ("zero-mass", _set("masses.pitman.mass", "0 kg"), "masses.pitman.mass", "greater than 0"),
     ("zero-rod-diameter", _set("well.rod_string.0.diameter", 0), "well.rod_string.0.diameter", "greater than 0"),
     ("unknown-top-level-key", _set("colour", "red"), "colour", "unknown key"),
     ("unknown-key-in-geometry", _set("geometry.stroke", "3 m"), "geometry.stroke", "unknown key"),
     ("unknown-key-in-motor", _set("drive.motor.voltage", 380), "drive.motor.voltage", "unknown key"),
     ("unknown-key-in-rod", _set("well.rod_string.1.grade", "D"), "well.rod_string.1.grade", "unknown key"),
     ("mass-for-length", _set("geometry.k1", "3500 kg"), "geometry.front_arm", "is a mass, not a length"),
-    ("length-for-mass", _set("masses.pitman", "130 m"), "masses.pitman", "is a length, not a mass"),
+    ("length-for-mass", _set("masses.pitman.mass", "130 m"), "masses.pitman.mass", "is a length, not a mass"),
     ("mass-for-speed", _set("drive.motor.rated_speed", "1460 kg"), "drive.motor.rated_speed",
      "is a mass, not a rotational speed"),
     ("mass-for-rod-diameter", _set("well.rod_string.0.diameter", "19 kg"), "well.rod_string.0.diameter",
      "is a mass, not a length"),
     ("unknown-unit", _set("well.fluid_density", "820 furlongs"), "well.fluid_density", "unknown unit"),
     ("decimal-comma", _set("geometry.l", "3,0 m"), "geometry.pitman", "decimal comma"),
-    ("decimal-comma-in-mass", _set("masses.counterweight_radius", "0,83 m"), "masses.counterweight_radius",
+    ("decimal-comma-in-mass", _set("masses.counterweights.radius", "0,83 m"), "masses.counterweights.radius",
      "decimal comma"),
     ("boolean-length", _set("geometry.l1", True), "geometry.horizontal_offset", "boolean"),
     ("rated-equals-synchronous", _set("drive.motor.rated_speed", "1500 rpm"), "drive.motor",
@@ -307,9 +308,9 @@ INVALID = [
     ("rotation-not-text", _set("geometry.rotation", 1), "geometry.rotation", "'clockwise' or 'counterclockwise'"),
     ("front-arm-above-20m", _set("geometry.k1", "21 m"), "geometry.front_arm", "less than or equal to 20"),
     ("crank-radius-above-5m", _set("geometry.r", "6 m"), "geometry.crank_radius", "less than or equal to 5"),
-    ("counterweights-above-16", _set("masses.counterweight_count", 17), "masses.counterweight_count",
+    ("counterweights-above-16", _set("masses.counterweights.count", 17), "masses.counterweights.count",
      "less than or equal to 16"),
-    ("counterweight-count-fractional", _set("masses.counterweight_count", 8.5), "masses.counterweight_count",
+    ("counterweight-count-fractional", _set("masses.counterweights.count", 8.5), "masses.counterweights.count",
      "valid integer"),
     ("rod-diameter-above-60mm", _set("well.rod_string.0.diameter", "61 mm"), "well.rod_string.0.diameter",
      "less than or equal to 0.06"),
@@ -359,7 +360,7 @@ def test_default_kind_is_beam_pump():
 def test_several_problems_are_counted():
     data = _sk8_data()
     data["geometry"]["k"] = -1
-    data["masses"]["pitman"] = -1
+    data["masses"]["pitman"]["mass"] = -1
     with pytest.raises(ConfigError, match=r"\(and 1 more problem\)"):
         parse_unit(data, "x.toml")
 
@@ -379,7 +380,7 @@ def test_optional_sections_may_be_absent():
     assert config.masses is None and config.drive is None and config.well is None
 
 
-@pytest.mark.parametrize("path", ["masses.counterweight_count", "drive.motor.starting_torque_ratio"])
+@pytest.mark.parametrize("path", ["masses.counterweights.count", "drive.motor.starting_torque_ratio"])
 def test_boolean_rejected_for_plain_number_fields(path):
     data = _sk8_data()
     _set(path, True)(data)
