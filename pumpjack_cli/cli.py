@@ -11,6 +11,7 @@ import sys
 
 import typer
 
+from .commands.inertia_error import inertia_error
 from .commands.kinematics import kinematics
 from .commands.units import units
 from .errors import PumpjackError
@@ -24,6 +25,7 @@ app = typer.Typer(
 )
 app.command("units")(units)
 app.command("kinematics")(kinematics)
+app.command("inertia-error")(inertia_error)
 
 
 @app.callback()

@@ -65,6 +65,7 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     "density": {"kg/m3": 1.0, "g/cm3": 1e3, "lb/ft3": POUND_MASS / FOOT**3},
     "kinematic_viscosity": {"m2/s": 1.0, "mm2/s": 1e-6, "cst": 1e-6},
     "fraction": {"%": 1e-2},
+    "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "psi": POUND_FORCE / INCH**2},
 }
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
@@ -151,6 +152,7 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "force": {"si": OutputUnit("N", "n", 1.0), "field": OutputUnit("lbf", "lbf", 1 / POUND_FORCE)},
     "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
     "percent": {"si": OutputUnit("%", "pct", 100.0), "field": OutputUnit("%", "pct", 100.0)},
+    "ratio": {"si": OutputUnit("1", "ratio", 1.0), "field": OutputUnit("1", "ratio", 1.0)},
 }
 
 UNIT_SYSTEMS = ("si", "field")

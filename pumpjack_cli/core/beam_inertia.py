@@ -1,0 +1,122 @@
+"""Inertia-force laws of the polished rod of a beam pumping unit (seed 001 eqs. 5-7).
+
+Exact: the polished rod moves with the horsehead arc, s = A (psi - psi_bottom)
+(:mod:`pumpjack_cli.core.kinematics`; seed 001 eqs. 5-6 write the same exact force with
+the rocker arms l31 = A and l32 = C). Approximations compared with it:
+
+* ``harmonic`` and ``two_term``: the elementary and refined textbook theories of
+  :func:`pumpjack_cli.core.kinematics.approximate_motion`;
+* ``chord``: the equalizer bearing B is taken to move along the chord of its arc
+  between the two dead positions instead of the arc (seed 001: "the motion of the
+  suspension point along the arc is neglected, it is taken to move along the chord",
+  its ref. [1]), and the polished rod moves A/C times as far. The crank, pitman and the
+  chord then form an offset slider-crank (:mod:`pumpjack_cli.core.slider_crank`) whose
+  line of stroke is the chord, inclined to the frame. Seed eq. 7 (with the tilt psi of
+  the post of length l0) is illegible in the extracted text; this is our reconstruction
+  of the same assumption, exact for the chord so that only the arc-to-chord step is
+  approximated.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .kinematics import APPROXIMATIONS, RodMotion, approximate_motion, crank_grid, rod_motion
+from .linkage import Linkage, dead_positions, motion
+from .slider_crank import DENSE_STEPS, InertiaComparison, SliderCrank, exact_motion, law_errors, peak
+
+
+def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
+    """The offset slider-crank of the chord law: (mechanism, phase [rad], direction).
+
+    The chord runs through the equalizer-bearing positions B_bottom and B_top of the two
+    dead positions (|OB| = P + R and P - R). Its axis n is the chord direction signed so
+    that (B_bottom - O) . n > 0 (the slider-crank branch with the rod pointing along n).
+    The crank pin direction in the frame is pi/2 - rotation * theta (theta: the unit's
+    crank angle from 12 o'clock, :mod:`pumpjack_cli.core.linkage`), so in the chord frame
+    it is gamma = pi/2 - rotation * theta - angle(n); mirroring the frame across n by
+    m = -rotation makes phi = m gamma = phase + theta grow with time, with the offset
+    e = m (B_bottom - O) . n_perp. ``direction`` is +1 if n points from B_bottom to B_top
+    (the polished rod rises as B moves along n), else -1.
+    """
+    dead = dead_positions(linkage)
+    o = linkage.crank_shaft
+    b_bottom, b_top = (-linkage.rear_arm * np.array([np.cos(psi), np.sin(psi)])
+                       for psi in (dead.beam_angle_bottom, dead.beam_angle_top))
+    chord = (b_top - b_bottom) / np.hypot(*(b_top - b_bottom))
+    direction = 1.0 if np.dot(b_bottom - o, chord) > 0 else -1.0
+    axis = direction * chord
+    across = np.array([-axis[1], axis[0]])
+    mirror = -linkage.rotation
+    axis_angle = float(np.arctan2(axis[1], axis[0]))
+    offset = mirror * float(np.dot(b_bottom - o, across))
+    phase = mirror * (0.5 * np.pi - axis_angle)
+    return SliderCrank(linkage.crank_radius, linkage.pitman, offset), phase, direction
+
+
+def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> RodMotion:
+    """Polished-rod motion under the chord law for uniform rotation at ``omega`` [1/s].
+
+    s = (A/C) d (x(phi) - x(phi_bottom)), v and a likewise from the exact offset
+    slider-crank (:func:`pumpjack_cli.core.slider_crank.exact_motion`) with
+    phi = phase + theta (so d/dt = omega d/dphi), d the
+    ``direction`` of :func:`chord_slider_crank`. The stroke is (A/C) times the chord,
+    2 A sin((psi_top - psi_bottom)/2).
+    """
+    mechanism, phase, direction = chord_slider_crank(linkage)
+    theta = np.asarray(crank_angle, dtype=float)
+    phi = phase + theta
+    bottom = phase + dead_positions(linkage).crank_angle_bottom
+    slider = exact_motion(mechanism, phi, omega)
+    start = exact_motion(mechanism, np.array(bottom), omega).position
+    scale = direction * linkage.front_arm / linkage.rear_arm
+    return RodMotion(
+        position=scale * (slider.position - start),
+        velocity=scale * slider.velocity,
+        acceleration=scale * slider.acceleration,
+    )
+
+
+#: Approximate polished-rod laws: the textbook ones and the chord law.
+BEAM_LAWS = (*APPROXIMATIONS, "chord")
+
+
+def _rod_laws(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
+    """Exact polished-rod motion and the acceleration of every law of :data:`BEAM_LAWS`."""
+    dead = dead_positions(linkage)
+    m = motion(linkage, crank_angle)
+    exact = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
+    from_bottom = crank_angle - dead.crank_angle_bottom
+    laws = {name: approximate_motion(name, linkage, from_bottom, omega).acceleration for name in APPROXIMATIONS}
+    laws["chord"] = chord_motion(linkage, crank_angle, omega).acceleration
+    return exact, laws
+
+
+def beam_inertia_laws(linkage: Linkage, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
+    """Exact polished-rod motion and every law of :data:`BEAM_LAWS` on ``crank_angle``
+    [rad], uniform rotation at ``omega`` [1/s]; peaks and errors on the dense grid.
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> c = beam_inertia_laws(sk8, 1.1422, crank_grid(12))
+    >>> round(c.stroke, 4), sorted(c.errors)
+    (2.9128, ['chord', 'harmonic', 'two_term'])
+    """
+    if not omega > 0:
+        raise ValueError(f"crank speed must be positive, got {omega} 1/s")
+    theta = np.asarray(crank_angle, dtype=float)
+    dead = dead_positions(linkage)
+    exact, laws = _rod_laws(linkage, theta, omega)
+    dense = crank_grid(DENSE_STEPS)
+    dense_exact, dense_laws = _rod_laws(linkage, dense, omega)
+    exact_peak, exact_angle = peak(dense, dense_exact.acceleration)
+    return InertiaComparison(
+        crank_angle=theta,
+        position=exact.position,
+        velocity=exact.velocity,
+        acceleration=exact.acceleration,
+        laws=laws,
+        stroke=linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom),
+        peak=exact_peak,
+        peak_crank_angle=exact_angle,
+        errors=law_errors(dense, dense_exact.acceleration, dense_laws),
+    )

@@ -1,0 +1,328 @@
+"""Slider-crank (reciprocating pump) motion: exact, textbook approximations, and their errors.
+
+Mechanism: crank O-A of radius r turning at uniform angular velocity omega, connecting
+rod A-B of length l (seed 001: l2), slider B on a straight line of stroke at distance e
+(the offset; e = 0 for a centric mechanism) from the crank shaft O.
+
+Frame (used for every function here): x along the line of stroke from O towards the
+slider; y across it, oriented so that the crank pin is at A = r (cos phi, sin phi) with the
+crank angle phi growing with time. The slider runs on y = e, so e is measured on the
+side the crank pin swings into first. phi = 0 puts the crank pin on the x axis pointing
+at the slider (for e = 0 the outer dead centre, where the inertia force is largest).
+
+Exact slider position (loop closure A + (B - A) = B with |B - A| = l):
+
+    x = r cos phi + sqrt(l^2 - (r sin phi - e)^2)
+
+(seed 001 eq. 1, its ref. [3], is the case e = 0). Velocity and
+acceleration are its first two time derivatives at uniform rotation; the inertia force
+of the reciprocating mass m (piston, rod and crosshead) is Phi = -m a (d'Alembert),
+positive away from the crank: Phi = m r omega^2 (1 + lambda) at phi = 0 (seed eq. 2).
+
+Approximate laws (centric mechanism, lambda = r/l), all of the form
+a = -r omega^2 [cos phi + sum_j c_j cos 2j phi]:
+
+* ``harmonic``: c = 0, the sinusoidal law (seed 001 eq. 3, Phi_c = m r omega^2);
+* ``two_term``: c_1 = lambda, the first approximation of the trigonometric series
+  (seed 001 eq. 4, Phi_1 = m r omega^2 (1 + lambda));
+* ``series4``, ``series6``: the next terms of the same series, harmonics up to 4 phi and
+  6 phi (see :func:`series_coefficients`).
+
+For an offset mechanism the approximate laws are the centric ones with the same r and l
+(what the textbook formulas give); their error then includes the neglected offset.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from math import comb
+
+import numpy as np
+
+from ..errors import GeometryError
+from .kinematics import crank_grid
+
+
+@dataclass(frozen=True)
+class SliderCrank:
+    """Geometry of a slider-crank, SI.
+
+    Parameters
+    ----------
+    crank_radius : r [m], crank shaft O to crank pin A.
+    rod_length : l (seed 001: l2) [m], crank pin A to slider pin B.
+    offset : e [m], distance of the line of stroke from O, on the side the crank pin
+        swings into first (see the module docstring); 0 for a centric mechanism.
+    """
+
+    crank_radius: float
+    rod_length: float
+    offset: float = 0.0
+
+    @property
+    def crank_ratio(self) -> float:
+        """lambda = r / l (seed 001: lambda_1 = r / l2)."""
+        return self.crank_radius / self.rod_length
+
+
+@dataclass(frozen=True)
+class SliderMotion:
+    """Slider position x [m] from the crank shaft along the line of stroke, velocity
+    [m/s] and acceleration [m/s^2] (positive away from the crank)."""
+
+    position: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+
+
+@dataclass(frozen=True)
+class DeadCentres:
+    """Crank angles [rad] and slider positions [m] of the outer and inner dead centres."""
+
+    crank_angle_outer: float
+    crank_angle_inner: float
+    position_outer: float
+    position_inner: float
+
+
+def check_slider_crank(mechanism: SliderCrank) -> None:
+    """Raise :class:`GeometryError` unless the crank turns through a full revolution.
+
+    The rod reaches the line of stroke at every crank angle only if |r sin phi - e| < l
+    for all phi, i.e. l > r + |e| (strict, so that the rod never lies across the line).
+    """
+    r, l, e = mechanism.crank_radius, mechanism.rod_length, mechanism.offset
+    if not r > 0:
+        raise GeometryError(f"crank_radius must be positive, got {r} m")
+    if not l > r + abs(e):
+        raise GeometryError(
+            f"the crank cannot turn: rod_length l = {l:.4g} m must exceed crank_radius + |offset| "
+            f"= {r:.4g} + {abs(e):.4g} = {r + abs(e):.4g} m"
+        )
+
+
+def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> SliderMotion:
+    """Exact slider motion for uniform crank rotation at ``omega`` [1/s].
+
+    With u = r sin phi - e, u' = r cos phi, q = sqrt(l^2 - u^2):
+    x = r cos phi + q; dx/dphi = -r sin phi - u u'/q;
+    d2x/dphi2 = -r cos phi - (u'^2 - u r sin phi)/q - u^2 u'^2/q^3;
+    v = omega dx/dphi, a = omega^2 d2x/dphi2 (chain rule, uniform rotation).
+    For e = 0 this is the classical exact acceleration
+    a = -r omega^2 [cos phi + lambda cos 2phi / s + lambda^3 sin^2 2phi / (4 s^3)],
+    s = sqrt(1 - lambda^2 sin^2 phi) (seed 001 eq. 1).
+
+    >>> m = exact_motion(SliderCrank(0.2, 1.19), np.array([0.0, np.pi]), 1.0)
+    >>> [round(v, 6) for v in m.acceleration.tolist()]   # -r(1 + r/l), r(1 - r/l)
+    [-0.233613, 0.166387]
+    """
+    check_slider_crank(mechanism)
+    phi = np.asarray(crank_angle, dtype=float)
+    r, l = mechanism.crank_radius, mechanism.rod_length
+    sin, cos = np.sin(phi), np.cos(phi)
+    u = r * sin - mechanism.offset
+    du = r * cos
+    q = np.sqrt(l * l - u * u)
+    return SliderMotion(
+        position=r * cos + q,
+        velocity=omega * (-r * sin - u * du / q),
+        acceleration=omega**2 * (-r * cos - (du * du - u * r * sin) / q - (u * du) ** 2 / q**3),
+    )
+
+
+def dead_centres(mechanism: SliderCrank) -> DeadCentres:
+    """Exact dead centres: crank and rod in one line through O.
+
+    Outer: B = (l + r) n, A = r n, n the unit vector O->B with n_y = e/(l + r), so
+    phi = arcsin(e/(l + r)) and x = sqrt((l + r)^2 - e^2). Inner: B = (l - r) n,
+    A = -r n, phi = pi + arcsin(e/(l - r)), x = sqrt((l - r)^2 - e^2).
+    """
+    check_slider_crank(mechanism)
+    r, l, e = mechanism.crank_radius, mechanism.rod_length, mechanism.offset
+    return DeadCentres(
+        crank_angle_outer=float(np.arcsin(e / (l + r)) % (2.0 * np.pi)),
+        crank_angle_inner=float(np.pi + np.arcsin(e / (l - r))),
+        position_outer=float(np.sqrt((l + r) ** 2 - e * e)),
+        position_inner=float(np.sqrt((l - r) ** 2 - e * e)),
+    )
+
+
+def stroke(mechanism: SliderCrank) -> float:
+    """Exact stroke [m]: sqrt((l + r)^2 - e^2) - sqrt((l - r)^2 - e^2); 2r for e = 0.
+
+    >>> round(stroke(SliderCrank(0.2, 1.19)), 12)
+    0.4
+    """
+    dead = dead_centres(mechanism)
+    return dead.position_outer - dead.position_inner
+
+
+def series_coefficients(crank_ratio: float, terms: int) -> np.ndarray:
+    """Coefficients c_1..c_terms of a = -r omega^2 [cos phi + sum_j c_j cos 2j phi].
+
+    The series comes from expanding the radical of the exact position,
+    l sqrt(1 - lambda^2 sin^2 phi) = l sum_k binom(1/2, k) (-lambda^2 sin^2 phi)^k,
+    keeping k = 1..``terms``, and writing each power as a cosine sum,
+    sin^2k phi = 4^-k [binom(2k, k) + 2 sum_{j=1..k} (-1)^j binom(2k, k - j) cos 2j phi].
+    Differentiating twice gives
+
+        c_j = (2j)^2 (-1)^(k+j) 2 binom(1/2, k) binom(2k, k - j) lambda^(2k-1) / 4^k,
+
+    summed over k = j..terms. ``terms`` = 1 is the first approximation c_1 = lambda
+    (seed 001 eq. 4); ``terms`` = 3 gives the textbook harmonic coefficients
+    A2 = lambda + lambda^3/4 + 15 lambda^5/128, A4 = lambda^3/4 + 3 lambda^5/16,
+    A6 = 9 lambda^5/128 as c = (A2, -A4, A6) (the standard even-harmonic series of the
+    reciprocating mass, e.g. NPTEL course 112101096, Dynamics of Machines, module 4
+    lecture 1, which derives the first term and notes the higher harmonics).
+
+    >>> series_coefficients(0.5, 2).tolist()   # A2 = 0.5 + 0.125/4, -A4 = -0.125/4
+    [0.53125, -0.03125]
+    """
+    c = np.zeros(terms)
+    for k in range(1, terms + 1):
+        binomial_half = np.prod([0.5 - i for i in range(k)]) / np.prod(np.arange(1, k + 1))
+        for j in range(1, k + 1):
+            c[j - 1] += (2 * j) ** 2 * (-1) ** (k + j) * 2 * binomial_half * comb(2 * k, k - j) * crank_ratio ** (2 * k - 1) / 4**k
+    return c
+
+
+#: Approximate laws of the slider acceleration: name -> number of series terms kept.
+LAW_TERMS: dict[str, int] = {"harmonic": 0, "two_term": 1, "series4": 2, "series6": 3}
+
+
+def law_methods() -> tuple[str, ...]:
+    """Names of the approximate slider laws, simplest first."""
+    return tuple(LAW_TERMS)
+
+
+def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> np.ndarray:
+    """Slider acceleration [m/s^2] by an approximate law of :func:`law_methods`.
+
+    a = -r omega^2 [cos phi + sum_j c_j cos 2j phi] with c from
+    :func:`series_coefficients` (no terms: the sinusoidal law, seed 001 eq. 3).
+
+    >>> a = approximate_acceleration("two_term", SliderCrank(0.2, 1.0), np.array([0.0, np.pi]), 1.0)
+    >>> [round(v, 12) for v in a.tolist()]   # -r (1 + lambda), r (1 - lambda)
+    [-0.24, 0.16]
+    """
+    if method not in LAW_TERMS:
+        raise ValueError(f"unknown slider law {method!r}; use one of {', '.join(LAW_TERMS)}")
+    phi = np.asarray(crank_angle, dtype=float)
+    c = series_coefficients(mechanism.crank_ratio, LAW_TERMS[method])
+    harmonics = 2.0 * np.arange(1, c.size + 1)
+    series = np.cos(phi[..., None] * harmonics) @ c if c.size else 0.0
+    return -mechanism.crank_radius * omega**2 * (np.cos(phi) + series)
+
+
+@dataclass(frozen=True)
+class LawError:
+    """Error of an approximate acceleration (or inertia-force) law against the exact one.
+
+    All errors are fractions (printed in %). With P = max |a| over the cycle:
+
+    * ``peak_error`` = |1 - P_law / P_exact|, the seed 001 definition
+      delta = 100 |1 - Phi_approx,max / Phi_exact,max|;
+    * ``peak_error_of_law`` = |1 - P_exact / P_law|, the same difference as a share of
+      the approximate peak;
+    * ``max_deviation`` = max |a_law - a| / P_exact over the cycle;
+    * ``rms_deviation`` = rms(a_law - a) / rms(a) over the cycle (uniform rotation, so
+      the mean over equal crank steps is the time mean).
+    """
+
+    peak: float
+    peak_crank_angle: float
+    peak_error: float
+    peak_error_of_law: float
+    max_deviation: float
+    rms_deviation: float
+
+
+def peak(crank_angle: np.ndarray, values: np.ndarray) -> tuple[float, float]:
+    """max |values| and the crank angle [rad] where it is reached (on the given grid)."""
+    i = int(np.argmax(np.abs(values)))
+    return float(np.abs(values[i])), float(crank_angle[i])
+
+
+def law_errors(crank_angle: np.ndarray, exact: np.ndarray, laws: Mapping[str, np.ndarray]) -> dict[str, LawError]:
+    """:class:`LawError` of each law, from samples over one uniform revolution.
+
+    Inertia forces are -m times the accelerations, so the errors are the same for both.
+    """
+    exact_peak, _ = peak(crank_angle, exact)
+    exact_rms = np.sqrt(np.mean(exact**2))
+    errors = {}
+    for name, values in laws.items():
+        law_peak, law_angle = peak(crank_angle, values)
+        deviation = values - exact
+        errors[name] = LawError(
+            peak=law_peak,
+            peak_crank_angle=law_angle,
+            peak_error=abs(1.0 - law_peak / exact_peak),
+            peak_error_of_law=abs(1.0 - exact_peak / law_peak),
+            max_deviation=float(np.max(np.abs(deviation)) / exact_peak),
+            rms_deviation=float(np.sqrt(np.mean(deviation**2)) / exact_rms),
+        )
+    return errors
+
+
+@dataclass(frozen=True)
+class InertiaComparison:
+    """Exact motion and approximate accelerations on an output grid, with errors.
+
+    ``position`` is measured from the reference dead position (slider: inner dead
+    centre, away from the crank positive; beam unit: bottom of the stroke, up positive);
+    velocity and acceleration are along the same axis, so the inertia force is
+    Phi = -m a. ``laws`` holds the acceleration of each approximate law [m/s^2] on the
+    output grid; ``errors`` and the exact peak come from a fixed dense grid of
+    :data:`DENSE_STEPS` crank positions, so they do not depend on the output resolution.
+    """
+
+    crank_angle: np.ndarray
+    position: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    laws: dict[str, np.ndarray]
+    stroke: float
+    peak: float
+    peak_crank_angle: float
+    errors: dict[str, LawError]
+
+
+#: Crank positions per revolution for peaks and errors. The slider peaks lie on grid
+#: points (phi = 0 for e = 0); elsewhere a peak is found to O(h^2), about 1e-7 relative.
+DENSE_STEPS = 7200
+
+
+def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
+    """Exact slider motion and every approximate law on ``crank_angle`` [rad], for
+    uniform rotation at ``omega`` [1/s]; peaks and errors on the dense grid.
+
+    Position is x - x_inner [m], from the inner dead centre, away from the crank
+    positive, so at phi = 0 the inertia force -m a is seed 001's
+    Phi_max = m omega^2 (r + r^2/l2) (eq. 2).
+
+    >>> c = slider_inertia_laws(SliderCrank(0.2, 1.0), 1.0, crank_grid(4))
+    >>> round(c.peak, 12), round(c.errors["harmonic"].peak_error, 12)   # r(1 + lambda), lambda/(1 + lambda)
+    (0.24, 0.166666666667)
+    """
+    if not omega > 0:
+        raise ValueError(f"crank speed must be positive, got {omega} 1/s")
+    dead = dead_centres(mechanism)
+    exact = exact_motion(mechanism, crank_angle, omega)
+    dense = crank_grid(DENSE_STEPS)
+    dense_exact = exact_motion(mechanism, dense, omega).acceleration
+    exact_peak, exact_angle = peak(dense, dense_exact)
+    return InertiaComparison(
+        crank_angle=np.asarray(crank_angle, dtype=float),
+        position=exact.position - dead.position_inner,
+        velocity=exact.velocity,
+        acceleration=exact.acceleration,
+        laws={name: approximate_acceleration(name, mechanism, crank_angle, omega) for name in LAW_TERMS},
+        stroke=dead.position_outer - dead.position_inner,
+        peak=exact_peak,
+        peak_crank_angle=exact_angle,
+        errors=law_errors(
+            dense, dense_exact, {name: approximate_acceleration(name, mechanism, dense, omega) for name in LAW_TERMS}
+        ),
+    )
