@@ -22,16 +22,7 @@ import numpy as np
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.kinematics import crank_grid, uniform_kinematics
 from pumpjack_cli.core.linkage import motion
-
-
-def best_of(func, repeats: int) -> float:
-    """Shortest of ``repeats`` timings of ``func()`` [s]."""
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        func()
-        times.append(time.perf_counter() - start)
-    return min(times)
+from timing import best_of
 
 
 def main() -> None:

@@ -13,6 +13,7 @@ import typer
 
 from .commands.inertia_error import inertia_error
 from .commands.kinematics import kinematics
+from .commands.reactions import reactions
 from .commands.units import units
 from .errors import PumpjackError
 
@@ -25,6 +26,7 @@ app = typer.Typer(
 )
 app.command("units")(units)
 app.command("kinematics")(kinematics)
+app.command("reactions")(reactions)
 app.command("inertia-error")(inertia_error)
 
 

@@ -31,7 +31,9 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, Strict, ValidationError, model_validator
 
+from .core.kinetostatics import MassModel
 from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
+from .core.spatial import SpatialLinkage
 from .core.slider_crank import SliderCrank, check_slider_crank
 from .core.slider_crank import stroke as slider_stroke
 from .errors import ConfigError, GeometryError
@@ -131,6 +133,11 @@ class Geometry(_Section):
 
     @model_validator(mode="after")
     def _assembles(self) -> "Geometry":
+        if self._pitman_lean >= self.pitman:
+            raise ValueError(
+                f"pitman ({self.pitman:.4g} m) is shorter than the offset of its ends along the crank shaft "
+                f"|crank_half_spacing - equalizer_half_length| = {self._pitman_lean:.4g} m"
+            )
         try:
             check_assembly(self.linkage())
         except GeometryError as exc:
@@ -138,16 +145,32 @@ class Geometry(_Section):
         return self
 
     def linkage(self) -> Linkage:
-        """The numerical core's view of this geometry."""
+        """The numerical core's planar four-bar: the pitman projected on the beam plane
+        when the crank pins and the equalizer pins are spaced differently."""
         return Linkage(
             front_arm=self.front_arm,
             rear_arm=self.rear_arm,
             crank_radius=self.crank_radius,
-            pitman=self.pitman,
+            pitman=math.sqrt(self.pitman**2 - self._pitman_lean**2),
             horizontal_offset=self.horizontal_offset,
             vertical_offset=self.vertical_offset,
             rotation=CLOCKWISE if self.rotation == "clockwise" else COUNTERCLOCKWISE,
         )
+
+    @property
+    def _pitman_lean(self) -> float:
+        """Offset of the pitman ends along the crank shaft, |b - e| [m] (0 without spatial data)."""
+        if self.crank_half_spacing is None or self.equalizer_half_length is None:
+            return 0.0
+        return abs(self.crank_half_spacing - self.equalizer_half_length)
+
+    def spatial(self, source: str = "unit") -> SpatialLinkage:
+        """The spatial model; needs crank_half_spacing and equalizer_half_length."""
+        if self.crank_half_spacing is None or self.equalizer_half_length is None:
+            raise ConfigError(
+                f"{source}: geometry: the spatial model needs crank_half_spacing and equalizer_half_length"
+            )
+        return SpatialLinkage(self.linkage(), self.crank_half_spacing, self.equalizer_half_length)
 
 
 class CrankArm(_Section):
@@ -169,8 +192,9 @@ class Counterweights(_Section):
     count: Count = Field(ge=0, le=16, description="number of blocks on both arms together (shared equally)")
     radius: Length = Field(ge=0, le=5, description="crank shaft to the blocks' centre of mass (r_pr, OS_pr) [m]")
     phase: Angle = Field(
-        default=math.pi, ge=0, lt=2 * math.pi,
-        description="angle from the crank pin direction to the blocks' centre of mass, in the direction of rotation [rad]",
+        default=0.0, gt=-math.pi, le=math.pi,
+        description="angle from the crank pin direction to the blocks' centre of mass, in the direction of "
+        "rotation; 0 on conventional units, whose blocks sit on the crank arm in line with the pin [rad]",
     )
 
 
@@ -219,6 +243,29 @@ class Masses(_Section):
     equalizer: Equalizer
     beam: BeamPart = Field(description="walking beam body (m_b, m_bal)")
     horsehead: BeamPart = Field(description="horsehead (m_gb)")
+
+    def model(self) -> MassModel:
+        """The numerical core's view of the masses."""
+        return MassModel(
+            crank_arm_mass=self.crank_arm.mass,
+            crank_arm_cg=self.crank_arm.cg_radius,
+            crank_arm_inertia=self.crank_arm.inertia,
+            counterweight_mass=self.counterweights.mass * self.counterweights.count,
+            counterweight_radius=self.counterweights.radius,
+            counterweight_phase=self.counterweights.phase,
+            pitman_mass=self.pitman.mass,
+            pitman_cg=self.pitman.cg_from_crank_pin,
+            pitman_inertia=self.pitman.inertia,
+            equalizer_mass=self.equalizer.mass,
+            equalizer_inertia=self.equalizer.inertia,
+            equalizer_transverse_inertia=self.equalizer.transverse_inertia,
+            beam_mass=self.beam.mass,
+            beam_cg=self.beam.cg,
+            beam_inertia=self.beam.inertia,
+            horsehead_mass=self.horsehead.mass,
+            horsehead_cg=self.horsehead.cg,
+            horsehead_inertia=self.horsehead.inertia,
+        )
 
 
 class Motor(_Section):

@@ -1,0 +1,124 @@
+"""`pumpjack reactions`: joint reactions and balancing torque from a dynamometer card."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from ..cards import read_card
+from ..config import UnitConfig, load_unit
+from ..core.card import card_load
+from ..core.kinematics import crank_grid
+from ..core.kinetostatics import Reactions, rational_mechanism
+from ..errors import PumpjackError
+from ..render import Column, Panel, Report, Scalar
+from ..units import parse_quantity
+from .common import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from .kinematics import crank_speed
+
+#: Reaction vectors of the output: field name, description.
+REACTIONS = {
+    "r12": "crank on pitman 2 at crank pin A",
+    "r13": "crank on pitman 3 at crank pin A1",
+    "r24": "pitman 2 on equalizer at B",
+    "r34": "pitman 3 on equalizer at B1",
+    "r45": "equalizer on beam at D",
+    "r05": "frame on beam at centre bearing C",
+    "r01": "frame on crank at the shaft bearings O, O1",
+}
+MOMENTS = {"m05": "bearing moment of the frame on the beam at C", "m01": "bearing moment of the frame on the crank"}
+
+CardOption = Annotated[Path, typer.Option("--card", help="dynamometer card CSV (see docs/cards.md)", dir_okay=False)]
+CardUnitsOption = Annotated[
+    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
+]
+
+
+def reactions_report(config: UnitConfig, theta: np.ndarray, omega: float, load: np.ndarray, r: Reactions,
+                     title: str) -> Report:
+    """Tabulate reactions: every component per crank angle, peaks and torque extremes."""
+    columns = [
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation"),
+        Column("time", "time", "time from crank angle 0", brief=False),
+        Column("rod_load", "force", "polished-rod load from the card"),
+    ]
+    series = {"crank_angle": theta, "time": theta / omega, "rod_load": load}
+    summary = [Scalar("crank_speed", "angular_velocity", omega, "crank angular velocity omega1"),
+               Scalar("max_rod_load", "force", float(load.max()), "peak polished-rod load"),
+               Scalar("min_rod_load", "force", float(load.min()), "minimum polished-rod load")]
+    vectors = {name: getattr(r, name) for name in REACTIONS} | {name: getattr(r, name) for name in MOMENTS}
+    for name, vector in vectors.items():
+        is_moment = name in MOMENTS
+        what = MOMENTS[name] if is_moment else REACTIONS[name]
+        axes = "xy" if is_moment else "xyz"
+        for i, axis in enumerate(axes):
+            brief = name in ("r12", "r45", "r05") and axis == "y"
+            columns.append(Column(f"{name}_{axis}", "torque" if is_moment else "force", f"{what}, {axis}", brief))
+            series[f"{name}_{axis}"] = vector[:, i]
+        magnitude = np.linalg.norm(vector, axis=-1)
+        peak = int(np.argmax(magnitude))
+        summary += [Scalar(f"peak_{name}", "torque" if is_moment else "force", float(magnitude[peak]), f"peak |{name.upper()}|: {what}"),
+                    Scalar(f"peak_{name}_crank_angle", "angle", float(theta[peak]), f"crank angle of peak |{name.upper()}|")]
+    torque = r.balancing_torque
+    columns.append(Column("balancing_torque", "torque", "M_z: gearbox torque on the crank, + driving"))
+    series["balancing_torque"] = torque
+    for label, index in (("max", int(np.argmax(torque))), ("min", int(np.argmin(torque)))):
+        summary += [Scalar(f"{label}_balancing_torque", "torque", float(torque[index]), f"{label} M_z (net gearbox torque)"),
+                    Scalar(f"{label}_balancing_torque_crank_angle", "angle", float(theta[index]), f"crank angle of {label} M_z")]
+    summary.append(Scalar("equilibrium_residual", "ratio", float(r.residual.max()),
+                          "max |E x - f| of the group 2-3-4-5 / largest load"))
+    panels = (
+        Panel("rod load", ("rod_load",)),
+        Panel("pitman reactions", ("r12_x", "r12_y", "r13_x", "r13_y")),
+        Panel("beam reactions", ("r45_y", "r05_x", "r05_y")),
+        Panel("balancing torque", ("balancing_torque",)),
+    )
+    return Report(title=title, summary=tuple(summary), columns=tuple(columns), series=series, panels=panels)
+
+
+def reactions(
+    unit: UnitArgument,
+    card: CardOption,
+    card_units: CardUnitsOption = UnitSystem.si,
+    spm: Annotated[float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)] = None,
+    steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)] = 360,
+    no_inertia: Annotated[bool, typer.Option("--no-inertia", help="leave out the links' inertia forces and moments")] = False,
+    no_weights: Annotated[bool, typer.Option("--no-weights", help="leave out the links' weights")] = False,
+    counterweight_count: Annotated[int | None, typer.Option(help="number of counterweight blocks instead of the unit's", min=0, max=16)] = None,
+    counterweight_radius: Annotated[str | None, typer.Option(help="counterweight radius instead of the unit's, e.g. '0.9 m'")] = None,
+    fmt: FormatOption = None,
+    units: UnitsOption = UnitSystem.si,
+    out: OutputOption = None,
+    plot: PlotOption = None,
+) -> None:
+    """Reactions in every joint of the spatial mechanism (without redundant constraints) and
+    the balancing torque on the crank shaft, from a dynamometer card."""
+    config = load_unit(unit)
+    if config.masses is None:
+        raise PumpjackError(f"unit {config.name} has no [masses] section; reactions need the link masses")
+    spatial = config.geometry.spatial(config.name)
+    counterweights = config.masses.counterweights
+    if counterweight_count is not None:
+        counterweights = counterweights.model_copy(update={"count": counterweight_count})
+    if counterweight_radius is not None:
+        try:
+            radius = parse_quantity(counterweight_radius, "length")
+        except ValueError as exc:
+            raise PumpjackError(f"--counterweight-radius: {exc}") from None
+        if not 0 <= radius <= 5:
+            raise PumpjackError(f"--counterweight-radius: {radius} m is outside 0..5 m")
+        counterweights = counterweights.model_copy(update={"radius": radius})
+    masses = config.masses.model_copy(update={"counterweights": counterweights}).model()
+    reading = read_card(card, spatial.planar, card_units.value)
+    for warning in reading.warnings:
+        sys.stderr.write(f"pumpjack: warning: {warning}\n")
+    theta = crank_grid(steps)
+    omega = crank_speed(config, spm)
+    load = card_load(reading.card, theta)
+    _, r = rational_mechanism(spatial, masses, theta, omega, 0.0, load, weights=not no_weights, inertia=not no_inertia)
+    title = f"{config.name}: reactions and balancing torque, card {card.name}"
+    output(reactions_report(config, theta, omega, load, r, title), fmt, units, out, plot)

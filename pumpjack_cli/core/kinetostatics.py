@@ -1,0 +1,313 @@
+"""Kinetostatics of the rational spatial mechanism: joint reactions and balancing torque.
+
+d'Alembert's principle (seed 000 eqs. 17-48, seed 003 eqs. 1-9): every link is in
+equilibrium under its weight, its inertia force -m a_S at the centre of mass, its
+inertia moment -J eps - w x (J w), the joint reactions and, on the beam, the
+polished-rod load at E. Friction is neglected.
+
+The rational mechanism has spherical pairs at A, A1, B, B1 and D and revolute pairs
+at C (beam) and O (crank). As the seed itself does in the end (seed 000 eqs. 38-39),
+the structural group 2-3-4-5 is solved as one linear system: 24 equilibrium equations
+(forces and moments about C for pitmans 2, 3, equalizer 4 and beam 5) in 20 unknowns
+R12, R13, R24, R34, R45, R05 (3 components each) and the bearing moment M_R05 (2
+components across the beam axis z). The matrix has full column rank (the rational
+mechanism is statically determinate) and four dependent rows, one per idle freedom
+(pitman spins, equalizer spin about its pin line and rotation about an axis along
+the pitmans); loads are consistent with those freedoms when they do no work on them,
+which the solver checks through the equilibrium residual. The system is solved in the
+least-squares sense by its normal equations, one batched 20 x 20 solve for all crank
+angles; the residual max |E x - f| is reported relative to the largest load.
+
+The equalizer's inertia moment about its own pin line would act on an idle freedom:
+the equalizer is taken to turn with the beam (kinematics, :mod:`.spatial`) and that
+component is carried by the beam. Its power is unchanged because the equalizer does
+not turn relative to the beam about the pin line.
+
+Then the crank (seed 003 eqs. 8-9): forces give R01, moments about the shaft centre
+give the balancing torque M_z along the shaft (the gearbox output torque, reported
+positive when it drives the crank in its direction of rotation) and the bearing
+moment M_R01 across the shaft.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .spatial import Z, SpatialLinkage, SpatialMotion, cross, spatial_motion
+
+STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 conventional value
+
+
+@dataclass(frozen=True)
+class MassModel:
+    """Mass properties of the moving links, SI (kg, m, kg·m^2, rad).
+
+    Crank arm and counterweights: values for one arm and for all blocks together
+    (shared equally between the two arms); centres of mass along the crank arm
+    (counterweights at ``counterweight_phase`` from the crank pin, in the direction of
+    rotation). Pitman: centre of mass at ``pitman_cg`` from the crank pin along AB,
+    moment of inertia across its axis (the axial one does no work: the pitman's spin
+    is an idle freedom). Equalizer: centre of mass at D, inertia about its pin line and
+    across it. Beam body and horsehead: centres of mass on the beam line at signed
+    distances from C, towards the well positive.
+    """
+
+    crank_arm_mass: float
+    crank_arm_cg: float
+    crank_arm_inertia: float
+    counterweight_mass: float
+    counterweight_radius: float
+    counterweight_phase: float
+    pitman_mass: float
+    pitman_cg: float
+    pitman_inertia: float
+    equalizer_mass: float
+    equalizer_inertia: float
+    equalizer_transverse_inertia: float
+    beam_mass: float
+    beam_cg: float
+    beam_inertia: float
+    horsehead_mass: float
+    horsehead_cg: float
+    horsehead_inertia: float
+
+
+@dataclass(frozen=True)
+class LinkLoads:
+    """Applied loads on one link: forces (N, k, 3) at points (N, k, 3), plus a moment (N, 3)."""
+
+    forces: np.ndarray
+    points: np.ndarray
+    moment: np.ndarray
+
+    def resultant(self) -> np.ndarray:
+        return self.forces.sum(axis=1)
+
+    def moment_about_origin(self) -> np.ndarray:
+        return cross(self.points, self.forces).sum(axis=1) + self.moment
+
+
+@dataclass(frozen=True)
+class AppliedLoads:
+    """Weights, inertia forces and moments and the rod load, per link (seed numbering)."""
+
+    crank: LinkLoads
+    pitman2: LinkLoads
+    pitman3: LinkLoads
+    equalizer: LinkLoads
+    beam: LinkLoads
+
+
+@dataclass(frozen=True)
+class Reactions:
+    """Joint reactions [N] and moments [N·m], arrays (N, 3); Rij acts from link i on link j.
+
+    ``balancing_torque`` [N·m] is M_z, positive when the gearbox drives the crank in
+    its direction of rotation; ``residual`` is max |E x - f| of the group 2-3-4-5
+    relative to the largest applied load, per crank angle.
+    """
+
+    r12: np.ndarray
+    r13: np.ndarray
+    r24: np.ndarray
+    r34: np.ndarray
+    r45: np.ndarray
+    r05: np.ndarray
+    m05: np.ndarray
+    r01: np.ndarray
+    m01: np.ndarray
+    balancing_torque: np.ndarray
+    residual: np.ndarray
+
+
+def _point_acceleration(eps: np.ndarray, w: np.ndarray, rel: np.ndarray, base: np.ndarray | float = 0.0) -> np.ndarray:
+    """a = a_base + eps x r + w x (w x r) for a point at r from a base point of the same body."""
+    return base + cross(eps, rel) + cross(w, cross(w, rel))
+
+
+def applied_loads(
+    spatial: SpatialLinkage,
+    masses: MassModel,
+    sm: SpatialMotion,
+    rod_load: np.ndarray,
+    *,
+    weights: bool = True,
+    inertia: bool = True,
+    gravity: float = STANDARD_GRAVITY,
+) -> AppliedLoads:
+    """Weights, d'Alembert inertia forces/moments and the polished-rod load on every link.
+
+    ``rod_load`` [N] is the polished-rod load (dynamometer card), acting downwards on
+    the horsehead along the vertical tangent x = A, i.e. at E = (A, 0, 0).
+    """
+    n = sm.crank_angle.size
+    g = np.array([0.0, -gravity, 0.0]) if weights else np.zeros(3)
+    k_in = 1.0 if inertia else 0.0
+    linkage = spatial.planar
+    b = spatial.crank_half_spacing
+
+    def body(masses_and_points, accelerations, moment) -> LinkLoads:
+        m = np.array(masses_and_points[0])[None, :, None]
+        forces = m * g - k_in * m * accelerations
+        return LinkLoads(forces=forces, points=masses_and_points[1], moment=k_in * moment)
+
+    # Crank: two arms and the counterweights (half on each arm), points in the arm planes.
+    theta = sm.crank_angle
+    sigma = linkage.rotation
+    u_pin = np.stack([sigma * np.sin(theta), np.cos(theta), np.zeros(n)], axis=-1)
+    phase = theta + masses.counterweight_phase
+    u_cw = np.stack([sigma * np.sin(phase), np.cos(phase), np.zeros(n)], axis=-1)
+    rel = np.stack([masses.crank_arm_cg * u_pin, masses.crank_arm_cg * u_pin,
+                    masses.counterweight_radius * u_cw, masses.counterweight_radius * u_cw], axis=1)
+    offsets = np.array([b, -b, b, -b])[None, :, None] * Z
+    acc = _point_acceleration(sm.e1[:, None, :], sm.w1[:, None, :], rel)
+    half_cw = 0.5 * masses.counterweight_mass
+    crank = body(([masses.crank_arm_mass] * 2 + [half_cw] * 2, sm.crank_shaft[:, None, :] + offsets + rel),
+                 acc, -2.0 * masses.crank_arm_inertia * sm.e1)
+
+    def pitman(pin: np.ndarray, top: np.ndarray, w: np.ndarray, eps: np.ndarray) -> LinkLoads:
+        axis = top - pin
+        rel_s = masses.pitman_cg / spatial.pitman * axis
+        a_pin = _point_acceleration(sm.e1, sm.w1, pin - sm.crank_shaft)  # w1, e1 along z: z offset drops out
+        a_s = _point_acceleration(eps, w, rel_s, a_pin)
+        return body(([masses.pitman_mass], (pin + rel_s)[:, None, :]), a_s[:, None, :], -masses.pitman_inertia * eps)
+
+    pitman2 = pitman(sm.pin_a, sm.pin_b, sm.w2, sm.e2)
+    pitman3 = pitman(sm.pin_a1, sm.pin_b1, sm.w3, sm.e3)
+
+    # Equalizer: centre of mass at D on the beam; inertia about its pin line u goes to the beam.
+    u = sm.pin_b - sm.pin_b1
+    u = u / np.linalg.norm(u, axis=-1, keepdims=True)
+    along = np.sum(sm.e4 * u, axis=-1, keepdims=True) * u
+    axial_moment = -masses.equalizer_inertia * along
+    gyro = (masses.equalizer_inertia - masses.equalizer_transverse_inertia) * np.sum(
+        sm.w4 * u, axis=-1, keepdims=True) * cross(sm.w4, u)
+    a_d = _point_acceleration(sm.e5, sm.w5, sm.pin_d)
+    equalizer = body(([masses.equalizer_mass], sm.pin_d[:, None, :]), a_d[:, None, :],
+                     -masses.equalizer_transverse_inertia * (sm.e4 - along) - gyro)
+
+    # Beam body and horsehead on the beam line; rod load at the horsehead tangent point E.
+    line = np.stack([np.cos(sm.beam_angle), np.sin(sm.beam_angle), np.zeros(n)], axis=-1)
+    parts = np.stack([masses.beam_cg * line, masses.horsehead_cg * line], axis=1)
+    acc_parts = _point_acceleration(sm.e5[:, None, :], sm.w5[:, None, :], parts)
+    beam_parts = body(([masses.beam_mass, masses.horsehead_mass], parts), acc_parts,
+                      -(masses.beam_inertia + masses.horsehead_inertia) * sm.e5 + axial_moment)
+    rod = np.stack([np.zeros(n), -np.asarray(rod_load, dtype=float), np.zeros(n)], axis=-1)
+    e_point = np.broadcast_to(np.array([linkage.front_arm, 0.0, 0.0]), (n, 3))
+    beam = LinkLoads(
+        forces=np.concatenate([beam_parts.forces, rod[:, None, :]], axis=1),
+        points=np.concatenate([beam_parts.points, e_point[:, None, :]], axis=1),
+        moment=beam_parts.moment,
+    )
+    return AppliedLoads(crank=crank, pitman2=pitman2, pitman3=pitman3, equalizer=equalizer, beam=beam)
+
+
+def _moment_about(loads: LinkLoads, point: np.ndarray) -> np.ndarray:
+    """Moment of a link's applied loads about ``point``: M_O - P x F."""
+    return loads.moment_about_origin() - cross(point, loads.resultant())
+
+
+def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: AppliedLoads) -> Reactions:
+    """Reactions in every joint and the balancing torque of the rational mechanism.
+
+    The 24 equilibrium equations of the group 2-3-4-5 in its 20 unknowns are solved by
+    block elimination along the structure of the group (all crank angles at once,
+    closed form, no per-angle matrices):
+
+    1. pitman 2, moments about A: w2 x R24 = M_A2, so R24 = (M_A2 x w2)/|w2|^2 + t2 e2
+       with the axial force t2 unknown (w2 = AB); the component w2 . M_A2 = 0 is the
+       idle-spin condition. Likewise R34 with t3 for pitman 3.
+    2. equalizer forces give R45 = R24 + R34 + F4; equalizer moments about D (three
+       equations) and the beam's moment about its axis z (one equation) are linear in
+       (t2, t3): four equations, two unknowns, the two surplus ones being the idle
+       spin and rotation of the equalizer. Solved by 2 x 2 normal equations.
+    3. beam forces give R05, beam moments across z give M_R05; pitman forces give R12, R13.
+
+    The residual of all 24 equations is then evaluated link by link and reported:
+    max(|sum F| / F_ref, |sum M| / (F_ref L_ref)) with F_ref the largest applied force
+    and L_ref = K + A the size of the unit. ``tests/test_kinetostatics.py`` assembles the
+    full 24 x 20 matrix independently, checks its rank (20) and this solution against it.
+    """
+    w2, w3 = sm.pin_b - sm.pin_a, sm.pin_b1 - sm.pin_a1
+    n2 = w2 / np.linalg.norm(w2, axis=-1, keepdims=True)
+    n3 = w3 / np.linalg.norm(w3, axis=-1, keepdims=True)
+    r24_perp = cross(_moment_about(loads.pitman2, sm.pin_a), w2) / np.sum(w2 * w2, axis=-1, keepdims=True)
+    r34_perp = cross(_moment_about(loads.pitman3, sm.pin_a1), w3) / np.sum(w3 * w3, axis=-1, keepdims=True)
+    f4 = loads.equalizer.resultant()
+    d = sm.pin_d
+    arm2, arm3 = sm.pin_b - d, sm.pin_b1 - d
+    q_equalizer = -(_moment_about(loads.equalizer, d) + cross(arm2, r24_perp) + cross(arm3, r34_perp))
+    q_beam = -(loads.beam.moment_about_origin()[:, 2] + cross(d, r24_perp + r34_perp + f4)[:, 2])
+    g = np.stack([
+        np.concatenate([cross(arm2, n2), cross(d, n2)[:, 2:]], axis=-1),
+        np.concatenate([cross(arm3, n3), cross(d, n3)[:, 2:]], axis=-1),
+    ], axis=-1)  # (N, 4, 2)
+    q = np.concatenate([q_equalizer, q_beam[:, None]], axis=-1)
+    gtg = np.einsum("nki,nkj->nij", g, g)
+    gtq = np.einsum("nki,nk->ni", g, q)
+    det = gtg[:, 0, 0] * gtg[:, 1, 1] - gtg[:, 0, 1] ** 2
+    t2 = (gtg[:, 1, 1] * gtq[:, 0] - gtg[:, 0, 1] * gtq[:, 1]) / det
+    t3 = (gtg[:, 0, 0] * gtq[:, 1] - gtg[:, 0, 1] * gtq[:, 0]) / det
+    r24 = r24_perp + t2[:, None] * n2
+    r34 = r34_perp + t3[:, None] * n3
+    r45 = r24 + r34 + f4
+    r05 = -r45 - loads.beam.resultant()
+    n = d.shape[0]
+    across = cross(d, r45) + loads.beam.moment_about_origin()
+    m05 = -np.stack([across[:, 0], across[:, 1], np.zeros(n)], axis=-1)
+    r12 = r24 - loads.pitman2.resultant()
+    r13 = r34 - loads.pitman3.resultant()
+
+    origin = np.zeros_like(d)
+    equations = (
+        (loads.pitman2, ((r12, sm.pin_a), (-r24, sm.pin_b)), 0.0),
+        (loads.pitman3, ((r13, sm.pin_a1), (-r34, sm.pin_b1)), 0.0),
+        (loads.equalizer, ((r24, sm.pin_b), (r34, sm.pin_b1), (-r45, d)), 0.0),
+        (loads.beam, ((r45, d), (r05, origin)), m05),
+    )
+    force_ref = max(float(np.max(np.abs(link.forces))) for link in (loads.pitman2, loads.pitman3, loads.equalizer, loads.beam))
+    force_ref = force_ref if force_ref > 0 else 1.0
+    size = spatial.planar.frame_length + spatial.planar.front_arm
+    residual = np.zeros(n)
+    for link, reactions, couple in equations:
+        force = link.resultant() + sum(f for f, _ in reactions)
+        moment = link.moment_about_origin() + sum(cross(p, f) for f, p in reactions) + couple
+        residual = np.maximum(residual, np.max(np.abs(force), axis=-1) / force_ref)
+        residual = np.maximum(residual, np.max(np.abs(moment), axis=-1) / (force_ref * size))
+
+    # Crank: R01 + R21 + R31 + loads = 0; moments about the shaft centre O.
+    crank = loads.crank
+    r01 = r12 + r13 - crank.resultant()
+    o = sm.crank_shaft
+    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + _moment_about(crank, o)
+    drive = -moment  # M_z (along the shaft) + M_R01 (across it) balance everything else
+    spin = spatial.crank_spin
+    torque = drive @ spin
+    m01 = drive - torque[:, None] * spin
+    return Reactions(
+        r12=r12, r13=r13, r24=r24, r34=r34, r45=r45, r05=r05,
+        m05=m05, r01=r01, m01=m01, balancing_torque=torque, residual=residual,
+    )
+
+
+def rational_mechanism(
+    spatial: SpatialLinkage,
+    masses: MassModel,
+    crank_angle: np.ndarray,
+    omega1: np.ndarray | float,
+    epsilon1: np.ndarray | float,
+    rod_load: np.ndarray,
+    *,
+    weights: bool = True,
+    inertia: bool = True,
+) -> tuple[SpatialMotion, Reactions]:
+    """Kinematics and reactions of the rational mechanism over the given crank angles.
+
+    ``omega1`` [1/s] and ``epsilon1`` [1/s^2]: crank speed and acceleration in the
+    direction of rotation; ``rod_load`` [N]: polished-rod load at each crank angle.
+    """
+    sm = spatial_motion(spatial, crank_angle, omega1, epsilon1)
+    loads = applied_loads(spatial, masses, sm, rod_load, weights=weights, inertia=inertia)
+    return sm, rational_reactions(spatial, sm, loads)
