@@ -114,10 +114,8 @@ def test_small_stroke_mismatch_is_scaled_with_a_warning(tmp_path):
 
 GOOD_ROWS = "\n".join(f"{0.1 * i},{1000 + i}" for i in range(10))
 
-
-@pytest.mark.parametrize(
-    ("text", "fragment"),
-    [
+#: Broken card files and a fragment of their one-line message.
+BROKEN_CARDS = [
         ("speed,load\n" + GOOD_ROWS, "unknown column 'speed'"),
         ("position_m,time_s\n" + GOOD_ROWS, "a card has crank_angle and load"),
         ("position_m,load_n,load_n\n0,1,2\n", "a card has crank_angle and load"),
@@ -133,8 +131,10 @@ GOOD_ROWS = "\n".join(f"{0.1 * i},{1000 + i}" for i in range(10))
         ("position_m,load_n\n" + "\n".join(f"{0.3 * i},{1000}" for i in range(10)), "moves only up"),
         ("position_m,load_n\n" + "\n".join(f"{0.1 * (i if i < 5 else 10 - i)},{1000}" for i in range(10)),
          "differs from the unit's exact stroke"),
-    ],
-)
+]
+
+
+@pytest.mark.parametrize(("text", "fragment"), BROKEN_CARDS)
 def test_broken_cards(tmp_path, text, fragment):
     path = write(tmp_path, text)
     with pytest.raises(CardError) as info:
@@ -142,6 +142,14 @@ def test_broken_cards(tmp_path, text, fragment):
     message = str(info.value)
     assert message.startswith(str(path)) and "\n" not in message
     assert fragment in message
+
+
+@pytest.mark.parametrize(("text", "fragment"), BROKEN_CARDS)
+def test_every_broken_card_exits_2_with_one_line(run_cli, tmp_path, text, fragment):
+    bad = write(tmp_path, text, "bad.csv")
+    code, out, err = run_cli("reactions", "sk8-3.5-4000", "--card", bad)
+    assert code == 2 and out == ""
+    assert len(err.splitlines()) == 1 and err.startswith(f"pumpjack: error: {bad}") and fragment in err
 
 
 def test_missing_card_file(tmp_path):
