@@ -8,23 +8,28 @@ shaft (x, y, z right-handed); the beam moves in the plane z = 0. Pitman 2 is on 
 (``equalizer_half_length``); pitman 3 mirrors it at -z. The pin line B-B1 passes
 through the equalizer bearing D, the rear-arm end of the beam.
 
-With both sides equal the two pitmans move in mirror planes, so positions follow from
-the planar closed form of :mod:`pumpjack_cli.core.linkage` applied to the projection
-of the pitman on the beam plane, P_xy = sqrt(P^2 - (b - e)^2).
+The rational mechanism has four idle freedoms (seed 000): the spin of each pitman
+about its own axis, and two rotations of the equalizer relative to the beam (about
+its pin line, and about an axis along the pitmans). They are fixed here as a real
+unit's equalizer bearing does: the equalizer turns with the beam except for a roll
+gamma about the beam's long axis l (which lets it share the load when the two sides
+differ), and the pitmans do not spin.
+
+Positions: with both sides equal the two pitmans move in mirror planes and the
+planar closed form of :mod:`pumpjack_cli.core.linkage` (applied to the projection of
+the pitman on the beam plane, P_xy = sqrt(P^2 - (b - e)^2)) gives everything. With
+deviations between the sides, the beam angle psi and the roll gamma solve
+|B - A| = P2, |B1 - A1| = P3 with B, B1 = D +- e u, u = cos(gamma) z + sin(gamma) (z x l),
+by Newton's method started from the planar solution, batched over all crank angles.
 
 Angular velocities and accelerations come from the two closed vector loops
 (seed 000 eqs. 5-6) differentiated with Bour's formula dl/dt = w x l:
 ``w1 x l1 + w2 x l2 + w4 x l4 + w5 x l5 = 0`` and
 ``w1 x l11 + w3 x l3 + w4 x l41 + w5 x l5 = 0`` (eqs. 7-10), and once more for the
-accelerations (eqs. 11-12). Unknowns per crank angle: w2, w3 (3 each), the
-equalizer's rotation relative to the beam d4 = w4 - w5 (3) and w5z (1): ten unknowns
-for six loop equations. The rational mechanism has four idle freedoms (seed 000): the
-spin of each pitman about its own axis, fixed here by w2 . e2 = 0 and w3 . e3 = 0,
-and two rotations of the equalizer relative to the beam (about its pin line, and
-about an axis along the pitmans). Those two are fixed by taking the minimum-norm
-solution in d4, i.e. no idle relative motion: the 8 x 10 system is solved as
-x = K^T (K K^T)^-1 b, one batched 8 x 8 inversion for the whole revolution, shared
-by the velocity and the acceleration problem (same matrix).
+accelerations (eqs. 11-12). Unknowns per crank angle: w2, w3 (3 each), the roll rate
+k of the equalizer (w4 = w5 + k l) and w5z: eight, for the six loop equations and
+w2 . l2 = 0, w3 . l3 = 0. One batched 8 x 8 solve for the whole revolution, the same
+matrix for velocities and accelerations.
 """
 
 from __future__ import annotations
@@ -33,26 +38,40 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import GeometryError
 from .linkage import Linkage, motion
 
 Z = np.array([0.0, 0.0, 1.0])
+_NEWTON_ITERATIONS = 30
 
 
 @dataclass(frozen=True)
 class SpatialLinkage:
     """The planar four-bar plus the spatial spacing of the two sides [m].
 
-    ``planar`` holds the projected pitman length; :attr:`pitman` is the true one.
+    ``planar`` holds the projected pitman length; :attr:`pitman` is the true one. The
+    deviations describe side 3 (crank pin A1, pitman A1B1) against side 2: its crank
+    pin leads by ``crank_phase_offset`` [rad] in the direction of rotation, its crank
+    radius and its pitman are longer by ``crank_radius_offset`` and
+    ``pitman_length_offset`` [m]. All zero: both sides equal.
     """
 
     planar: Linkage
     crank_half_spacing: float
     equalizer_half_length: float
+    crank_phase_offset: float = 0.0
+    crank_radius_offset: float = 0.0
+    pitman_length_offset: float = 0.0
 
     @property
     def pitman(self) -> float:
-        """True pitman length P [m] (the planar linkage holds its projection)."""
+        """True length P of pitman 2 [m] (the planar linkage holds its projection)."""
         return float(np.hypot(self.planar.pitman, self.crank_half_spacing - self.equalizer_half_length))
+
+    @property
+    def pitman3(self) -> float:
+        """True length of pitman 3 [m]: P plus the length deviation."""
+        return self.pitman + self.pitman_length_offset
 
     @property
     def crank_spin(self) -> np.ndarray:
@@ -106,30 +125,74 @@ def _skew(v: np.ndarray) -> np.ndarray:
     return out
 
 
-def _loop_matrix(l2: np.ndarray, l3: np.ndarray, l4: np.ndarray, l41: np.ndarray, l5: np.ndarray) -> np.ndarray:
-    """The 8 x 10 coefficient matrix of (w2, w3, d4, w5z) for every crank angle.
+def _loop_matrix(l2: np.ndarray, l3: np.ndarray, l4: np.ndarray, l41: np.ndarray, l5: np.ndarray,
+                 line: np.ndarray) -> np.ndarray:
+    """The 8 x 8 coefficient matrix of (w2, w3, k, w5z) for every crank angle.
 
-    Rows 0-2: loop O-A-B-D-C; rows 3-5: loop O1-A1-B1-D-C; w x l = -[l]x w.
-    Rows 6-7: no pitman spin, w2 . l2 = 0 and w3 . l3 = 0.
+    Rows 0-2: loop O-A-B-D-C; rows 3-5: loop O1-A1-B1-D-C; w x l = -[l]x w, and the
+    equalizer's w4 = w5z z + k l. Rows 6-7: no pitman spin, w2 . l2 = 0, w3 . l3 = 0.
     """
     n = l2.shape[0]
-    k = np.zeros((n, 8, 10))
+    k = np.zeros((n, 8, 8))
     k[:, 0:3, 0:3] = -_skew(l2)
-    k[:, 0:3, 6:9] = -_skew(l4)
-    k[:, 0:3, 9] = cross(Z, l4 + l5)
+    k[:, 0:3, 6] = cross(line, l4)
+    k[:, 0:3, 7] = cross(Z, l4 + l5)
     k[:, 3:6, 3:6] = -_skew(l3)
-    k[:, 3:6, 6:9] = -_skew(l41)
-    k[:, 3:6, 9] = cross(Z, l41 + l5)
+    k[:, 3:6, 6] = cross(line, l41)
+    k[:, 3:6, 7] = cross(Z, l41 + l5)
     k[:, 6, 0:3] = l2
     k[:, 7, 3:6] = l3
     return k
 
 
-def _min_norm_inverse(k: np.ndarray) -> np.ndarray:
-    """K^+ = K^T (K K^T)^-1 for a stack of full-row-rank K (N, 8, 10): x = K^+ b is the
-    minimum-norm solution of K x = b."""
-    kt = np.swapaxes(k, 1, 2)
-    return kt @ np.linalg.inv(k @ kt)
+@dataclass(frozen=True)
+class _Pose:
+    crank_pin: np.ndarray
+    crank_pin1: np.ndarray
+    beam_angle: np.ndarray
+    roll: np.ndarray
+
+
+def _pose(spatial: SpatialLinkage, theta: np.ndarray) -> _Pose:
+    """Crank pins, beam angle and equalizer roll for every crank angle (see module doc)."""
+    linkage = spatial.planar
+    n = theta.size
+    b, e = spatial.crank_half_spacing, spatial.equalizer_half_length
+    o = np.array([*linkage.crank_shaft, 0.0])
+
+    def pin(radius: float, angle: np.ndarray, z: float) -> np.ndarray:
+        return o + np.stack([linkage.rotation * radius * np.sin(angle), radius * np.cos(angle), np.full(n, z)], axis=-1)
+
+    a = pin(linkage.crank_radius, theta, b)
+    a1 = pin(linkage.crank_radius + spatial.crank_radius_offset, theta + spatial.crank_phase_offset, -b)
+    psi = motion(linkage, theta).beam_angle
+    gamma = np.zeros(n)
+    if spatial.crank_phase_offset or spatial.crank_radius_offset or spatial.pitman_length_offset:
+        lengths = (spatial.pitman, spatial.pitman3)
+        for _ in range(_NEWTON_ITERATIONS):
+            c, s_, cg, sg = np.cos(psi), np.sin(psi), np.cos(gamma), np.sin(gamma)
+            d = -linkage.rear_arm * np.stack([c, s_, np.zeros(n)], axis=-1)
+            d_psi = linkage.rear_arm * np.stack([s_, -c, np.zeros(n)], axis=-1)
+            h = np.stack([-s_, c, np.zeros(n)], axis=-1)
+            h_psi = np.stack([-c, -s_, np.zeros(n)], axis=-1)
+            u = cg[:, None] * Z + sg[:, None] * h
+            u_psi = sg[:, None] * h_psi
+            u_gamma = -sg[:, None] * Z + cg[:, None] * h
+            residual, jac = np.empty((n, 2)), np.empty((n, 2, 2))
+            for row, (sign, crank_pin, length) in enumerate(((1.0, a, lengths[0]), (-1.0, a1, lengths[1]))):
+                w = d + sign * e * u - crank_pin
+                residual[:, row] = np.sum(w * w, axis=-1) - length**2
+                jac[:, row, 0] = 2.0 * np.sum(w * (d_psi + sign * e * u_psi), axis=-1)
+                jac[:, row, 1] = 2.0 * np.sum(w * (sign * e * u_gamma), axis=-1)
+            step = np.linalg.solve(jac, residual[..., None])[..., 0]
+            psi, gamma = psi - step[:, 0], gamma - step[:, 1]
+            if np.max(np.abs(step)) < 1e-14:
+                break
+        else:
+            raise GeometryError("the two sides of the unit cannot be assembled with these deviations")
+        if not np.all(np.isfinite(psi)) or np.max(np.abs(gamma)) > 0.5:
+            raise GeometryError("the two sides of the unit cannot be assembled with these deviations")
+    return _Pose(a, a1, psi, gamma)
 
 
 def spatial_motion(
@@ -144,22 +207,16 @@ def spatial_motion(
     n = theta.size
     omega1 = np.broadcast_to(np.asarray(omega1, dtype=float), (n,))
     epsilon1 = np.broadcast_to(np.asarray(epsilon1, dtype=float), (n,))
-    planar = motion(spatial.planar, theta)
+    pose = _pose(spatial, theta)
     b, e = spatial.crank_half_spacing, spatial.equalizer_half_length
     zeros = np.zeros(n)
-
-    def lift(xy: np.ndarray, z: float) -> np.ndarray:
-        return np.stack([xy[0], xy[1], np.full(n, z)], axis=-1)
-
-    linkage = spatial.planar
-    o = np.broadcast_to(np.array([*linkage.crank_shaft, 0.0]), (n, 3))
-    pin_xy = np.stack(
-        [linkage.crank_shaft[0] + linkage.rotation * linkage.crank_radius * np.sin(theta),
-         linkage.crank_shaft[1] + linkage.crank_radius * np.cos(theta)]
-    )
-    d_xy = -linkage.rear_arm * np.stack([np.cos(planar.beam_angle), np.sin(planar.beam_angle)])
-    a, a1 = lift(pin_xy, b), lift(pin_xy, -b)
-    pb, pb1, d = lift(d_xy, e), lift(d_xy, -e), lift(d_xy, 0.0)
+    o = np.broadcast_to(np.array([*spatial.planar.crank_shaft, 0.0]), (n, 3))
+    line = np.stack([np.cos(pose.beam_angle), np.sin(pose.beam_angle), zeros], axis=-1)
+    normal = cross(Z, line)
+    u = np.cos(pose.roll)[:, None] * Z + np.sin(pose.roll)[:, None] * normal
+    d = -spatial.planar.rear_arm * line
+    a, a1 = pose.crank_pin, pose.crank_pin1
+    pb, pb1 = d + e * u, d - e * u
     l1, l11 = a - o - b * Z, a1 - o + b * Z
     l2, l3 = pb - a, pb1 - a1
     l4, l41 = d - pb, d - pb1
@@ -167,25 +224,27 @@ def spatial_motion(
     spin = spatial.crank_spin
     w1 = omega1[:, None] * spin
     e1 = epsilon1[:, None] * spin
-    k_plus = _min_norm_inverse(_loop_matrix(l2, l3, l4, l41, l5))
+    k = _loop_matrix(l2, l3, l4, l41, l5, line)
 
     rhs_v = np.concatenate([-cross(w1, l1), -cross(w1, l11), np.zeros((n, 2))], axis=1)
-    x = (k_plus @ rhs_v[..., None])[..., 0]
-    w2, w3, d4 = x[:, 0:3], x[:, 3:6], x[:, 6:9]
-    w5 = np.stack([zeros, zeros, x[:, 9]], axis=-1)
-    w4 = w5 + d4
+    x = np.linalg.solve(k, rhs_v[..., None])[..., 0]
+    w2, w3, roll_rate = x[:, 0:3], x[:, 3:6], x[:, 6]
+    w5 = np.stack([zeros, zeros, x[:, 7]], axis=-1)
+    w4 = w5 + roll_rate[:, None] * line
 
     def centripetal(w: np.ndarray, vec: np.ndarray) -> np.ndarray:
         return cross(w, cross(w, vec))
 
     # Second derivative of each loop: sum(eps x l + w x (w x l)) = 0 (seed 000 eqs. 11-12).
-    # With w4 = w5 + d4, eps4 = eps5 + dd4, where dd4 = d(d4)/dt; the w5z column of
-    # the matrix multiplies eps5z, the d4 columns multiply dd4.
-    loop1 = cross(e1, l1) + centripetal(w1, l1) + centripetal(w2, l2) + centripetal(w4, l4) + centripetal(w5, l5)
-    loop2 = cross(e1, l11) + centripetal(w1, l11) + centripetal(w3, l3) + centripetal(w4, l41) + centripetal(w5, l5)
+    # eps4 = eps5z z + k' l + k w5z (z x l): the last term is known and goes to the right side.
+    known4 = (roll_rate * x[:, 7])[:, None] * normal
+    loop1 = (cross(e1, l1) + centripetal(w1, l1) + centripetal(w2, l2) + centripetal(w4, l4)
+             + cross(known4, l4) + centripetal(w5, l5))
+    loop2 = (cross(e1, l11) + centripetal(w1, l11) + centripetal(w3, l3) + centripetal(w4, l41)
+             + cross(known4, l41) + centripetal(w5, l5))
     rhs_a = np.concatenate([-loop1, -loop2, np.zeros((n, 2))], axis=1)
-    y = (k_plus @ rhs_a[..., None])[..., 0]
-    e5 = np.stack([zeros, zeros, y[:, 9]], axis=-1)
+    y = np.linalg.solve(k, rhs_a[..., None])[..., 0]
+    e5 = np.stack([zeros, zeros, y[:, 7]], axis=-1)
     return SpatialMotion(
         crank_angle=theta,
         omega1=omega1,
@@ -196,7 +255,7 @@ def spatial_motion(
         pin_b=pb,
         pin_b1=pb1,
         pin_d=d,
-        beam_angle=planar.beam_angle,
+        beam_angle=pose.beam_angle,
         w1=w1,
         w2=w2,
         w3=w3,
@@ -205,6 +264,6 @@ def spatial_motion(
         e1=e1,
         e2=y[:, 0:3],
         e3=y[:, 3:6],
-        e4=e5 + y[:, 6:9],
+        e4=e5 + y[:, 6:7] * line + known4,
         e5=e5,
     )
