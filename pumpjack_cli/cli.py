@@ -11,6 +11,7 @@ import sys
 
 import typer
 
+from .commands.dynamics import dynamics
 from .commands.inertia_error import inertia_error
 from .commands.kinematics import kinematics
 from .commands.reactions import reactions
@@ -28,6 +29,7 @@ app.command("units")(units)
 app.command("kinematics")(kinematics)
 app.command("reactions")(reactions)
 app.command("inertia-error")(inertia_error)
+app.command("dynamics")(dynamics)
 
 
 @app.callback()

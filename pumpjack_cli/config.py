@@ -294,6 +294,16 @@ class Drive(_Section):
     gearbox_ratio: Number = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
     motor_sheave_diameter: Length = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
     gearbox_sheave_diameter: Length = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
+    motor_sheave_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e3, description="motor (driving) sheave, on the motor shaft; 0: not counted [kg·m²]"
+    )
+    gearbox_sheave_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e4, description="gearbox (driven) sheave, on the gearbox input shaft; 0: not counted [kg·m²]"
+    )
+    gearbox_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e4,
+        description="gears and shafts of the gearbox referred to its input shaft; 0: not counted [kg·m²]",
+    )
 
     @property
     def belt_ratio(self) -> float:
@@ -329,6 +339,13 @@ class Well(_Section):
         gt=0, le=1e-2, description="produced fluid kinematic viscosity [m²/s]"
     )
     tubing_inner_diameter: Length = Field(gt=0, le=0.2, description="tubing inner diameter [m]")
+    plunger_clearance: Length | None = Field(
+        default=None, gt=0, le=1e-3, description="clearance between plunger and barrel, for the plunger friction [m]"
+    )
+    pump_submergence: Length | None = Field(
+        default=None, ge=0, le=5000, description="depth of the pump below the dynamic fluid level, h [m]"
+    )
+    rod_density: Density = Field(default=7850.0, gt=1000, le=10000, description="rod material density (steel) [kg/m³]")
 
     @model_validator(mode="after")
     def _taper(self) -> "Well":

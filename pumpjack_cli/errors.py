@@ -17,3 +17,7 @@ class ConfigError(PumpjackError, ValueError):
 
 class GeometryError(PumpjackError, ValueError):
     """A linkage that cannot assemble or cannot turn through a full revolution."""
+
+
+class DynamicsError(PumpjackError, ValueError):
+    """A machine whose motion cannot be computed: inertia, motor, well data or a failed solve."""

@@ -153,6 +153,13 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
     "percent": {"si": OutputUnit("%", "pct", 100.0), "field": OutputUnit("%", "pct", 100.0)},
     "ratio": {"si": OutputUnit("1", "ratio", 1.0), "field": OutputUnit("1", "ratio", 1.0)},
+    "count": {"si": OutputUnit("1", "count", 1.0), "field": OutputUnit("1", "count", 1.0)},
+    "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
+    "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
+    "moment_of_inertia": {
+        "si": OutputUnit("kg·m²", "kg_m2", 1.0),
+        "field": OutputUnit("lb·ft²", "lb_ft2", 1 / (POUND_MASS * FOOT**2)),
+    },
 }
 
 UNIT_SYSTEMS = ("si", "field")

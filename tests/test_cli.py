@@ -332,7 +332,7 @@ ERROR_CASES = [
     ("bad-format", lambda tmp: ["kinematics", SK8, "-f", "xml"], ["--format", "xml"]),
     ("bad-units", lambda tmp: ["kinematics", SK8, "--units", "imperial"], ["--units", "imperial"]),
     ("unknown-option", lambda tmp: ["kinematics", SK8, "--bogus"], ["--bogus"]),
-    ("unknown-command", lambda tmp: ["dynamics", SK8], ["dynamics"]),
+    ("unknown-command", lambda tmp: ["no-such-command", SK8], ["no-such-command"]),
     ("missing-argument", lambda tmp: ["kinematics"], ["Missing argument", "unit"]),
     ("no-drive-no-spm", lambda tmp: ["kinematics", ROOT / "samples" / "sk8-3.5-4000-api.yaml"],
      ["[drive]", "--spm"]),
