@@ -13,6 +13,7 @@ import typer
 
 from .commands.dynamics import dynamics
 from .commands.inertia_error import inertia_error
+from .commands.compare_redundancy import compare_redundancy
 from .commands.kinematics import kinematics
 from .commands.reactions import reactions
 from .commands.units import units
@@ -28,6 +29,7 @@ app = typer.Typer(
 app.command("units")(units)
 app.command("kinematics")(kinematics)
 app.command("reactions")(reactions)
+app.command("compare-redundancy")(compare_redundancy)
 app.command("inertia-error")(inertia_error)
 app.command("dynamics")(dynamics)
 

@@ -21,6 +21,7 @@ vertical_offset    l2      H - G or     centre bearing above crank shaft;
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import tomllib
@@ -33,6 +34,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, Strict, Vali
 
 from .core.kinetostatics import MassModel
 from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
+from .core.redundancy import PinTilts, PitmanSection
 from .core.spatial import SpatialLinkage
 from .core.slider_crank import SliderCrank, check_slider_crank
 from .core.slider_crank import stroke as slider_stroke
@@ -355,6 +357,56 @@ class Well(_Section):
         return self
 
 
+Pressure = Annotated[float, _quantity("pressure")]
+AreaMoment = Annotated[float, _quantity("area_moment")]
+Area = Annotated[float, _quantity("area")]
+
+
+class PitmanSectionConfig(_Section):
+    """Elastic pitman for the real mechanism (seed 000 eqs. 18-21; defaults from the seed
+    where it gives them: E = 2.1e11 Pa, J_z = 17.61e-6 m^4)."""
+
+    youngs_modulus: Pressure = Field(default=2.1e11, gt=0, le=1e12, description="E [Pa] (seed 000)")
+    shear_modulus: Pressure = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
+    area: Area = Field(gt=0, le=0.1, description="cross-section area [m²]")
+    inplane_inertia: AreaMoment = Field(
+        default=17.61e-6, gt=0, le=1e-2, description="J_z: second moment about the pin direction [m⁴] (seed 000)"
+    )
+    outofplane_inertia: AreaMoment = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
+    torsion_constant: AreaMoment = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")
+
+    def model(self) -> PitmanSection:
+        return PitmanSection(self.youngs_modulus, self.shear_modulus, self.area, self.inplane_inertia,
+                             self.outofplane_inertia, self.torsion_constant)
+
+
+class Deviations(_Section):
+    """Manufacturing and wear errors of side 3 (crank pin A1, pitman A1B1, pin B1)
+    against side 2; all zero for an ideal unit."""
+
+    crank_phase: Angle = Field(default=0.0, ge=-0.2, le=0.2,
+                               description="crank pin A1 ahead of A in the direction of rotation [rad]")
+    crank_radius: Length = Field(default=0.0, ge=-0.5, le=0.5, description="crank radius of A1 minus that of A [m]")
+    pitman_length: Length = Field(default=0.0, ge=-0.5, le=0.5, description="pitman A1B1 minus pitman AB [m]")
+    crank_pin_tilt_radial: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                         description="pin A1 bore turned about the arm's radial line [rad]")
+    crank_pin_tilt_tangential: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                             description="pin A1 bore turned about the arm's tangent [rad]")
+    equalizer_pin_roll: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                      description="pin B1 bore turned about the beam's long axis [rad]")
+    equalizer_pin_yaw: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                     description="pin B1 bore turned about the vertical across the beam [rad]")
+
+    def tilts(self) -> PinTilts:
+        return PinTilts(self.crank_pin_tilt_radial, self.crank_pin_tilt_tangential,
+                        self.equalizer_pin_roll, self.equalizer_pin_yaw)
+
+    def apply(self, spatial: SpatialLinkage) -> SpatialLinkage:
+        """The spatial model with the side-3 deviations of position."""
+        return dataclasses.replace(spatial, crank_phase_offset=self.crank_phase,
+                                   crank_radius_offset=self.crank_radius, pitman_length_offset=self.pitman_length)
+
+
 class UnitConfig(_Section):
     """A whole pumping unit: identification, geometry and optional masses, drive, well."""
 
@@ -366,6 +418,8 @@ class UnitConfig(_Section):
     masses: Masses | None = None
     drive: Drive | None = None
     well: Well | None = None
+    pitman_section: PitmanSectionConfig | None = None
+    deviations: Deviations = Deviations()
 
     def stroke(self) -> float:
         """Exact polished-rod stroke [m], from the dead positions of the four-bar."""

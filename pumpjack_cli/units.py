@@ -60,11 +60,13 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
         "1/min": 2 * math.pi / 60,
         "spm": 2 * math.pi / 60,
     },
-    "angle": {"rad": 1.0, "deg": math.pi / 180},
+    "angle": {"rad": 1.0, "mrad": 1e-3, "deg": math.pi / 180},
     "power": {"w": 1.0, "kw": 1e3, "hp": HORSEPOWER},
     "density": {"kg/m3": 1.0, "g/cm3": 1e3, "lb/ft3": POUND_MASS / FOOT**3},
     "kinematic_viscosity": {"m2/s": 1.0, "mm2/s": 1e-6, "cst": 1e-6},
     "fraction": {"%": 1e-2},
+    "area": {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6, "in2": INCH**2},
+    "area_moment": {"m4": 1.0, "cm4": 1e-8, "mm4": 1e-12, "in4": INCH**4},
     "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "psi": POUND_FORCE / INCH**2},
 }
 

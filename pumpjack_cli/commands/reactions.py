@@ -80,12 +80,33 @@ def reactions_report(config: UnitConfig, theta: np.ndarray, omega: float, load: 
     return Report(title=title, summary=tuple(summary), columns=tuple(columns), series=series, panels=panels)
 
 
+def require_masses(config: UnitConfig) -> None:
+    if config.masses is None:
+        raise PumpjackError(f"unit {config.name} has no [masses] section; reactions need the link masses")
+
+
+def card_on_grid(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, spm: float | None,
+                 steps: int) -> tuple[np.ndarray, float, np.ndarray]:
+    """Crank angles, crank speed and the card's load on them; card warnings go to stderr."""
+    reading = read_card(card, linkage, card_units.value)
+    for warning in reading.warnings:
+        sys.stderr.write(f"pumpjack: warning: {warning}\n")
+    theta = crank_grid(steps)
+    return theta, crank_speed(config, spm), card_load(reading.card, theta)
+
+
+SpmOption = Annotated[
+    float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)
+]
+StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
+
+
 def reactions(
     unit: UnitArgument,
     card: CardOption,
     card_units: CardUnitsOption = UnitSystem.si,
-    spm: Annotated[float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)] = None,
-    steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)] = 360,
+    spm: SpmOption = None,
+    steps: StepsOption = 360,
     no_inertia: Annotated[bool, typer.Option("--no-inertia", help="leave out the links' inertia forces and moments")] = False,
     no_weights: Annotated[bool, typer.Option("--no-weights", help="leave out the links' weights")] = False,
     counterweight_count: Annotated[int | None, typer.Option(help="number of counterweight blocks instead of the unit's", min=0, max=16)] = None,
@@ -98,8 +119,7 @@ def reactions(
     """Reactions in every joint of the spatial mechanism (without redundant constraints) and
     the balancing torque on the crank shaft, from a dynamometer card."""
     config = load_unit(unit)
-    if config.masses is None:
-        raise PumpjackError(f"unit {config.name} has no [masses] section; reactions need the link masses")
+    require_masses(config)
     spatial = config.geometry.spatial(config.name)
     counterweights = config.masses.counterweights
     if counterweight_count is not None:
@@ -113,12 +133,7 @@ def reactions(
             raise PumpjackError(f"--counterweight-radius: {radius} m is outside 0..5 m")
         counterweights = counterweights.model_copy(update={"radius": radius})
     masses = config.masses.model_copy(update={"counterweights": counterweights}).model()
-    reading = read_card(card, spatial.planar, card_units.value)
-    for warning in reading.warnings:
-        sys.stderr.write(f"pumpjack: warning: {warning}\n")
-    theta = crank_grid(steps)
-    omega = crank_speed(config, spm)
-    load = card_load(reading.card, theta)
+    theta, omega, load = card_on_grid(config, spatial.planar, card, card_units, spm, steps)
     _, r = rational_mechanism(spatial, masses, theta, omega, 0.0, load, weights=not no_weights, inertia=not no_inertia)
     title = f"{config.name}: reactions and balancing torque, card {card.name}"
     output(reactions_report(config, theta, omega, load, r, title), fmt, units, out, plot)

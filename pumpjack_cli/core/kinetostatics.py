@@ -169,7 +169,7 @@ def applied_loads(
 
     def pitman(pin: np.ndarray, top: np.ndarray, w: np.ndarray, eps: np.ndarray) -> LinkLoads:
         axis = top - pin
-        rel_s = masses.pitman_cg / spatial.pitman * axis
+        rel_s = masses.pitman_cg / np.linalg.norm(axis, axis=-1, keepdims=True) * axis
         a_pin = _point_acceleration(sm.e1, sm.w1, pin - sm.crank_shaft)  # w1, e1 along z: z offset drops out
         a_s = _point_acceleration(eps, w, rel_s, a_pin)
         return body(([masses.pitman_mass], (pin + rel_s)[:, None, :]), a_s[:, None, :], -masses.pitman_inertia * eps)
@@ -277,19 +277,28 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
         residual = np.maximum(residual, np.max(np.abs(force), axis=-1) / force_ref)
         residual = np.maximum(residual, np.max(np.abs(moment), axis=-1) / (force_ref * size))
 
-    # Crank: R01 + R21 + R31 + loads = 0; moments about the shaft centre O.
-    crank = loads.crank
-    r01 = r12 + r13 - crank.resultant()
-    o = sm.crank_shaft
-    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + _moment_about(crank, o)
-    drive = -moment  # M_z (along the shaft) + M_R01 (across it) balance everything else
-    spin = spatial.crank_spin
-    torque = drive @ spin
-    m01 = drive - torque[:, None] * spin
+    r01, m01, torque = crank_reactions(spatial, sm, loads.crank, r12, r13)
     return Reactions(
         r12=r12, r13=r13, r24=r24, r34=r34, r45=r45, r05=r05,
         m05=m05, r01=r01, m01=m01, balancing_torque=torque, residual=residual,
     )
+
+
+def crank_reactions(
+    spatial: SpatialLinkage, sm: SpatialMotion, crank: LinkLoads, r12: np.ndarray, r13: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Crank equilibrium (seed 003 eqs. 8-9): R01, M_R01 and the balancing torque M_z.
+
+    R01 + R21 + R31 + loads = 0 with R21 = -R12, R31 = -R13; moments about the shaft
+    centre O: M_z (along the shaft, + driving) and M_R01 (across it) balance the rest.
+    """
+    r01 = r12 + r13 - crank.resultant()
+    o = sm.crank_shaft
+    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + _moment_about(crank, o)
+    drive = -moment
+    spin = spatial.crank_spin
+    torque = drive @ spin
+    return r01, drive - torque[:, None] * spin, torque
 
 
 def rational_mechanism(

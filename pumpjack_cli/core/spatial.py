@@ -34,12 +34,13 @@ matrix for velocities and accelerations.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import GeometryError
-from .linkage import Linkage, motion
+from .linkage import Linkage, check_assembly, motion
 
 Z = np.array([0.0, 0.0, 1.0])
 _NEWTON_ITERATIONS = 30
@@ -168,6 +169,14 @@ def _pose(spatial: SpatialLinkage, theta: np.ndarray) -> _Pose:
     psi = motion(linkage, theta).beam_angle
     gamma = np.zeros(n)
     if spatial.crank_phase_offset or spatial.crank_radius_offset or spatial.pitman_length_offset:
+        side3 = dataclasses.replace(
+            linkage, crank_radius=linkage.crank_radius + spatial.crank_radius_offset,
+            pitman=float(np.sqrt(spatial.pitman3**2 - (b - e) ** 2)))
+        try:
+            check_assembly(side3)
+        except GeometryError as exc:
+            raise GeometryError(f"with the deviations of side 3 (crank radius {side3.crank_radius:.4g} m, "
+                                f"pitman {spatial.pitman3:.4g} m): {exc}") from None
         lengths = (spatial.pitman, spatial.pitman3)
         for _ in range(_NEWTON_ITERATIONS):
             c, s_, cg, sg = np.cos(psi), np.sin(psi), np.cos(gamma), np.sin(gamma)
@@ -189,9 +198,11 @@ def _pose(spatial: SpatialLinkage, theta: np.ndarray) -> _Pose:
             if np.max(np.abs(step)) < 1e-14:
                 break
         else:
-            raise GeometryError("the two sides of the unit cannot be assembled with these deviations")
+            raise GeometryError("the two sides cannot be assembled with these deviations: "
+                                f"no beam position closes both loops after {_NEWTON_ITERATIONS} Newton steps")
         if not np.all(np.isfinite(psi)) or np.max(np.abs(gamma)) > 0.5:
-            raise GeometryError("the two sides of the unit cannot be assembled with these deviations")
+            raise GeometryError("the two sides cannot be assembled with these deviations: the equalizer "
+                                "would have to roll by more than 0.5 rad")
     return _Pose(a, a1, psi, gamma)
 
 

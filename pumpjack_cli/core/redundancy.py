@@ -1,0 +1,333 @@
+"""The real mechanism: redundant constraints and elastic pitmans (seed 000 eqs. 17-39).
+
+In the real unit the pitmans are joined to the crank pins A, A1 and to the equalizer
+pins B, B1 by revolute pairs (class V). Against the rational mechanism (spherical
+pairs there) this adds four constraints that the motion does not need (seed 000:
+W = -3 for a unit that moves with one degree of freedom), so the mechanism is
+statically indeterminate of degree 4. An ideal unit assembles without stress; a unit
+with manufacturing or wear errors (crank arms out of phase, unequal crank radii or
+pitman lengths, pin bores not parallel) forces the pitmans to twist and bend, and
+their elastic moments load the joints unevenly.
+
+Compatibility model (derived here; seed 000 takes its twist and bending angles from a
+companion paper that is not available): the force method. Linear elasticity about
+the configuration of the rational mechanism with the same errors (positions and
+motion from :mod:`.spatial`); all links rigid except the pitmans, each a straight
+prismatic bar of length l between its joints with axial stiffness E A, torsional
+G J_t, bending E J_c about the pin direction (bending in the plane of motion; the
+seed's J_z) and E J_n across it (out of that plane); shear deformation neglected.
+
+1. Unknowns (28, seed 000): R12, R13, R24, R34, R45, R05 (3 each), M_R05 (2, across z)
+   and the joint moments M_R12, M_R13, M_R24, M_R34 (2 each, across their pin axes:
+   a revolute pair transmits no moment about its own axis).
+2. Equilibrium: the 24 equations of links 2, 3, 4, 5 (forces, moments about C),
+   E X = f. Their rank is 24, or 23 when the equalizer's spin about its pin line is
+   free (parallel pins, spherical D); the null space of E holds the self-stress states
+   (redundancy 4 to 5), found per crank angle by singular value decomposition.
+3. Misfit: in the frame of each pitman chord (n along A->B, c the shaft direction
+   projected across n, t = n x c) the pin axes of the error-free unit have fixed
+   components a0, u0; with errors the pins are a, u, and the pitman ends must turn
+   with them by mu_A = a0 x a, mu_B = u0 x u relative to the chord (small rotations).
+4. Complementary energy of the pitmans, with the internal axial force N, torque T
+   and bending moments M_c, M_t at a section x from A following from the end-A loads
+   and the pitman's own weight and inertia (a point load at its centre of mass):
+   U* = sum over pitmans of integral (N^2/EA + T^2/G J_t + M_c^2/E J_c + M_t^2/E J_n) dx / 2
+   (piecewise linear moments, integrated exactly by Simpson's rule on each piece).
+5. Castigliano-Menabrea with initial misfit: X = X_p + S y minimises
+   U*(X) - sum(joint moment on a pitman end . mu of that end) over the self-stress
+   amplitudes y: (S^T Q S) y = S^T (w - q - Q X_p). With no errors and symmetric loads
+   y = 0 and the real mechanism equals the rational one.
+
+Seed 000 writes the torsion as G J_p phi / l_AB along e_AB (eqs. 18-19) and the
+bending as 3 E J_z sin(dbeta23) / (2 l_AB) along e_BD (eqs. 20-21), a bar clamped at
+one end and free to turn at the other. Here both ends are held by their pins and the
+whole statically indeterminate group is solved at once; about the pin direction a
+revolute pair turns freely, so bending in the plane of motion is not forced by the
+joints.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from .kinetostatics import (
+    LinkLoads,
+    MassModel,
+    Reactions,
+    applied_loads,
+    crank_reactions,
+)
+from .spatial import Z, SpatialLinkage, SpatialMotion, _skew, cross, spatial_motion
+
+
+@dataclass(frozen=True)
+class PitmanSection:
+    """Elastic properties of a pitman: moduli [Pa], cross-section area [m^2], second
+    moments of area [m^4].
+
+    ``inplane_inertia`` is J_c, about the pin direction (bending in the plane of motion;
+    the seed's J_z = 17.61e-6 m^4); ``outofplane_inertia`` J_n across it;
+    ``torsion_constant`` J_t (the polar moment J_p for a tube).
+    """
+
+    youngs_modulus: float
+    shear_modulus: float
+    area: float
+    inplane_inertia: float
+    outofplane_inertia: float
+    torsion_constant: float
+
+
+@dataclass(frozen=True)
+class PinTilts:
+    """Pin bores not parallel to the crank shaft [rad], small rotations of the pin axis.
+
+    Crank pin A1 (side 3), in the crank arm's frame: about the arm's radial line
+    (``crank_pin_radial``: the pin leans along the path of the pin) and about its
+    tangent (``crank_pin_tangential``: the pin leans outwards). Equalizer pin B1 about
+    the beam's long axis (``equalizer_pin_roll``) and about the vertical across it
+    (``equalizer_pin_yaw``). Side 2 is the reference.
+    """
+
+    crank_pin_radial: float = 0.0
+    crank_pin_tangential: float = 0.0
+    equalizer_pin_roll: float = 0.0
+    equalizer_pin_yaw: float = 0.0
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return np.sum(a * b, axis=-1)
+
+
+def _chord_frame(head: np.ndarray, tail: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(n, c, t): chord, shaft direction projected across it, and n x c."""
+    n = _unit(head - tail)
+    c = _unit(Z - _dot(Z, n)[:, None] * n)
+    return n, c, cross(n, c)
+
+
+def _local(v: np.ndarray, frame: tuple[np.ndarray, ...]) -> np.ndarray:
+    return np.stack([_dot(v, axis) for axis in frame], axis=-1)
+
+
+def _global(v: np.ndarray, frame: tuple[np.ndarray, ...]) -> np.ndarray:
+    return sum(v[:, i:i + 1] * axis for i, axis in enumerate(frame))
+
+
+def _rotate(v: np.ndarray, rotation: np.ndarray) -> np.ndarray:
+    """Rodrigues' rotation of vectors v (N, 3) by rotation vectors (N, 3)."""
+    angle = np.linalg.norm(rotation, axis=-1, keepdims=True)
+    axis = np.divide(rotation, angle, out=np.zeros_like(rotation), where=angle > 0)
+    return (v * np.cos(angle) + cross(axis, v) * np.sin(angle)
+            + axis * _dot(axis, v)[:, None] * (1.0 - np.cos(angle)))
+
+
+def pin_axes(spatial: SpatialLinkage, sm: SpatialMotion, tilts: PinTilts) -> tuple[np.ndarray, ...]:
+    """Axes of the four pins (a2, u2, a3, u3), unit vectors (N, 3).
+
+    Crank pins turn with the crank: their axes are the shaft direction, pin A1's tilted
+    in the arm frame (radial line r, tangent s = z x r). Equalizer pins lie along the
+    pin line B1->B, pin B1's tilted about the beam axis and about z x beam axis.
+    """
+    n = sm.crank_angle.size
+    shaft = np.broadcast_to(Z, (n, 3))
+    radial = _unit(sm.pin_a1 - sm.crank_shaft - _dot(sm.pin_a1 - sm.crank_shaft, Z)[:, None] * Z)
+    tangent = cross(Z, radial)
+    a3 = _rotate(shaft, tilts.crank_pin_radial * radial + tilts.crank_pin_tangential * tangent)
+    line = _unit(sm.pin_b - sm.pin_b1)
+    beam = np.stack([np.cos(sm.beam_angle), np.sin(sm.beam_angle), np.zeros(n)], axis=-1)
+    u3 = _rotate(line, tilts.equalizer_pin_roll * beam + tilts.equalizer_pin_yaw * cross(Z, beam))
+    return shaft, line, a3, u3
+
+
+@dataclass(frozen=True)
+class JointMoments:
+    """Reaction moments of the revolute pairs [N·m], arrays (N, 3): ``m12`` of the crank
+    on pitman 2 at A, ``m13`` on pitman 3 at A1, ``m24`` of pitman 2 on the equalizer at
+    B, ``m34`` of pitman 3 at B1; ``torsion2``, ``torsion3`` the pitman torques about
+    their axes [N·m]."""
+
+    m12: np.ndarray
+    m13: np.ndarray
+    m24: np.ndarray
+    m34: np.ndarray
+    torsion2: np.ndarray
+    torsion3: np.ndarray
+
+
+_FORCES = ("r12", "r13", "r24", "r34", "r45", "r05")
+_MOMENTS = ("m12", "m13", "m24", "m34")
+_N_UNKNOWNS = 28
+
+
+def _column(name: str) -> int:
+    """First column of an unknown: forces 0-17, M_R05 18-19, joint moments 20-27."""
+    if name in _FORCES:
+        return 3 * _FORCES.index(name)
+    return 18 if name == "m05" else 20 + 2 * _MOMENTS.index(name)
+
+
+def _moment_basis(axis: np.ndarray) -> np.ndarray:
+    """Two unit vectors across a pin axis, (N, 3, 2): a moment there is basis @ (m1, m2)."""
+    p = _unit(cross(axis, np.broadcast_to(np.array([0.0, 1.0, 0.0]), axis.shape)))
+    return np.stack([p, cross(axis, p)], axis=-1)
+
+
+def _equilibrium(sm: SpatialMotion, bases: dict[str, np.ndarray]) -> np.ndarray:
+    """E (N, 24, 28): forces and moments about C of pitman 2, pitman 3, equalizer, beam."""
+    n = sm.crank_angle.size
+    e = np.zeros((n, 24, _N_UNKNOWNS))
+    origin = np.zeros((n, 3))
+
+    def force(link: int, name: str, sign: float, point: np.ndarray) -> None:
+        c = _column(name)
+        e[:, 6 * link:6 * link + 3, c:c + 3] += sign * np.eye(3)
+        e[:, 6 * link + 3:6 * link + 6, c:c + 3] += sign * _skew(point)
+
+    def couple(link: int, name: str, sign: float) -> None:
+        c = _column(name)
+        e[:, 6 * link + 3:6 * link + 6, c:c + 2] += sign * bases[name]
+
+    force(0, "r12", 1.0, sm.pin_a)
+    force(0, "r24", -1.0, sm.pin_b)
+    couple(0, "m12", 1.0)
+    couple(0, "m24", -1.0)
+    force(1, "r13", 1.0, sm.pin_a1)
+    force(1, "r34", -1.0, sm.pin_b1)
+    couple(1, "m13", 1.0)
+    couple(1, "m34", -1.0)
+    for name, point in (("r24", sm.pin_b), ("r34", sm.pin_b1)):
+        force(2, name, 1.0, point)
+    force(2, "r45", -1.0, sm.pin_d)
+    couple(2, "m24", 1.0)
+    couple(2, "m34", 1.0)
+    force(3, "r45", 1.0, sm.pin_d)
+    force(3, "r05", 1.0, origin)
+    e[:, 21, 18] = e[:, 22, 19] = 1.0
+    return e
+
+
+def _pitman_energy(
+    sm: SpatialMotion, pin: str, top: str, force_name: str, moment_name: str, loads: LinkLoads,
+    bases: dict[str, np.ndarray], section: PitmanSection,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Q (N, 28, 28) and q (N, 28) of one pitman's complementary energy U* = X.QX/2 + q.X + c."""
+    n_pts = sm.crank_angle.size
+    a, b = getattr(sm, pin), getattr(sm, top)
+    axis, c_dir, t_dir = _chord_frame(b, a)
+    length = np.linalg.norm(b - a, axis=-1)
+    load_force, load_point, load_moment = loads.forces[:, 0], loads.points[:, 0], loads.moment
+    x_s = _dot(load_point - a, axis)
+    compliance = np.array([1 / (section.youngs_modulus * section.area), 1 / (section.shear_modulus * section.torsion_constant),
+                           1 / (section.youngs_modulus * section.inplane_inertia),
+                           1 / (section.youngs_modulus * section.outofplane_inertia)])
+    directions = np.stack([axis, axis, c_dir, t_dir], axis=1)  # (N, 4, 3): N, T, M_c, M_t
+    q_mat = np.zeros((n_pts, _N_UNKNOWNS, _N_UNKNOWNS))
+    q_vec = np.zeros((n_pts, _N_UNKNOWNS))
+    fc, mc = _column(force_name), _column(moment_name)
+    for start, stop, loaded in ((np.zeros(n_pts), x_s, 0.0), (x_s, length, 1.0)):
+        for weight, where in ((1 / 6, start), (4 / 6, 0.5 * (start + stop)), (1 / 6, stop)):
+            p = a + where[:, None] * axis
+            # cut face of the piece [0, x]: F = -F_A - loaded F_s; M = -M_A - (A - P) x F_A - loaded (M_s + (S - P) x F_s)
+            g_force = np.zeros((n_pts, 3, _N_UNKNOWNS))
+            g_force[:, :, fc:fc + 3] = -np.eye(3)
+            g_moment = np.zeros((n_pts, 3, _N_UNKNOWNS))
+            g_moment[:, :, mc:mc + 2] = -bases[moment_name]
+            g_moment[:, :, fc:fc + 3] = -_skew(a - p)
+            h_force = -loaded * load_force
+            h_moment = -loaded * (load_moment + cross(load_point - p, load_force))
+            g = np.concatenate([np.einsum("nk,nkj->nj", directions[:, 0], g_force)[:, None],
+                                np.einsum("nik,nkj->nij", directions[:, 1:], g_moment)], axis=1)
+            h = np.concatenate([_dot(directions[:, 0], h_force)[:, None],
+                                np.einsum("nik,nk->ni", directions[:, 1:], h_moment)], axis=1)
+            scale = (weight * (stop - start))[:, None] * compliance
+            q_mat += np.einsum("nij,ni,nik->njk", g, scale, g)
+            q_vec += np.einsum("nij,ni,ni->nj", g, scale, h)
+    return q_mat, q_vec
+
+
+def _misfit(ideal: SpatialMotion, actual: SpatialMotion, pin: str, top: str,
+            a_axis: np.ndarray, u_axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Rotations the pitman ends must make relative to their chord: (mu_A, mu_B)."""
+    n_pts = actual.crank_angle.size
+    frame0 = _chord_frame(getattr(ideal, top), getattr(ideal, pin))
+    frame = _chord_frame(getattr(actual, top), getattr(actual, pin))
+    a0 = _global(_local(np.broadcast_to(Z, (n_pts, 3)), frame0), frame)
+    u0 = _global(_local(_unit(ideal.pin_b - ideal.pin_b1), frame0), frame)
+    return cross(a0, a_axis), cross(u0, u_axis)
+
+
+def real_mechanism(
+    ideal: SpatialLinkage,
+    actual: SpatialLinkage,
+    tilts: PinTilts,
+    section: PitmanSection,
+    masses: MassModel,
+    crank_angle: np.ndarray,
+    omega1: np.ndarray | float,
+    epsilon1: np.ndarray | float,
+    rod_load: np.ndarray,
+    *,
+    weights: bool = True,
+    inertia: bool = True,
+) -> tuple[SpatialMotion, JointMoments, Reactions]:
+    """Kinematics, joint moments and reactions of the real mechanism (module doc).
+
+    ``ideal`` is the error-free unit, ``actual`` the same with the side-3 deviations
+    (crank phase, crank radius, pitman length); ``tilts`` the pin bore errors.
+    """
+    ideal_motion = spatial_motion(ideal, crank_angle, omega1, epsilon1)
+    sm = spatial_motion(actual, crank_angle, omega1, epsilon1)
+    loads = applied_loads(actual, masses, sm, rod_load, weights=weights, inertia=inertia)
+    a2, u2, a3, u3 = pin_axes(actual, sm, tilts)
+    bases = {"m12": _moment_basis(a2), "m24": _moment_basis(u2), "m13": _moment_basis(a3), "m34": _moment_basis(u3)}
+    e = _equilibrium(sm, bases)
+    f = -np.concatenate([np.concatenate([link.resultant(), link.moment_about_origin()], axis=-1)
+                         for link in (loads.pitman2, loads.pitman3, loads.equalizer, loads.beam)], axis=-1)
+    u_svd, sing, vh = np.linalg.svd(e)
+    rank = int(np.max(np.sum(sing > 1e-10 * sing[:, :1], axis=-1)))
+    x_p = np.einsum("nji,nj->ni", vh[:, :rank], np.einsum("nji,nj->ni", u_svd[:, :, :rank], f) / sing[:, :rank])
+    null = np.swapaxes(vh[:, rank:], 1, 2)  # (N, 28, 28 - rank): self-stress states
+
+    q_mat, q_vec = np.zeros((crank_angle.size, _N_UNKNOWNS, _N_UNKNOWNS)), np.zeros((crank_angle.size, _N_UNKNOWNS))
+    work = np.zeros((crank_angle.size, _N_UNKNOWNS))
+    for pin, top, force_name, m_pin, m_top, link, axes in (
+        ("pin_a", "pin_b", "r12", "m12", "m24", loads.pitman2, (a2, u2)),
+        ("pin_a1", "pin_b1", "r13", "m13", "m34", loads.pitman3, (a3, u3)),
+    ):
+        qm, qv = _pitman_energy(sm, pin, top, force_name, m_pin, link, bases, section)
+        q_mat, q_vec = q_mat + qm, q_vec + qv
+        mu_a, mu_b = _misfit(ideal_motion, sm, pin, top, *axes)
+        # work of the joint moments on the pitman ends through the misfit: +M_pin at A, -M_top at B
+        work[:, _column(m_pin):_column(m_pin) + 2] = np.einsum("nki,nk->ni", bases[m_pin], mu_a)
+        work[:, _column(m_top):_column(m_top) + 2] = -np.einsum("nki,nk->ni", bases[m_top], mu_b)
+    st = np.swapaxes(null, 1, 2)
+    rhs = np.einsum("nij,nj->ni", st, work - q_vec - np.einsum("nij,nj->ni", q_mat, x_p))
+    y = np.linalg.solve(st @ q_mat @ null, rhs[..., None])[..., 0]
+    x = x_p + np.einsum("nij,nj->ni", null, y)
+
+    scale = np.max(np.abs(f), axis=-1)
+    residual = np.max(np.abs(np.einsum("nij,nj->ni", e, x) - f), axis=-1) / np.where(scale > 0, scale, 1.0)
+    r = {name: x[:, _column(name):_column(name) + 3] for name in _FORCES}
+    joint = {name: np.einsum("nki,ni->nk", bases[name], x[:, _column(name):_column(name) + 2]) for name in _MOMENTS}
+    crank = dataclasses.replace(loads.crank, moment=loads.crank.moment - joint["m12"] - joint["m13"])
+    r01, m01, torque = crank_reactions(actual, sm, crank, r["r12"], r["r13"])
+    n2, n3 = _unit(sm.pin_b - sm.pin_a), _unit(sm.pin_b1 - sm.pin_a1)
+    moments = JointMoments(
+        m12=joint["m12"], m13=joint["m13"], m24=joint["m24"], m34=joint["m34"],
+        torsion2=_dot(joint["m24"], n2), torsion3=_dot(joint["m34"], n3),
+    )
+    n = crank_angle.size
+    reactions = Reactions(
+        r12=r["r12"], r13=r["r13"], r24=r["r24"], r34=r["r34"], r45=r["r45"], r05=r["r05"],
+        m05=np.stack([x[:, 18], x[:, 19], np.zeros(n)], axis=-1), r01=r01, m01=m01,
+        balancing_torque=torque, residual=residual,
+    )
+    return sm, moments, reactions

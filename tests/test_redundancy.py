@@ -1,0 +1,272 @@
+"""The real mechanism with redundant constraints against the rational one (issue 6).
+
+Independent checks: the equilibrium matrix of all 28 unknowns and its self-stress
+states are assembled here; the pitmans' complementary energy is integrated here on a
+fine grid (not Simpson's rule) and differentiated numerically; compatibility
+(Menabrea) must then hold for every self-stress state.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+import pytest
+import scipy.linalg
+
+from pumpjack_cli.cards import read_card
+from pumpjack_cli.config import Deviations, load_unit
+from pumpjack_cli.core import redundancy
+from pumpjack_cli.core.card import card_load
+from pumpjack_cli.core.kinematics import crank_grid
+from pumpjack_cli.core.kinetostatics import applied_loads, rational_mechanism
+from pumpjack_cli.core.redundancy import PinTilts, real_mechanism
+from pumpjack_cli.core.spatial import spatial_motion
+
+ROOT = Path(__file__).resolve().parent.parent
+UNIT = "7sk12-2.5-5600"
+OMEGA = 8 * np.pi / 30
+
+
+@pytest.fixture(scope="module")
+def setup():
+    config = load_unit(UNIT)
+    ideal = config.geometry.spatial()
+    theta = crank_grid(72)
+    card = read_card(ROOT / "samples" / f"{UNIT}-card.csv", ideal.planar).card
+    return config, ideal, config.masses.model(), config.pitman_section.model(), theta, card_load(card, theta)
+
+
+#: One deviation at a time, each of a size found on worn units (mm, tenths of a degree, mrad).
+CASES = {
+    "crank_phase": (dict(crank_phase_offset=np.radians(0.2)), PinTilts()),
+    "crank_radius": (dict(crank_radius_offset=0.002), PinTilts()),
+    "pitman_length": (dict(pitman_length_offset=0.002), PinTilts()),
+    "crank_pin_radial": ({}, PinTilts(crank_pin_radial=1e-3)),
+    "crank_pin_tangential": ({}, PinTilts(crank_pin_tangential=1e-3)),
+    "equalizer_pin_roll": ({}, PinTilts(equalizer_pin_roll=1e-3)),
+    "equalizer_pin_yaw": ({}, PinTilts(equalizer_pin_yaw=1e-3)),
+}
+
+
+def run(setup, scale=1.0, case=None):
+    config, ideal, masses, section, theta, load = setup
+    offsets, tilts = CASES[case] if case else ({}, PinTilts())
+    actual = dataclasses.replace(ideal, **{k: scale * v for k, v in offsets.items()})
+    tilts = PinTilts(**{f.name: scale * getattr(tilts, f.name) for f in dataclasses.fields(PinTilts)})
+    return real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load)
+
+
+def test_no_errors_real_equals_rational(setup):
+    """Zero deviations: no misfit, no self-stress; every reaction and M_z as in the
+    rational mechanism to 1e-9 of the largest load, and R12 = R13."""
+    config, ideal, masses, section, theta, load = setup
+    _, rational = rational_mechanism(ideal, masses, theta, OMEGA, 0.0, load)
+    _, joints, real = run(setup)
+    scale = np.max(load)
+    for name in ("r12", "r13", "r24", "r34", "r45", "r05", "r01", "m05", "m01"):
+        assert np.max(np.abs(getattr(real, name) - getattr(rational, name))) < 1e-9 * scale, name
+    assert np.max(np.abs(real.balancing_torque - rational.balancing_torque)) < 1e-9 * scale
+    assert np.max(np.abs(real.r12 - real.r13)) < 1e-9 * scale
+    for name in ("m12", "m13", "m24", "m34"):
+        assert np.max(np.abs(getattr(joints, name))) < 1e-9 * scale
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_small_errors_act_linearly_and_keep_equilibrium(setup, case):
+    """Linear elasticity about the rational motion: halving a small deviation halves
+    every difference from the rational mechanism (to 1 %: the deviation also moves the
+    geometry, a second-order effect); the 28-unknown equilibrium holds to 1e-9."""
+    config, ideal, masses, section, theta, load = setup
+    _, rational = rational_mechanism(ideal, masses, theta, OMEGA, 0.0, load)
+    _, _, full = run(setup, 1.0, case)
+    _, _, half = run(setup, 0.5, case)
+    d_full = full.r12 - rational.r12
+    d_half = half.r12 - rational.r12
+    assert np.max(np.abs(d_full)) > 10.0  # the deviation does load the joints
+    assert np.max(np.abs(d_full - 2 * d_half)) < 0.01 * np.max(np.abs(d_full))
+    assert full.residual.max() < 1e-9 and half.residual.max() < 1e-9
+
+
+def skew(v):
+    x, y, z = v
+    return np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+def test_compatibility_every_self_stress_state(setup):
+    """Menabrea with misfit: for every self-stress state s (null space of the 24 x 28
+    equilibrium matrix, assembled here), dU*/dX . s = (misfit work) . s, with U* the
+    pitmans' complementary energy integrated here on 4000 points per pitman."""
+    config, ideal, masses, section, theta, load = setup
+    k = 7  # one crank angle is enough for this independent (slow, looped) check
+    actual = dataclasses.replace(ideal, pitman_length_offset=0.002, crank_phase_offset=np.radians(0.1))
+    tilts = PinTilts(crank_pin_radial=5e-4, equalizer_pin_roll=-5e-4)
+    sm_all, joints, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load)
+    loads = applied_loads(actual, masses, sm_all, load)
+    a2, u2, a3, u3 = redundancy.pin_axes(actual, sm_all, tilts)
+    p = {name: getattr(sm_all, name)[k] for name in ("pin_a", "pin_a1", "pin_b", "pin_b1", "pin_d")}
+
+    def basis(axis):
+        q1 = np.cross(axis, [0.0, 1.0, 0.0])
+        q1 /= np.linalg.norm(q1)
+        return np.stack([q1, np.cross(axis, q1)], axis=1)
+
+    bases = {"m12": basis(a2[k]), "m24": basis(u2[k]), "m13": basis(a3[k]), "m34": basis(u3[k])}
+    cols = {"r12": 0, "r13": 3, "r24": 6, "r34": 9, "r45": 12, "r05": 15, "m05": 18,
+            "m12": 20, "m13": 22, "m24": 24, "m34": 26}
+    e = np.zeros((24, 28))
+
+    def force(link, name, sign, point):
+        e[6 * link:6 * link + 3, cols[name]:cols[name] + 3] += sign * np.eye(3)
+        e[6 * link + 3:6 * link + 6, cols[name]:cols[name] + 3] += sign * skew(point)
+
+    def couple(link, name, sign):
+        e[6 * link + 3:6 * link + 6, cols[name]:cols[name] + 2] += sign * bases[name]
+
+    force(0, "r12", 1, p["pin_a"]); force(0, "r24", -1, p["pin_b"]); couple(0, "m12", 1); couple(0, "m24", -1)
+    force(1, "r13", 1, p["pin_a1"]); force(1, "r34", -1, p["pin_b1"]); couple(1, "m13", 1); couple(1, "m34", -1)
+    force(2, "r24", 1, p["pin_b"]); force(2, "r34", 1, p["pin_b1"]); force(2, "r45", -1, p["pin_d"])
+    couple(2, "m24", 1); couple(2, "m34", 1)
+    force(3, "r45", 1, p["pin_d"]); force(3, "r05", 1, np.zeros(3))
+    e[21, 18] = e[22, 19] = 1.0
+    selfstress = scipy.linalg.null_space(e, rcond=1e-10)
+    assert selfstress.shape[1] in (4, 5)  # the redundancy of the real mechanism
+
+    x = np.concatenate([real.r12[k], real.r13[k], real.r24[k], real.r34[k], real.r45[k], real.r05[k],
+                        real.m05[k, :2]] + [bases[n].T @ getattr(joints, n)[k] for n in ("m12", "m13", "m24", "m34")])
+
+    def energy(xv):
+        total = 0.0
+        for pin, top, fc, mc, link in (("pin_a", "pin_b", "r12", "m12", loads.pitman2),
+                                       ("pin_a1", "pin_b1", "r13", "m13", loads.pitman3)):
+            a, b = p[pin], p[top]
+            n = (b - a) / np.linalg.norm(b - a)
+            c = np.array([0.0, 0.0, 1.0]) - n[2] * n
+            c /= np.linalg.norm(c)
+            t = np.cross(n, c)
+            f_a, m_a = xv[cols[fc]:cols[fc] + 3], bases[mc] @ xv[cols[mc]:cols[mc] + 2]
+            f_s, s_pt, m_s = link.forces[k, 0], link.points[k, 0], link.moment[k]
+            x_s = (s_pt - a) @ n
+            xs = np.linspace(0.0, np.linalg.norm(b - a), 4001)
+            vals = []
+            for xi in xs:
+                cut = a + xi * n
+                loaded = 1.0 if xi > x_s else 0.0
+                f = -f_a - loaded * f_s
+                m = -m_a - np.cross(a - cut, f_a) - loaded * (m_s + np.cross(s_pt - cut, f_s))
+                vals.append((f @ n) ** 2 / (section.youngs_modulus * section.area)
+                            + (m @ n) ** 2 / (section.shear_modulus * section.torsion_constant)
+                            + (m @ c) ** 2 / (section.youngs_modulus * section.inplane_inertia)
+                            + (m @ t) ** 2 / (section.youngs_modulus * section.outofplane_inertia))
+            total += 0.5 * np.trapezoid(vals, xs)
+        return total
+
+    gradient = np.array([(energy(x + h * s) - energy(x - h * s)) / (2 * h)
+                         for s, h in ((col, 1e-3 * np.max(np.abs(x))) for col in selfstress.T)])
+    ideal_motion = spatial_motion(ideal, theta[k:k + 1], OMEGA)
+    one = spatial_motion(actual, theta[k:k + 1], OMEGA)
+    work = np.zeros(28)
+    for pin, top, mp, mt, axes in (("pin_a", "pin_b", "m12", "m24", (a2, u2)), ("pin_a1", "pin_b1", "m13", "m34", (a3, u3))):
+        mu_a, mu_b = redundancy._misfit(ideal_motion, one, pin, top, axes[0][k:k + 1], axes[1][k:k + 1])
+        work[cols[mp]:cols[mp] + 2] = bases[mp].T @ mu_a[0]
+        work[cols[mt]:cols[mt] + 2] = -bases[mt].T @ mu_b[0]
+    expected = selfstress.T @ work
+    # Trapezoid on 4000 intervals with a kink at the centre of mass: relative error ~1e-4.
+    assert np.allclose(gradient, expected, rtol=0, atol=2e-3 * np.max(np.abs(expected)))
+
+
+def test_misfit_of_a_tilted_equalizer_pin_is_the_tilt():
+    """Pin B1 bore turned by 1 mrad about the beam axis, nothing else: pitman 3's end B
+    must turn by 1 mrad relative to its chord, its end A not at all."""
+    ideal = load_unit(UNIT).geometry.spatial()
+    theta = crank_grid(12)
+    sm = spatial_motion(ideal, theta, OMEGA)
+    _, _, a3, u3 = redundancy.pin_axes(ideal, sm, PinTilts(equalizer_pin_roll=1e-3))
+    mu_a, mu_b = redundancy._misfit(sm, sm, "pin_a1", "pin_b1", a3, u3)
+    assert np.allclose(np.linalg.norm(mu_b, axis=-1), np.sin(1e-3), rtol=1e-9)
+    assert np.max(np.abs(mu_a)) < 1e-15
+
+
+def test_config_deviations_and_bounds():
+    config = load_unit(UNIT)
+    assert config.deviations == Deviations()
+    with pytest.raises(ValueError):
+        Deviations(pitman_length="80 cm")
+
+
+# --- the command ---------------------------------------------------------------------
+
+CARD = ROOT / "samples" / f"{UNIT}-card.csv"
+
+
+def compare(run_cli, *extra):
+    import json
+
+    code, out, err = run_cli("compare-redundancy", UNIT, "--card", CARD, "--spm", "8", "--steps", "72", "-f", "json", *extra)
+    assert (code, err) == (0, "")
+    return json.loads(out)
+
+
+def test_command_without_errors_matches_reactions(run_cli):
+    """Zero deviations: every difference column is zero to 1e-9 of the load, and the
+    rational columns are exactly what `pumpjack reactions` prints."""
+    import json
+
+    data = compare(run_cli)
+    series = data["series"]
+    scale = max(series["rod_load_n"])
+    for key, values in series.items():
+        if key.endswith("_difference_n") or key.endswith("_difference_n_m"):
+            assert max(abs(v) for v in values) < 1e-9 * scale, key
+    code, out, _ = run_cli("reactions", UNIT, "--card", CARD, "--spm", "8", "--steps", "72", "-f", "json")
+    reactions = json.loads(out)["series"]
+    assert series["r12_y_rational_n"] == reactions["r12_y_n"]
+    assert series["balancing_torque_rational_n_m"] == reactions["balancing_torque_n_m"]
+
+
+def test_command_deviation_options_reach_the_solver(run_cli, setup):
+    data = compare(run_cli, "--pitman-length", "2 mm")
+    _, _, real = run(setup, 1.0, "pitman_length")
+    _, ideal, masses, _, theta, load = setup
+    _, rational = rational_mechanism(ideal, masses, theta, OMEGA, 0.0, load)
+    expected = np.max(np.abs(real.r12[:, 1] - rational.r12[:, 1]))
+    assert data["summary"]["max_difference_r12_y_n"] == pytest.approx(expected, rel=1e-12)
+    assert data["summary"]["deviation_pitman_length_m"] == pytest.approx(0.002, rel=1e-12)
+    assert data["summary"]["equilibrium_residual_ratio"] < 1e-9
+
+
+@pytest.mark.parametrize(
+    ("args", "fragment"),
+    [
+        (["--pitman-length", "80 cm"], "--pitman-length: Input should be less than or equal to 0.5"),
+        (["--crank-phase", "0,5 deg"], "--crank-phase: '0,5 deg' has a decimal comma"),
+        (["--crank-radius", "2 kg"], "--crank-radius: '2 kg' is a mass, not a length"),
+        (["--crank-radius", "0.5 m", "--pitman-length", "-0.5 m"], "cannot assemble"),
+        (["--crank-radius", "-0.4 m", "--pitman-length", "0.45 m"], "would have to roll"),
+    ],
+)
+def test_command_bad_deviations(run_cli, args, fragment):
+    code, out, err = run_cli("compare-redundancy", UNIT, "--card", CARD, "--spm", "8", *args)
+    assert code == 2 and out == ""
+    assert len(err.splitlines()) == 1 and fragment in err
+
+
+def test_unit_without_pitman_section(run_cli, repo_root):
+    code, _, err = run_cli("compare-redundancy", "c-114d-133-54", "--card",
+                           repo_root / "samples" / "c-114d-133-54-card.csv", "--spm", "10")
+    assert code == 2 and "no [pitman_section]" in err
+
+
+@pytest.mark.parametrize("field", ["youngs_modulus", "shear_modulus", "area", "inplane_inertia",
+                                   "outofplane_inertia", "torsion_constant"])
+def test_negative_stiffness_is_rejected(field):
+    import tomllib
+
+    from pumpjack_cli.config import parse_unit
+    from pumpjack_cli.errors import ConfigError
+
+    data = tomllib.loads((ROOT / "configs" / f"{UNIT}.toml").read_text())
+    data["pitman_section"][field] = -1.0
+    with pytest.raises(ConfigError, match=rf"x.toml: pitman_section.{field}: Input should be greater than 0"):
+        parse_unit(data, "x.toml")
