@@ -124,3 +124,31 @@ def test_plot(run_cli, tmp_path, sk8_card):
     code, _, _ = run_cli("reactions", SK8, "--card", sk8_card, "--plot", target, "-o", tmp_path / "r.csv")
     assert code == 0
     assert target.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_dynamic_rotation_balances_the_motor(run_cli, sk8_card):
+    """--rotation dynamic: the kinetostatics run on the speed and acceleration of the
+    machine's equation of motion. The gearbox torque on the crank is then the motor
+    torque through the drive less what accelerates the drive's own inertia,
+    M_z = u M_motor - I_drive eps1: two independent models (spatial kinetostatics,
+    reduced-inertia equation of motion) must agree through the power balance."""
+    from pumpjack_cli.commands.dynamics import build_machine
+    from pumpjack_cli.core.dynamics import steady_state
+
+    code, out, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--steps", "90", "-f", "json")
+    assert (code, err) == (0, "")
+    series = json.loads(out)["series"]
+    config = load_unit(SK8)
+    theta = crank_grid(90)
+    card = read_card(sk8_card, config.geometry.linkage()).card
+    machine = build_machine(config, card)
+    state = steady_state(machine, theta)
+    assert series["crank_speed_rad_s"] == state.omega.tolist()
+    expected = machine.drive_ratio * state.motor_torque - machine.drive_inertia * state.epsilon
+    torque = np.array(series["balancing_torque_n_m"])
+    assert np.max(np.abs(torque - expected)) < 1e-9 * np.max(np.abs(expected))
+
+
+def test_spm_with_dynamic_rotation_is_an_error(run_cli, sk8_card):
+    code, _, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--spm", "8")
+    assert code == 2 and "--spm sets a uniform crank speed" in err

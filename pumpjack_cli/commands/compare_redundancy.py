@@ -16,7 +16,18 @@ from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity
 from .common import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
-from .reactions import REACTIONS, CardOption, CardUnitsOption, SpmOption, StepsOption, card_on_grid, require_masses
+from .reactions import (
+    REACTIONS,
+    CardOption,
+    CardRun,
+    CardUnitsOption,
+    Rotation,
+    RotationOption,
+    SpmOption,
+    StepsOption,
+    card_run,
+    require_masses,
+)
 
 #: Deviation options: field of [deviations], dimension of its value.
 DEVIATION_OPTIONS = {
@@ -49,9 +60,10 @@ def deviations_with_options(config: UnitConfig, given: dict[str, str | None]) ->
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
 
 
-def comparison_report(config: UnitConfig, theta: np.ndarray, load: np.ndarray, rational: Reactions,
-                      real: Reactions, joints: JointMoments, deviations: Deviations, title: str) -> Report:
+def comparison_report(config: UnitConfig, run: CardRun, rational: Reactions, real: Reactions,
+                      joints: JointMoments, deviations: Deviations, title: str) -> Report:
     """Both mechanisms side by side, their differences, the joint moments and the seed 000 summary."""
+    theta, load = run.crank_angle, run.load
     columns = [Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation"),
                Column("rod_load", "force", "polished-rod load from the card", brief=False)]
     series: dict[str, np.ndarray] = {"crank_angle": theta, "rod_load": load}
@@ -120,6 +132,7 @@ def compare_redundancy(
     card_units: CardUnitsOption = UnitSystem.si,
     spm: SpmOption = None,
     steps: StepsOption = 360,
+    rotation: RotationOption = Rotation.uniform,
     crank_phase: Annotated[str | None, _deviation_option("crank pin A1 ahead of A, e.g. '0.5 deg'")] = None,
     crank_radius: Annotated[str | None, _deviation_option("crank radius of A1 minus that of A, e.g. '2 mm'")] = None,
     pitman_length: Annotated[str | None, _deviation_option("pitman A1B1 minus AB, e.g. '2 mm'")] = None,
@@ -145,9 +158,10 @@ def compare_redundancy(
     })
     ideal = config.geometry.spatial(config.name)
     masses = config.masses.model()
-    theta, omega, load = card_on_grid(config, ideal.planar, card, card_units, spm, steps)
-    _, rational = rational_mechanism(ideal, masses, theta, omega, 0.0, load)
+    run = card_run(config, ideal.planar, card, card_units, spm, steps, rotation)
+    motion = (run.crank_angle, run.omega, run.epsilon, run.load)
+    _, rational = rational_mechanism(ideal, masses, *motion)
     _, joints, real = real_mechanism(ideal, deviations.apply(ideal), deviations.tilts(),
-                                     config.pitman_section.model(), masses, theta, omega, 0.0, load)
-    title = f"{config.name}: real against rational mechanism, card {card.name}"
-    output(comparison_report(config, theta, load, rational, real, joints, deviations, title), fmt, units, out, plot)
+                                     config.pitman_section.model(), masses, *motion)
+    title = f"{config.name}: real against rational mechanism, card {card.name}, {rotation.value} rotation"
+    output(comparison_report(config, run, rational, real, joints, deviations, title), fmt, units, out, plot)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import sys
+from dataclasses import dataclass
+from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
@@ -38,16 +40,19 @@ CardUnitsOption = Annotated[
 ]
 
 
-def reactions_report(config: UnitConfig, theta: np.ndarray, omega: float, load: np.ndarray, r: Reactions,
-                     title: str) -> Report:
+def reactions_report(run: CardRun, r: Reactions, title: str) -> Report:
     """Tabulate reactions: every component per crank angle, peaks and torque extremes."""
+    theta, load = run.crank_angle, run.load
     columns = [
         Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation"),
         Column("time", "time", "time from crank angle 0", brief=False),
+        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", brief=False),
+        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", brief=False),
         Column("rod_load", "force", "polished-rod load from the card"),
     ]
-    series = {"crank_angle": theta, "time": theta / omega, "rod_load": load}
-    summary = [Scalar("crank_speed", "angular_velocity", omega, "crank angular velocity omega1"),
+    series = {"crank_angle": theta, "time": run.time, "crank_speed": run.omega, "crank_acceleration": run.epsilon,
+              "rod_load": load}
+    summary = [Scalar("mean_crank_speed", "angular_velocity", 2 * np.pi / run.period, "2 pi / cycle time"),
                Scalar("max_rod_load", "force", float(load.max()), "peak polished-rod load"),
                Scalar("min_rod_load", "force", float(load.min()), "minimum polished-rod load")]
     vectors = {name: getattr(r, name) for name in REACTIONS} | {name: getattr(r, name) for name in MOMENTS}
@@ -85,14 +90,47 @@ def require_masses(config: UnitConfig) -> None:
         raise PumpjackError(f"unit {config.name} has no [masses] section; reactions need the link masses")
 
 
-def card_on_grid(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, spm: float | None,
-                 steps: int) -> tuple[np.ndarray, float, np.ndarray]:
-    """Crank angles, crank speed and the card's load on them; card warnings go to stderr."""
+class Rotation(str, Enum):
+    uniform = "uniform"
+    dynamic = "dynamic"
+
+
+RotationOption = Annotated[Rotation, typer.Option(
+    "--rotation", help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the periodic "
+    "motion from the machine's equation of motion under this card (as `pumpjack dynamics --card`)")]
+
+
+@dataclass(frozen=True)
+class CardRun:
+    """Crank angles [rad], time [s], crank speed [1/s] and acceleration [1/s²] and the
+    card's polished-rod load [N] on them, and the cycle time [s]."""
+
+    crank_angle: np.ndarray
+    time: np.ndarray
+    omega: np.ndarray
+    epsilon: np.ndarray
+    load: np.ndarray
+    period: float
+
+
+def card_run(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, spm: float | None, steps: int,
+             rotation: Rotation) -> CardRun:
+    """The card on a crank-angle grid with uniform or dynamic rotation; card warnings go to stderr."""
     reading = read_card(card, linkage, card_units.value)
     for warning in reading.warnings:
         sys.stderr.write(f"pumpjack: warning: {warning}\n")
     theta = crank_grid(steps)
-    return theta, crank_speed(config, spm), card_load(reading.card, theta)
+    load = card_load(reading.card, theta)
+    if rotation is Rotation.uniform:
+        omega = crank_speed(config, spm)
+        return CardRun(theta, theta / omega, np.full(steps, omega), np.zeros(steps), load, 2 * np.pi / omega)
+    if spm is not None:
+        raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
+    from ..core.dynamics import steady_state
+    from .dynamics import build_machine
+
+    state = steady_state(build_machine(config, reading.card), theta)
+    return CardRun(theta, state.time, state.omega, state.epsilon, load, state.summary.period)
 
 
 SpmOption = Annotated[
@@ -107,6 +145,7 @@ def reactions(
     card_units: CardUnitsOption = UnitSystem.si,
     spm: SpmOption = None,
     steps: StepsOption = 360,
+    rotation: RotationOption = Rotation.uniform,
     no_inertia: Annotated[bool, typer.Option("--no-inertia", help="leave out the links' inertia forces and moments")] = False,
     no_weights: Annotated[bool, typer.Option("--no-weights", help="leave out the links' weights")] = False,
     counterweight_count: Annotated[int | None, typer.Option(help="number of counterweight blocks instead of the unit's", min=0, max=16)] = None,
@@ -133,7 +172,8 @@ def reactions(
             raise PumpjackError(f"--counterweight-radius: {radius} m is outside 0..5 m")
         counterweights = counterweights.model_copy(update={"radius": radius})
     masses = config.masses.model_copy(update={"counterweights": counterweights}).model()
-    theta, omega, load = card_on_grid(config, spatial.planar, card, card_units, spm, steps)
-    _, r = rational_mechanism(spatial, masses, theta, omega, 0.0, load, weights=not no_weights, inertia=not no_inertia)
-    title = f"{config.name}: reactions and balancing torque, card {card.name}"
-    output(reactions_report(config, theta, omega, load, r, title), fmt, units, out, plot)
+    run = card_run(config, spatial.planar, card, card_units, spm, steps, rotation)
+    _, r = rational_mechanism(spatial, masses, run.crank_angle, run.omega, run.epsilon, run.load,
+                              weights=not no_weights, inertia=not no_inertia)
+    title = f"{config.name}: reactions and balancing torque, card {card.name}, {rotation.value} rotation"
+    output(reactions_report(run, r, title), fmt, units, out, plot)
