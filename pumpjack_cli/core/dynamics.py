@@ -41,7 +41,7 @@ import numpy as np
 
 from ..errors import DynamicsError
 from .card import Card, card_load
-from .kinematics import Extreme, RodMotion, _extremes, crank_grid, rod_motion
+from .kinematics import Extreme, RodMotion, extremes, crank_grid, rod_motion
 from .kinetostatics import STANDARD_GRAVITY, MassModel
 from .linkage import DeadPositions, Linkage, Motion, dead_positions, motion
 
@@ -601,11 +601,11 @@ def _summary(machine: Machine, strokes, solutions, at, period: float, energy: fl
     u = machine.drive_ratio
     torque = drive / u
     power = torque * u * omega
-    w_max, w_min = _extremes(theta, omega)
-    e_max, e_min = _extremes(theta, epsilon)
-    p_max, p_min = _extremes(theta, power)
-    t_max, t_min = _extremes(theta, torque)
-    static_max, _ = _extremes(theta, r.load_torque + r.gravity_torque)
+    w_max, w_min = extremes(theta, omega)
+    e_max, e_min = extremes(theta, epsilon)
+    p_max, p_min = extremes(theta, power)
+    t_max, t_min = extremes(theta, torque)
+    static_max, _ = extremes(theta, r.load_torque + r.gravity_torque)
     peak = max(t_max.value, -t_min.value)
     if peak > motor.breakdown_torque:
         where = t_max if t_max.value >= -t_min.value else t_min

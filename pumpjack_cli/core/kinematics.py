@@ -175,7 +175,7 @@ def crank_grid(steps: int) -> np.ndarray:
     return np.linspace(0.0, 2.0 * np.pi, steps, endpoint=False)
 
 
-def _extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
+def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
     """Maximum and minimum of a periodic sampled curve, refined by a parabola through
     the extreme sample and its two neighbours (error O(h^3) in the angle)."""
     found = []
@@ -206,9 +206,9 @@ def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsS
     stroke = linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
     from_bottom = theta - dead.crank_angle_bottom
     upstroke = (dead.crank_angle_top - dead.crank_angle_bottom) % (2.0 * np.pi)
-    v_max, v_min = _extremes(theta, exact.velocity)
-    a_max, a_min = _extremes(theta, exact.acceleration)
-    tf_max, tf_min = _extremes(theta, linkage.front_arm * m.beam_rate)
+    v_max, v_min = extremes(theta, exact.velocity)
+    a_max, a_min = extremes(theta, exact.acceleration)
+    tf_max, tf_min = extremes(theta, linkage.front_arm * m.beam_rate)
     return KinematicsSummary(
         crank_speed=omega,
         period=2.0 * np.pi / omega,
