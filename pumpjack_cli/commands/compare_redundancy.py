@@ -145,8 +145,9 @@ def compare_redundancy(
     out: OutputOption = None,
     plot: PlotOption = None,
 ) -> None:
-    """Reactions and balancing torque of the real mechanism (revolute pins, elastic pitmans,
-    manufacturing errors) against the rational one (spherical pins), from a dynamometer card."""
+    """Real mechanism (redundant constraints, elastic pitmans, errors) against the rational one.
+
+    Reactions, joint moments and balancing torque of both from a dynamometer card."""
     config = load_unit(unit)
     require_masses(config)
     if config.pitman_section is None:

@@ -182,8 +182,10 @@ def dynamics(
     out: OutputOption = None,
     plot: PlotOption = None,
 ) -> None:
-    """Periodic non-uniform rotation of the crank under the motor's characteristic, the well
-    (or a dynamometer card) and the weights: the machine's equation of motion (seed 004)."""
+    """Non-uniform crank rotation from the machine's equation of motion (seed 004).
+
+    The periodic motion under the motor's characteristic, the well (or a dynamometer
+    card) and the weights."""
     config = load_unit(unit)
     reading = None
     if card is not None:

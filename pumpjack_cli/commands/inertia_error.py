@@ -210,8 +210,9 @@ def inertia_error(
     out: OutputOption = None,
     plot: PlotOption = None,
 ) -> None:
-    """Accuracy of the approximate inertia-force laws against the exact motion (seed 001):
-    errors at the peak and over the cycle, for slider-crank and beam pumping units."""
+    """Error of the approximate inertia-force laws against the exact motion (seed 001).
+
+    Errors at the peak and over the cycle, for slider-crank and beam pumping units."""
     if mass is not None and not mass > 0:
         raise PumpjackError(f"--mass must be positive, got {mass} kg")
     config = load_any_unit(unit)

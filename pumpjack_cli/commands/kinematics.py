@@ -116,8 +116,9 @@ def kinematics(
     out: OutputOption = None,
     plot: PlotOption = None,
 ) -> None:
-    """Exact kinematics of the polished rod, beam and pitman for uniform crank rotation,
-    with the elementary and refined textbook approximations for comparison."""
+    """Exact kinematics of the polished rod, beam and pitman for uniform crank rotation.
+
+    The elementary and refined textbook approximations are printed beside it."""
     config = load_unit(unit)
     result = uniform_kinematics(config.geometry.linkage(), crank_speed(config, spm), steps)
     output(kinematics_report(config, result), fmt, units, out, plot)

@@ -155,8 +155,10 @@ def reactions(
     out: OutputOption = None,
     plot: PlotOption = None,
 ) -> None:
-    """Reactions in every joint of the spatial mechanism (without redundant constraints) and
-    the balancing torque on the crank shaft, from a dynamometer card."""
+    """Joint reactions and balancing torque of the rational mechanism from a dynamometer card.
+
+    The spatial mechanism without redundant constraints (spherical pins), with weights
+    and d'Alembert inertia."""
     config = load_unit(unit)
     require_masses(config)
     spatial = config.geometry.spatial(config.name)
