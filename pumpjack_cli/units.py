@@ -18,7 +18,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import ConfigError
 
 INCH = 0.0254
 FOOT = 0.3048
