@@ -7,9 +7,10 @@ the committed files are exactly what this script makes.
 Load model (a rigid rod string with an elastic load transfer; the classical static
 "ideal card" of pumping-well textbooks plus rod and fluid inertia):
 
-* rod weight in air W_r = sum(rho_s g A_i L_i), rho_s = 7850 kg/m^3, and in fluid
-  W_rf = W_r (1 - rho_f / rho_s) (Archimedes);
-* fluid load on the plunger W_f = rho_f g L A_p (pump full, no tubing or casing pressure);
+* rod weight in air W_r = sum(rho_s g A_i L_i), rho_s the well's rod density, and in
+  fluid W_rf = W_r (1 - rho_f / rho_s) (Archimedes), by pumpjack_cli.core.well;
+* fluid load on the plunger W_f = rho_f g L A_p (pump full, no tubing or casing
+  pressure, the column from the pump depth), by pumpjack_cli.core.well;
 * rod stretch under the fluid load delta = W_f sum(L_i / (E A_i)), E = 2.06e11 Pa: the
   fluid load is picked up linearly over the first delta of the upstroke and released
   over the first delta of the downstroke (Hooke's law);
@@ -36,10 +37,10 @@ sys.path.insert(0, str(ROOT))
 
 from pumpjack_cli.config import load_unit  # noqa: E402
 from pumpjack_cli.core.kinematics import uniform_kinematics  # noqa: E402
+from pumpjack_cli.core.kinetostatics import STANDARD_GRAVITY  # noqa: E402
+from pumpjack_cli.core.well import buoyant_weight, fluid_load, rod_string_mass  # noqa: E402
 
-STEEL_DENSITY = 7850.0
 STEEL_MODULUS = 2.06e11
-G = 9.80665
 POINTS = 180
 
 #: unit name -> (strokes per minute, position unit and factor, load unit and factor)
@@ -60,18 +61,18 @@ def card(name: str, spm: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarr
     order = np.roll(np.arange(POINTS), -start)
     position, acceleration = run.rod.position[order], run.rod.acceleration[order]
     lengths = np.array([s.fraction for s in well.rod_string]) * well.pump_depth
-    areas = np.array([math.pi / 4 * s.diameter**2 for s in well.rod_string])
-    rod_mass = STEEL_DENSITY * float(np.sum(areas * lengths))
-    w_rf = rod_mass * G * (1.0 - well.fluid_density / STEEL_DENSITY)
-    plunger_area = math.pi / 4 * well.plunger_diameter**2
-    fluid_mass = well.fluid_density * well.pump_depth * plunger_area
-    w_f = fluid_mass * G
+    diameters = np.array([s.diameter for s in well.rod_string])
+    areas = np.pi / 4 * diameters**2
+    rod_mass = rod_string_mass(diameters, lengths, well.rod_density)
+    w_rf = buoyant_weight(rod_mass, well.rod_density, well.fluid_density)
+    w_f = fluid_load(well.plunger_diameter, well.pump_depth, well.fluid_density)
+    fluid_mass = w_f / STANDARD_GRAVITY
     stretch = w_f * float(np.sum(lengths / (STEEL_MODULUS * areas)))
     stroke = run.summary.stroke
     top = int(np.argmax(position))
     rising = np.arange(POINTS) <= top
     carried = np.where(rising, np.minimum(position / stretch, 1.0), np.clip(1.0 - (stroke - position) / stretch, 0.0, 1.0))
-    friction = 0.02 * rod_mass * G * np.where(rising, 1.0, -1.0)
+    friction = 0.02 * rod_mass * STANDARD_GRAVITY * np.where(rising, 1.0, -1.0)
     load = w_rf + carried * w_f + (rod_mass + carried * fluid_mass) * acceleration + friction
     time = np.arange(POINTS) * (2 * math.pi / omega) / POINTS
     about = (f"{unit.name} at {60 * omega / (2 * math.pi):.3f} strokes/min; W_rf = {w_rf / 1e3:.2f} kN, "

@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import sys
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
+from ..cards import read_card
+from ..core.card import Card
+from ..core.linkage import Linkage
 from ..render import Report, emit
 
 
@@ -39,6 +43,17 @@ UnitsOption = Annotated[
     typer.Option("--units", help="si (m, m/s, N, N·m) or field (in, ft/s, lbf, lbf·in)"),
 ]
 UnitArgument = Annotated[str, typer.Argument(help="bundled unit name (see `pumpjack units`) or path to a unit file")]
+CardUnitsOption = Annotated[
+    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
+]
+
+
+def load_card(card: Path, linkage: Linkage, card_units: UnitSystem) -> Card:
+    """A dynamometer card on the unit's crank-angle axis; the reader's warnings go to stderr."""
+    reading = read_card(card, linkage, card_units.value)
+    for warning in reading.warnings:
+        sys.stderr.write(f"pumpjack: warning: {warning}\n")
+    return reading.card
 
 
 def output(report: Report, fmt: Format | None, units: UnitSystem, out: Path | None, plot: Path | None) -> None:

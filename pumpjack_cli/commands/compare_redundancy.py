@@ -7,6 +7,7 @@ from typing import Annotated
 
 import numpy as np
 import typer
+from pydantic import ValidationError
 
 from ..config import Deviations, UnitConfig, load_unit
 from ..core.kinetostatics import Reactions, rational_mechanism
@@ -15,12 +16,20 @@ from ..core.redundancy import JointMoments, real_mechanism
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity
-from .common import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from .common import (
+    CardUnitsOption,
+    FormatOption,
+    OutputOption,
+    PlotOption,
+    UnitArgument,
+    UnitsOption,
+    UnitSystem,
+    output,
+)
 from .reactions import (
     REACTIONS,
     CardOption,
     CardRun,
-    CardUnitsOption,
     Rotation,
     RotationOption,
     SpmOption,
@@ -55,7 +64,7 @@ def deviations_with_options(config: UnitConfig, given: dict[str, str | None]) ->
     merged = config.deviations.model_dump() | update
     try:
         return Deviations.model_validate(merged)
-    except ValueError as exc:
+    except ValidationError as exc:
         first = exc.errors()[0]
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
 

@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
 import numpy as np
 import typer
 
-from ..cards import read_card
 from ..config import UnitConfig, load_unit
 from ..core.card import Card
 from ..core.dynamics import (
@@ -26,15 +24,22 @@ from ..core.kinematics import crank_grid
 from ..core.well import WellLoad, well_load
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
-from .common import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from .common import (
+    CardUnitsOption,
+    FormatOption,
+    OutputOption,
+    PlotOption,
+    UnitArgument,
+    UnitsOption,
+    UnitSystem,
+    load_card,
+    output,
+)
 
 CardOption = Annotated[
     Path | None,
     typer.Option("--card", help="drive the unit with a dynamometer card CSV instead of the well model (docs/cards.md)",
                  dir_okay=False),
-]
-CardUnitsOption = Annotated[
-    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
 ]
 
 
@@ -187,12 +192,8 @@ def dynamics(
     The periodic motion under the motor's characteristic, the well (or a dynamometer
     card) and the weights."""
     config = load_unit(unit)
-    reading = None
-    if card is not None:
-        reading = read_card(card, config.geometry.linkage(), card_units.value)
-        for warning in reading.warnings:
-            sys.stderr.write(f"pumpjack: warning: {warning}\n")
-    machine = build_machine(config, None if reading is None else reading.card)
+    measured = None if card is None else load_card(card, config.geometry.linkage(), card_units)
+    machine = build_machine(config, measured)
     result = steady_state(machine, crank_grid(steps), rtol=rtol)
     source = "well model" if card is None else f"card {card.name}"
     output(dynamics_report(f"{config.name}: dynamics, {source}", machine, result), fmt, units, out, plot)

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 from enum import Enum
 from pathlib import Path
@@ -11,7 +10,6 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from ..cards import read_card
 from ..config import UnitConfig, load_unit
 from ..core.card import card_load
 from ..core.kinematics import crank_grid
@@ -19,7 +17,17 @@ from ..core.kinetostatics import Reactions, rational_mechanism
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity
-from .common import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from .common import (
+    CardUnitsOption,
+    FormatOption,
+    OutputOption,
+    PlotOption,
+    UnitArgument,
+    UnitsOption,
+    UnitSystem,
+    load_card,
+    output,
+)
 from .kinematics import crank_speed
 
 #: Reaction vectors of the output: field name, description.
@@ -35,9 +43,6 @@ REACTIONS = {
 MOMENTS = {"m05": "bearing moment of the frame on the beam at C", "m01": "bearing moment of the frame on the crank"}
 
 CardOption = Annotated[Path, typer.Option("--card", help="dynamometer card CSV (see docs/cards.md)", dir_okay=False)]
-CardUnitsOption = Annotated[
-    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
-]
 
 
 def reactions_report(run: CardRun, r: Reactions, title: str) -> Report:
@@ -116,11 +121,9 @@ class CardRun:
 def card_run(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, spm: float | None, steps: int,
              rotation: Rotation) -> CardRun:
     """The card on a crank-angle grid with uniform or dynamic rotation; card warnings go to stderr."""
-    reading = read_card(card, linkage, card_units.value)
-    for warning in reading.warnings:
-        sys.stderr.write(f"pumpjack: warning: {warning}\n")
+    measured = load_card(card, linkage, card_units)
     theta = crank_grid(steps)
-    load = card_load(reading.card, theta)
+    load = card_load(measured, theta)
     if rotation is Rotation.uniform:
         omega = crank_speed(config, spm)
         return CardRun(theta, theta / omega, np.full(steps, omega), np.zeros(steps), load, 2 * np.pi / omega)
@@ -129,7 +132,7 @@ def card_run(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, sp
     from ..core.dynamics import steady_state
     from .dynamics import build_machine
 
-    state = steady_state(build_machine(config, reading.card), theta)
+    state = steady_state(build_machine(config, measured), theta)
     return CardRun(theta, state.time, state.omega, state.epsilon, load, state.summary.period)
 
 

@@ -239,7 +239,8 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     d = sm.pin_d
     arm2, arm3 = sm.pin_b - d, sm.pin_b1 - d
     q_equalizer = -(_moment_about(loads.equalizer, d) + cross(arm2, r24_perp) + cross(arm3, r34_perp))
-    q_beam = -(loads.beam.moment_about_origin()[:, 2] + cross(d, r24_perp + r34_perp + f4)[:, 2])
+    beam_moment = loads.beam.moment_about_origin()
+    q_beam = -(beam_moment[:, 2] + cross(d, r24_perp + r34_perp + f4)[:, 2])
     g = np.stack([
         np.concatenate([cross(arm2, n2), cross(d, n2)[:, 2:]], axis=-1),
         np.concatenate([cross(arm3, n3), cross(d, n3)[:, 2:]], axis=-1),
@@ -255,7 +256,7 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     r45 = r24 + r34 + f4
     r05 = -r45 - loads.beam.resultant()
     n = d.shape[0]
-    across = cross(d, r45) + loads.beam.moment_about_origin()
+    across = cross(d, r45) + beam_moment
     m05 = -np.stack([across[:, 0], across[:, 1], np.zeros(n)], axis=-1)
     r12 = r24 - loads.pitman2.resultant()
     r13 = r34 - loads.pitman3.resultant()

@@ -60,7 +60,7 @@ from .kinetostatics import (
     applied_loads,
     crank_reactions,
 )
-from .spatial import Z, SpatialLinkage, SpatialMotion, _skew, cross, spatial_motion
+from .spatial import Z, SpatialLinkage, SpatialMotion, skew, cross, spatial_motion
 
 
 @dataclass(frozen=True)
@@ -189,7 +189,7 @@ def _equilibrium(sm: SpatialMotion, bases: dict[str, np.ndarray]) -> np.ndarray:
     def force(link: int, name: str, sign: float, point: np.ndarray) -> None:
         c = _column(name)
         e[:, 6 * link:6 * link + 3, c:c + 3] += sign * np.eye(3)
-        e[:, 6 * link + 3:6 * link + 6, c:c + 3] += sign * _skew(point)
+        e[:, 6 * link + 3:6 * link + 6, c:c + 3] += sign * skew(point)
 
     def couple(link: int, name: str, sign: float) -> None:
         c = _column(name)
@@ -240,7 +240,7 @@ def _pitman_energy(
             g_force[:, :, fc:fc + 3] = -np.eye(3)
             g_moment = np.zeros((n_pts, 3, _N_UNKNOWNS))
             g_moment[:, :, mc:mc + 2] = -bases[moment_name]
-            g_moment[:, :, fc:fc + 3] = -_skew(a - p)
+            g_moment[:, :, fc:fc + 3] = -skew(a - p)
             h_force = -loaded * load_force
             h_moment = -loaded * (load_moment + cross(load_point - p, load_force))
             g = np.concatenate([np.einsum("nk,nkj->nj", directions[:, 0], g_force)[:, None],

@@ -117,7 +117,7 @@ def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
-def _skew(v: np.ndarray) -> np.ndarray:
+def skew(v: np.ndarray) -> np.ndarray:
     """Cross-product matrices [v]x, shape (..., 3, 3), so that [v]x @ u = v x u."""
     out = np.zeros(v.shape[:-1] + (3, 3))
     out[..., 0, 1], out[..., 0, 2] = -v[..., 2], v[..., 1]
@@ -135,10 +135,10 @@ def _loop_matrix(l2: np.ndarray, l3: np.ndarray, l4: np.ndarray, l41: np.ndarray
     """
     n = l2.shape[0]
     k = np.zeros((n, 8, 8))
-    k[:, 0:3, 0:3] = -_skew(l2)
+    k[:, 0:3, 0:3] = -skew(l2)
     k[:, 0:3, 6] = cross(line, l4)
     k[:, 0:3, 7] = cross(Z, l4 + l5)
-    k[:, 3:6, 3:6] = -_skew(l3)
+    k[:, 3:6, 3:6] = -skew(l3)
     k[:, 3:6, 6] = cross(line, l41)
     k[:, 3:6, 7] = cross(Z, l41 + l5)
     k[:, 6, 0:3] = l2
