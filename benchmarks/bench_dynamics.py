@@ -18,7 +18,7 @@ import numpy as np
 from pumpjack_cli.cards import read_card
 from pumpjack_cli.commands.dynamics import build_machine
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.dynamics import DEFAULT_RTOL, steady_state
+from pumpjack_cli.core.dynamics.periodic import DEFAULT_RTOL, steady_state
 from timing import best_of
 
 ROOT = Path(__file__).resolve().parent.parent

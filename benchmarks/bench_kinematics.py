@@ -20,8 +20,9 @@ import time
 import numpy as np
 
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.kinematics import crank_grid, uniform_kinematics
-from pumpjack_cli.core.linkage import motion
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.linkage import motion
 from timing import best_of
 
 

@@ -16,9 +16,9 @@ import numpy as np
 
 from pumpjack_cli.cards import read_card
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.card import card_load
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.kinetostatics import rational_mechanism
+from pumpjack_cli.core.beam.card import card_load
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
 from timing import best_of
 
 ROOT = Path(__file__).resolve().parent.parent

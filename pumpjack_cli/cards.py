@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .core.card import Card, card_from_angles, crank_angle_from_position, upstroke_points
-from .core.linkage import Linkage, dead_positions
+from .core.beam.card import Card, card_from_angles, crank_angle_from_position, upstroke_points
+from .core.beam.geometry import Linkage, dead_positions
 from .errors import PumpjackError
 from .units import INPUT_UNITS
 

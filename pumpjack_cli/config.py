@@ -32,12 +32,12 @@ from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, Strict, ValidationError, model_validator
 
-from .core.kinetostatics import MassModel
-from .core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
-from .core.redundancy import PinTilts, PitmanSection
-from .core.spatial import SpatialLinkage
-from .core.slider_crank import SliderCrank, check_slider_crank
-from .core.slider_crank import stroke as slider_stroke
+from .core.beam.masses import MassModel
+from .core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
+from .core.beam.redundancy import PinTilts, PitmanSection
+from .core.beam.spatial import SpatialLinkage
+from .core.slider_crank.geometry import SliderCrank, check_slider_crank
+from .core.slider_crank.geometry import stroke as slider_stroke
 from .errors import ConfigError, GeometryError
 from .units import parse_quantity
 

@@ -36,8 +36,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from pumpjack_cli.config import load_unit  # noqa: E402
-from pumpjack_cli.core.kinematics import uniform_kinematics  # noqa: E402
-from pumpjack_cli.core.kinetostatics import STANDARD_GRAVITY  # noqa: E402
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics  # noqa: E402
+from pumpjack_cli.core.constants import STANDARD_GRAVITY  # noqa: E402
 from pumpjack_cli.core.well import buoyant_weight, fluid_load, rod_string_mass  # noqa: E402
 
 STEEL_MODULUS = 2.06e11

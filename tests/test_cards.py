@@ -11,8 +11,9 @@ import pytest
 
 from pumpjack_cli.cards import CardError, read_card
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.card import card_load, crank_angle_from_position
-from pumpjack_cli.core.kinematics import crank_grid, uniform_kinematics
+from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics
+from pumpjack_cli.core.sampling import crank_grid
 
 ROOT = Path(__file__).resolve().parent.parent
 SK8 = load_unit("sk8-3.5-4000").geometry.linkage()

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from pumpjack_cli.config import load_unit, read_unit_file
-from pumpjack_cli.core.kinematics import uniform_kinematics
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.errors import PumpjackError
 
 ROOT = Path(__file__).resolve().parents[1]

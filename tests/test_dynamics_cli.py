@@ -12,8 +12,8 @@ import pytest
 from pumpjack_cli.cards import read_card
 from pumpjack_cli.commands.dynamics import build_machine
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.dynamics import steady_state
-from pumpjack_cli.core.kinematics import crank_grid
+from pumpjack_cli.core.dynamics.periodic import steady_state
+from pumpjack_cli.core.sampling import crank_grid
 
 SK8 = "sk8-3.5-4000"
 

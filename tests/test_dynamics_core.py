@@ -22,17 +22,14 @@ import pytest
 
 from pumpjack_cli.commands.dynamics import build_machine
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.card import Card
-from pumpjack_cli.core.dynamics import (
-    CardLoad,
-    coefficients,
-    drive_inertia,
-    motor_characteristic,
-    steady_state,
-)
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.kinetostatics import rational_mechanism
-from pumpjack_cli.core.linkage import crank_pin, dead_positions, motion
+from pumpjack_cli.core.beam.card import Card
+from pumpjack_cli.core.dynamics.coefficients import CardLoad, coefficients
+from pumpjack_cli.core.dynamics.drive import drive_inertia, motor_characteristic
+from pumpjack_cli.core.dynamics.periodic import steady_state
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
+from pumpjack_cli.core.beam.geometry import dead_positions
+from pumpjack_cli.core.beam.linkage import crank_pin, motion
 from pumpjack_cli.errors import DynamicsError
 
 RPM = math.pi / 30

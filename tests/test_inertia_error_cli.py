@@ -18,10 +18,11 @@ import numpy as np
 import pytest
 
 from pumpjack_cli.config import load_any_unit
-from pumpjack_cli.core.beam_inertia import beam_inertia_laws
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.slider_crank import SliderCrank, slider_inertia_laws
-from pumpjack_cli.core.support_friction import redundant_support_friction
+from pumpjack_cli.core.beam.inertia_laws import beam_inertia_laws
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.slider_crank.geometry import SliderCrank
+from pumpjack_cli.core.slider_crank.mechanism import slider_inertia_laws
+from pumpjack_cli.core.slider_crank.support_friction import redundant_support_friction
 from pumpjack_cli.units import parse_quantity
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -13,14 +13,11 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from pumpjack_cli.core.kinematics import (
-    crank_grid,
-    harmonic_motion,
-    rod_motion,
-    two_term_motion,
-    uniform_kinematics,
-)
-from pumpjack_cli.core.linkage import COUNTERCLOCKWISE, Linkage, dead_positions, motion
+from pumpjack_cli.core.beam.kinematics import harmonic_motion, rod_motion, two_term_motion, uniform_kinematics
+
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.geometry import COUNTERCLOCKWISE, Linkage, dead_positions
+from pumpjack_cli.core.beam.linkage import motion
 
 INCH = 0.0254  # m, exact (1959 international yard and pound agreement)
 

@@ -16,15 +16,11 @@ import numpy as np
 import pytest
 
 from pumpjack_cli.config import load_unit, parse_unit
-from pumpjack_cli.core.kinetostatics import (
-    STANDARD_GRAVITY,
-    MassModel,
-    applied_loads,
-    rational_mechanism,
-    rational_reactions,
-)
-from pumpjack_cli.core.linkage import motion
-from pumpjack_cli.core.spatial import SpatialLinkage, spatial_motion
+from pumpjack_cli.core.beam.kinetostatics import applied_loads, rational_mechanism, rational_reactions
+from pumpjack_cli.core.beam.masses import MassModel
+from pumpjack_cli.core.constants import STANDARD_GRAVITY
+from pumpjack_cli.core.beam.linkage import motion
+from pumpjack_cli.core.beam.spatial import SpatialLinkage, spatial_motion
 from pumpjack_cli.errors import ConfigError
 
 BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")

@@ -24,16 +24,9 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from pumpjack_cli.core.kinematics import uniform_kinematics
-from pumpjack_cli.core.linkage import (
-    CLOCKWISE,
-    COUNTERCLOCKWISE,
-    Linkage,
-    check_assembly,
-    crank_pin,
-    dead_positions,
-    motion,
-)
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics
+from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
+from pumpjack_cli.core.beam.linkage import crank_pin, motion
 from pumpjack_cli.errors import GeometryError
 
 INCH = 0.0254  # m, exact by definition (international yard and pound agreement, 1959)

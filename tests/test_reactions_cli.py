@@ -11,9 +11,10 @@ import pytest
 
 from pumpjack_cli.cards import read_card
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.card import card_load
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.kinetostatics import STANDARD_GRAVITY, rational_mechanism
+from pumpjack_cli.core.beam.card import card_load
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
+from pumpjack_cli.core.constants import STANDARD_GRAVITY
 
 SK8 = "sk8-3.5-4000"
 
@@ -82,7 +83,7 @@ def test_no_weights_no_inertia_is_the_torque_factor_method(run_cli, sk8_card):
     assert code == 0
     data = json.loads(out)["series"]
     config = load_unit(SK8)
-    from pumpjack_cli.core.linkage import motion
+    from pumpjack_cli.core.beam.linkage import motion
 
     theta = crank_grid(36)
     tf = config.geometry.linkage().front_arm * motion(config.geometry.linkage(), theta).beam_rate
@@ -133,7 +134,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_card):
     M_z = u M_motor - I_drive eps1: two independent models (spatial kinetostatics,
     reduced-inertia equation of motion) must agree through the power balance."""
     from pumpjack_cli.commands.dynamics import build_machine
-    from pumpjack_cli.core.dynamics import steady_state
+    from pumpjack_cli.core.dynamics.periodic import steady_state
 
     code, out, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--steps", "90", "-f", "json")
     assert (code, err) == (0, "")

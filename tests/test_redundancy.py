@@ -17,12 +17,12 @@ import scipy.linalg
 
 from pumpjack_cli.cards import read_card
 from pumpjack_cli.config import Deviations, load_unit
-from pumpjack_cli.core import redundancy
-from pumpjack_cli.core.card import card_load
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.kinetostatics import applied_loads, rational_mechanism
-from pumpjack_cli.core.redundancy import PinTilts, real_mechanism
-from pumpjack_cli.core.spatial import spatial_motion
+from pumpjack_cli.core.beam import redundancy
+from pumpjack_cli.core.beam.card import card_load
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.beam.kinetostatics import applied_loads, rational_mechanism
+from pumpjack_cli.core.beam.redundancy import PinTilts, real_mechanism
+from pumpjack_cli.core.beam.spatial import spatial_motion
 
 ROOT = Path(__file__).resolve().parent.parent
 UNIT = "7sk12-2.5-5600"

@@ -21,19 +21,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from pumpjack_cli.core.kinematics import crank_grid
-from pumpjack_cli.core.slider_crank import (
-    SliderCrank,
-    approximate_acceleration,
-    check_slider_crank,
-    dead_centres,
-    exact_motion,
-    law_errors,
-    law_methods,
-    series_coefficients,
-    slider_inertia_laws,
-    stroke,
-)
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.core.slider_crank.geometry import SliderCrank, check_slider_crank, dead_centres, stroke
+from pumpjack_cli.core.slider_crank.mechanism import approximate_acceleration, exact_motion, law_errors, law_methods, series_coefficients, slider_inertia_laws
 from pumpjack_cli.errors import GeometryError
 
 # Seed 001's UNB-600A drill pump.

@@ -31,12 +31,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pumpjack_cli.core.support_friction import (
-    flexibility_matrix,
-    guide_edge_reactions,
-    reduction_coefficients,
-    redundant_support_friction,
-)
+from pumpjack_cli.core.slider_crank.support_friction import flexibility_matrix, guide_edge_reactions, reduction_coefficients, redundant_support_friction
 
 E = 2.06e11  # Pa, steel
 J = np.pi * 0.07**4 / 64  # m^4, 70 mm round rod

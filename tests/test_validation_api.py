@@ -18,8 +18,9 @@ import numpy as np
 import pytest
 
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.kinematics import uniform_kinematics
-from pumpjack_cli.core.linkage import CLOCKWISE, COUNTERCLOCKWISE, Linkage, dead_positions, motion
+from pumpjack_cli.core.beam.kinematics import uniform_kinematics
+from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage, dead_positions
+from pumpjack_cli.core.beam.linkage import motion
 
 INCH = 0.0254  # m, exact by definition (1959 international yard and pound agreement)
 

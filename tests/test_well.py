@@ -13,18 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli.core.well import (
-    annulus_drag_factor,
-    buoyant_weight,
-    darcy_friction_factor,
-    fluid_kinetic_mass,
-    fluid_load,
-    plunger_friction,
-    rod_friction,
-    rod_string_mass,
-    tubing_friction,
-    well_load,
-)
+from pumpjack_cli.core.well import annulus_drag_factor, buoyant_weight, darcy_friction_factor, fluid_kinetic_mass, fluid_load, plunger_friction, rod_friction, rod_string_mass, tubing_friction, well_load
 from pumpjack_cli.errors import DynamicsError, PumpjackError
 
 G = 9.80665

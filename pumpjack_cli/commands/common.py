@@ -10,8 +10,8 @@ from typing import Annotated
 import typer
 
 from ..cards import read_card
-from ..core.card import Card
-from ..core.linkage import Linkage
+from ..core.beam.card import Card
+from ..core.beam.geometry import Linkage
 from ..render import Report, emit
 
 

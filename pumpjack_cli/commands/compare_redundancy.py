@@ -10,9 +10,9 @@ import typer
 from pydantic import ValidationError
 
 from ..config import Deviations, UnitConfig, load_unit
-from ..core.kinetostatics import Reactions, rational_mechanism
-from ..core.linkage import dead_positions
-from ..core.redundancy import JointMoments, real_mechanism
+from ..core.beam.kinetostatics import Reactions, rational_mechanism
+from ..core.beam.geometry import dead_positions
+from ..core.beam.redundancy import JointMoments, real_mechanism
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity

@@ -9,18 +9,11 @@ import numpy as np
 import typer
 
 from ..config import UnitConfig, load_unit
-from ..core.card import Card
-from ..core.dynamics import (
-    DEFAULT_RTOL,
-    CardLoad,
-    Machine,
-    SteadyState,
-    drive_inertia,
-    mean_rod_speeds,
-    motor_characteristic,
-    steady_state,
-)
-from ..core.kinematics import crank_grid
+from ..core.beam.card import Card
+from ..core.dynamics.coefficients import CardLoad, Machine, mean_rod_speeds
+from ..core.dynamics.drive import drive_inertia, motor_characteristic
+from ..core.dynamics.periodic import DEFAULT_RTOL, SteadyState, steady_state
+from ..core.sampling import crank_grid
 from ..core.well import WellLoad, well_load
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar

@@ -16,10 +16,11 @@ import numpy as np
 import typer
 
 from ..config import SliderCrankConfig, UnitConfig, load_any_unit
-from ..core.beam_inertia import beam_inertia_laws
-from ..core.kinematics import crank_grid
-from ..core.slider_crank import InertiaComparison, dead_centres, exact_motion, slider_inertia_laws
-from ..core.support_friction import SupportReactions, reduction_coefficients, redundant_support_friction
+from ..core.beam.inertia_laws import beam_inertia_laws
+from ..core.sampling import crank_grid
+from ..core.slider_crank.geometry import dead_centres
+from ..core.slider_crank.mechanism import InertiaComparison, exact_motion, slider_inertia_laws
+from ..core.slider_crank.support_friction import SupportReactions, reduction_coefficients, redundant_support_friction
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity

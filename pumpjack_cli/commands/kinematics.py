@@ -7,7 +7,7 @@ from typing import Annotated
 import typer
 
 from ..config import UnitConfig, load_unit
-from ..core.kinematics import KinematicsResult, uniform_kinematics
+from ..core.beam.kinematics import KinematicsResult, uniform_kinematics
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity

@@ -11,9 +11,9 @@ import numpy as np
 import typer
 
 from ..config import UnitConfig, load_unit
-from ..core.card import card_load
-from ..core.kinematics import crank_grid
-from ..core.kinetostatics import Reactions, rational_mechanism
+from ..core.beam.card import card_load
+from ..core.sampling import crank_grid
+from ..core.beam.kinetostatics import Reactions, rational_mechanism
 from ..errors import PumpjackError
 from ..render import Column, Panel, Report, Scalar
 from ..units import parse_quantity
@@ -129,7 +129,7 @@ def card_run(config: UnitConfig, linkage, card: Path, card_units: UnitSystem, sp
         return CardRun(theta, theta / omega, np.full(steps, omega), np.zeros(steps), load, 2 * np.pi / omega)
     if spm is not None:
         raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
-    from ..core.dynamics import steady_state
+    from ..core.dynamics.periodic import steady_state
     from .dynamics import build_machine
 
     state = steady_state(build_machine(config, measured), theta)

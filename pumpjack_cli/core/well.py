@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import DynamicsError
-from .kinetostatics import STANDARD_GRAVITY
+from .constants import STANDARD_GRAVITY
 
 #: Critical Reynolds number of pipe flow: laminar below, turbulent (Blasius) above.
 LAMINAR_LIMIT = 2300.0

@@ -21,9 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .kinematics import APPROXIMATIONS, RodMotion, approximate_motion, crank_grid, rod_motion
-from .linkage import Linkage, dead_positions, motion
-from .slider_crank import DENSE_STEPS, InertiaComparison, SliderCrank, exact_motion, law_errors, peak
+from ..sampling import crank_grid, largest_magnitude
+from ..slider_crank.mechanism import DENSE_STEPS, InertiaComparison, SliderCrank, exact_motion, law_errors
+from .kinematics import APPROXIMATIONS, RodMotion, approximate_motion, rod_motion
+from .linkage import Linkage
 
 
 def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
@@ -39,7 +40,7 @@ def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
     e = m (B_bottom - O) . n_perp. ``direction`` is +1 if n points from B_bottom to B_top
     (the polished rod rises as B moves along n), else -1.
     """
-    dead = dead_positions(linkage)
+    dead = linkage.dead_positions()
     o = linkage.crank_shaft
     b_bottom, b_top = (-linkage.rear_arm * np.array([np.cos(psi), np.sin(psi)])
                        for psi in (dead.beam_angle_bottom, dead.beam_angle_top))
@@ -66,7 +67,7 @@ def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> Rod
     mechanism, phase, direction = chord_slider_crank(linkage)
     theta = np.asarray(crank_angle, dtype=float)
     phi = phase + theta
-    bottom = phase + dead_positions(linkage).crank_angle_bottom
+    bottom = phase + linkage.dead_positions().crank_angle_bottom
     slider = exact_motion(mechanism, phi, omega)
     start = exact_motion(mechanism, np.array(bottom), omega).position
     scale = direction * linkage.front_arm / linkage.rear_arm
@@ -83,8 +84,8 @@ BEAM_LAWS = (*APPROXIMATIONS, "chord")
 
 def _rod_laws(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
     """Exact polished-rod motion and the acceleration of every law of :data:`BEAM_LAWS`."""
-    dead = dead_positions(linkage)
-    m = motion(linkage, crank_angle)
+    dead = linkage.dead_positions()
+    m = linkage.motion(crank_angle)
     exact = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
     from_bottom = crank_angle - dead.crank_angle_bottom
     laws = {name: approximate_motion(name, linkage, from_bottom, omega).acceleration for name in APPROXIMATIONS}
@@ -104,19 +105,19 @@ def beam_inertia_laws(linkage: Linkage, omega: float, crank_angle: np.ndarray) -
     if not omega > 0:
         raise ValueError(f"crank speed must be positive, got {omega} 1/s")
     theta = np.asarray(crank_angle, dtype=float)
-    dead = dead_positions(linkage)
+    dead = linkage.dead_positions()
     exact, laws = _rod_laws(linkage, theta, omega)
     dense = crank_grid(DENSE_STEPS)
     dense_exact, dense_laws = _rod_laws(linkage, dense, omega)
-    exact_peak, exact_angle = peak(dense, dense_exact.acceleration)
+    exact_peak = largest_magnitude(dense, dense_exact.acceleration)
     return InertiaComparison(
         crank_angle=theta,
         position=exact.position,
         velocity=exact.velocity,
         acceleration=exact.acceleration,
         laws=laws,
-        stroke=linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom),
-        peak=exact_peak,
-        peak_crank_angle=exact_angle,
+        stroke=dead.stroke,
+        peak=exact_peak.value,
+        peak_crank_angle=exact_peak.crank_angle,
         errors=law_errors(dense, dense_exact.acceleration, dense_laws),
     )

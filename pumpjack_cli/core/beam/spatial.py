@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import GeometryError
+from ...errors import GeometryError
 from .linkage import Linkage, check_assembly, motion
 
 Z = np.array([0.0, 0.0, 1.0])

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .linkage import Linkage, dead_positions, motion
+from .linkage import Linkage
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
 _BRANCH_STEPS = 8192
@@ -50,15 +50,14 @@ def crank_angle_from_position(linkage: Linkage, position: np.ndarray, upstroke: 
     Positions must lie within [0, stroke]; the exact position is monotonic between the
     dead positions, so each branch is inverted by interpolation on a fine grid.
     """
-    dead = dead_positions(linkage)
-    up_travel = (dead.crank_angle_top - dead.crank_angle_bottom) % (2.0 * np.pi)
+    dead = linkage.dead_positions()
     theta = np.empty_like(np.asarray(position, dtype=float))
     for start, travel, mask, rising in (
-        (dead.crank_angle_bottom, up_travel, upstroke, True),
-        (dead.crank_angle_top, 2.0 * np.pi - up_travel, ~upstroke, False),
+        (dead.crank_angle_bottom, dead.upstroke_crank_travel, upstroke, True),
+        (dead.crank_angle_top, dead.downstroke_crank_travel, ~upstroke, False),
     ):
         branch = start + np.linspace(0.0, travel, _BRANCH_STEPS)
-        s = linkage.front_arm * (motion(linkage, branch).beam_angle - dead.beam_angle_bottom)
+        s = linkage.front_arm * (linkage.motion(branch).beam_angle - dead.beam_angle_bottom)
         if not rising:
             branch, s = branch[::-1], s[::-1]
         theta[mask] = np.interp(position[mask], s, branch)

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..sampling import Extreme, crank_grid, extremes
 from .linkage import DeadPositions, Linkage, dead_positions, motion
 
 #: Crank positions used to locate extremes, independent of the output resolution.
@@ -110,14 +111,6 @@ APPROXIMATIONS = ("harmonic", "two_term")
 
 
 @dataclass(frozen=True)
-class Extreme:
-    """An extreme value and the crank angle [rad] where it occurs."""
-
-    value: float
-    crank_angle: float
-
-
-@dataclass(frozen=True)
 class ApproximationError:
     """Error of an approximate law against the exact motion, as fractions.
 
@@ -170,25 +163,6 @@ class KinematicsResult:
     summary: KinematicsSummary
 
 
-def crank_grid(steps: int) -> np.ndarray:
-    """``steps`` equally spaced crank angles over one revolution, from 0, endpoint excluded [rad]."""
-    return np.linspace(0.0, 2.0 * np.pi, steps, endpoint=False)
-
-
-def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
-    """Maximum and minimum of a periodic sampled curve, refined by a parabola through
-    the extreme sample and its two neighbours (error O(h^3) in the angle)."""
-    found = []
-    for sign in (1.0, -1.0):
-        i = int(np.argmax(sign * values))
-        y0, y1, y2 = (values[(i + k) % len(values)] for k in (-1, 0, 1))
-        curvature = y0 - 2.0 * y1 + y2
-        shift = 0.5 * (y0 - y2) / curvature if curvature != 0.0 else 0.0
-        h = theta[1] - theta[0]
-        found.append(Extreme(float(y1 - 0.25 * (y0 - y2) * shift), float((theta[i] + shift * h) % (2.0 * np.pi))))
-    return found[0], found[1]
-
-
 def _approximation_error(exact: RodMotion, approx: RodMotion, stroke: float) -> ApproximationError:
     peak_a = np.max(np.abs(exact.acceleration))
     return ApproximationError(
@@ -201,11 +175,10 @@ def _approximation_error(exact: RodMotion, approx: RodMotion, stroke: float) -> 
 
 def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsSummary:
     theta = crank_grid(_DENSE_STEPS)
-    m = motion(linkage, theta)
+    m = linkage.motion(theta)
     exact = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
-    stroke = linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
+    stroke = dead.stroke
     from_bottom = theta - dead.crank_angle_bottom
-    upstroke = (dead.crank_angle_top - dead.crank_angle_bottom) % (2.0 * np.pi)
     v_max, v_min = extremes(theta, exact.velocity)
     a_max, a_min = extremes(theta, exact.acceleration)
     tf_max, tf_min = extremes(theta, linkage.front_arm * m.beam_rate)
@@ -215,8 +188,8 @@ def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsS
         stroke=stroke,
         crank_angle_bottom=dead.crank_angle_bottom,
         crank_angle_top=dead.crank_angle_top,
-        upstroke_crank_travel=upstroke,
-        downstroke_crank_travel=2.0 * np.pi - upstroke,
+        upstroke_crank_travel=dead.upstroke_crank_travel,
+        downstroke_crank_travel=dead.downstroke_crank_travel,
         max_velocity=v_max,
         min_velocity=v_min,
         max_acceleration=a_max,
@@ -243,9 +216,9 @@ def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> Kine
     """
     if not omega > 0:
         raise ValueError(f"crank speed must be positive, got {omega} 1/s")
-    dead = dead_positions(linkage)
+    dead = linkage.dead_positions()
     theta = crank_grid(steps)
-    m = motion(linkage, theta)
+    m = linkage.motion(theta)
     rod = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
     from_bottom = theta - dead.crank_angle_bottom
     return KinematicsResult(

@@ -40,30 +40,8 @@ from math import comb
 
 import numpy as np
 
-from ..errors import GeometryError
-from .kinematics import crank_grid
-
-
-@dataclass(frozen=True)
-class SliderCrank:
-    """Geometry of a slider-crank, SI.
-
-    Parameters
-    ----------
-    crank_radius : r [m], crank shaft O to crank pin A.
-    rod_length : l (seed 001: l2) [m], crank pin A to slider pin B.
-    offset : e [m], distance of the line of stroke from O, on the side the crank pin
-        swings into first (see the module docstring); 0 for a centric mechanism.
-    """
-
-    crank_radius: float
-    rod_length: float
-    offset: float = 0.0
-
-    @property
-    def crank_ratio(self) -> float:
-        """lambda = r / l (seed 001: lambda_1 = r / l2)."""
-        return self.crank_radius / self.rod_length
+from ..sampling import crank_grid, largest_magnitude
+from .geometry import DeadCentres, SliderCrank, check_slider_crank, dead_centres, stroke
 
 
 @dataclass(frozen=True)
@@ -74,32 +52,6 @@ class SliderMotion:
     position: np.ndarray
     velocity: np.ndarray
     acceleration: np.ndarray
-
-
-@dataclass(frozen=True)
-class DeadCentres:
-    """Crank angles [rad] and slider positions [m] of the outer and inner dead centres."""
-
-    crank_angle_outer: float
-    crank_angle_inner: float
-    position_outer: float
-    position_inner: float
-
-
-def check_slider_crank(mechanism: SliderCrank) -> None:
-    """Raise :class:`GeometryError` unless the crank turns through a full revolution.
-
-    The rod reaches the line of stroke at every crank angle only if |r sin phi - e| < l
-    for all phi, i.e. l > r + |e| (strict, so that the rod never lies across the line).
-    """
-    r, l, e = mechanism.crank_radius, mechanism.rod_length, mechanism.offset
-    if not r > 0:
-        raise GeometryError(f"crank_radius must be positive, got {r} m")
-    if not l > r + abs(e):
-        raise GeometryError(
-            f"the crank cannot turn: rod_length l = {l:.4g} m must exceed crank_radius + |offset| "
-            f"= {r:.4g} + {abs(e):.4g} = {r + abs(e):.4g} m"
-        )
 
 
 def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> SliderMotion:
@@ -129,33 +81,6 @@ def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) 
         velocity=omega * (-r * sin - u * du / q),
         acceleration=omega**2 * (-r * cos - (du * du - u * r * sin) / q - (u * du) ** 2 / q**3),
     )
-
-
-def dead_centres(mechanism: SliderCrank) -> DeadCentres:
-    """Exact dead centres: crank and rod in one line through O.
-
-    Outer: B = (l + r) n, A = r n, n the unit vector O->B with n_y = e/(l + r), so
-    phi = arcsin(e/(l + r)) and x = sqrt((l + r)^2 - e^2). Inner: B = (l - r) n,
-    A = -r n, phi = pi + arcsin(e/(l - r)), x = sqrt((l - r)^2 - e^2).
-    """
-    check_slider_crank(mechanism)
-    r, l, e = mechanism.crank_radius, mechanism.rod_length, mechanism.offset
-    return DeadCentres(
-        crank_angle_outer=float(np.arcsin(e / (l + r)) % (2.0 * np.pi)),
-        crank_angle_inner=float(np.pi + np.arcsin(e / (l - r))),
-        position_outer=float(np.sqrt((l + r) ** 2 - e * e)),
-        position_inner=float(np.sqrt((l - r) ** 2 - e * e)),
-    )
-
-
-def stroke(mechanism: SliderCrank) -> float:
-    """Exact stroke [m]: sqrt((l + r)^2 - e^2) - sqrt((l - r)^2 - e^2); 2r for e = 0.
-
-    >>> round(stroke(SliderCrank(0.2, 1.19)), 12)
-    0.4
-    """
-    dead = dead_centres(mechanism)
-    return dead.position_outer - dead.position_inner
 
 
 def series_coefficients(crank_ratio: float, terms: int) -> np.ndarray:
@@ -238,28 +163,22 @@ class LawError:
     rms_deviation: float
 
 
-def peak(crank_angle: np.ndarray, values: np.ndarray) -> tuple[float, float]:
-    """max |values| and the crank angle [rad] where it is reached (on the given grid)."""
-    i = int(np.argmax(np.abs(values)))
-    return float(np.abs(values[i])), float(crank_angle[i])
-
-
 def law_errors(crank_angle: np.ndarray, exact: np.ndarray, laws: Mapping[str, np.ndarray]) -> dict[str, LawError]:
     """:class:`LawError` of each law, from samples over one uniform revolution.
 
     Inertia forces are -m times the accelerations, so the errors are the same for both.
     """
-    exact_peak, _ = peak(crank_angle, exact)
+    exact_peak = largest_magnitude(crank_angle, exact).value
     exact_rms = np.sqrt(np.mean(exact**2))
     errors = {}
     for name, values in laws.items():
-        law_peak, law_angle = peak(crank_angle, values)
+        law_peak = largest_magnitude(crank_angle, values)
         deviation = values - exact
         errors[name] = LawError(
-            peak=law_peak,
-            peak_crank_angle=law_angle,
-            peak_error=abs(1.0 - law_peak / exact_peak),
-            peak_error_of_law=abs(1.0 - exact_peak / law_peak),
+            peak=law_peak.value,
+            peak_crank_angle=law_peak.crank_angle,
+            peak_error=abs(1.0 - law_peak.value / exact_peak),
+            peak_error_of_law=abs(1.0 - exact_peak / law_peak.value),
             max_deviation=float(np.max(np.abs(deviation)) / exact_peak),
             rms_deviation=float(np.sqrt(np.mean(deviation**2)) / exact_rms),
         )
@@ -312,16 +231,16 @@ def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.nd
     exact = exact_motion(mechanism, crank_angle, omega)
     dense = crank_grid(DENSE_STEPS)
     dense_exact = exact_motion(mechanism, dense, omega).acceleration
-    exact_peak, exact_angle = peak(dense, dense_exact)
+    exact_peak = largest_magnitude(dense, dense_exact)
     return InertiaComparison(
         crank_angle=np.asarray(crank_angle, dtype=float),
         position=exact.position - dead.position_inner,
         velocity=exact.velocity,
         acceleration=exact.acceleration,
         laws={name: approximate_acceleration(name, mechanism, crank_angle, omega) for name in LAW_TERMS},
-        stroke=dead.position_outer - dead.position_inner,
-        peak=exact_peak,
-        peak_crank_angle=exact_angle,
+        stroke=dead.stroke,
+        peak=exact_peak.value,
+        peak_crank_angle=exact_peak.crank_angle,
         errors=law_errors(
             dense, dense_exact, {name: approximate_acceleration(name, mechanism, dense, omega) for name in LAW_TERMS}
         ),

@@ -53,13 +53,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .kinetostatics import (
-    LinkLoads,
-    MassModel,
-    Reactions,
-    applied_loads,
-    crank_reactions,
-)
+from .kinetostatics import LinkLoads, Reactions, applied_loads, crank_reactions
+from .masses import MassModel
 from .spatial import Z, SpatialLinkage, SpatialMotion, skew, cross, spatial_motion
 
 
