@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pumpjack_cli.cards import read_card
+from pumpjack_cli.card_files import read_card
 from pumpjack_cli.commands.dynamics import build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.periodic import DEFAULT_RTOL, steady_state

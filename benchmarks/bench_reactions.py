@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pumpjack_cli.cards import read_card
+from pumpjack_cli.card_files import read_card
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load
 from pumpjack_cli.core.sampling import crank_grid

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pumpjack_cli.cards import CardError, read_card
+from pumpjack_cli.card_files import CardError, read_card
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics

@@ -9,7 +9,7 @@ import math
 
 import pytest
 
-from pumpjack_cli.cards import read_card
+from pumpjack_cli.card_files import read_card
 from pumpjack_cli.commands.dynamics import build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.periodic import steady_state

@@ -9,7 +9,7 @@ import json
 import numpy as np
 import pytest
 
-from pumpjack_cli.cards import read_card
+from pumpjack_cli.card_files import read_card
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load
 from pumpjack_cli.core.sampling import crank_grid

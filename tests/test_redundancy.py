@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 import scipy.linalg
 
-from pumpjack_cli.cards import read_card
+from pumpjack_cli.card_files import read_card
 from pumpjack_cli.config import Deviations, load_unit
 from pumpjack_cli.core.beam import redundancy
 from pumpjack_cli.core.beam.card import card_load

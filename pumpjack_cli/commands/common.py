@@ -9,7 +9,7 @@ from typing import Annotated
 
 import typer
 
-from ..cards import read_card
+from ..card_files import read_card
 from ..core.beam.card import Card
 from ..core.beam.geometry import Linkage
 from ..render import Report, emit

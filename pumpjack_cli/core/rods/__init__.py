@@ -1,0 +1,1 @@
+"""The sucker-rod string: its sections and the damped wave equation along it."""
