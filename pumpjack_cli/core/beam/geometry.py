@@ -10,9 +10,9 @@ Frame and conventions (used everywhere in the package):
 
 * origin at the centre bearing C, x horizontal towards the well, y vertically up;
   the well is to the right and the crank shaft O = (-I, -(H - G)) is behind and
-  below the centre bearing ([API11E]_, fig. 1, conventional unit);
+  below the centre bearing ([API11E], fig. 1, conventional unit);
 * crank angle theta is measured from the 12 o'clock position of the crank pin in the
-  direction of rotation, as [API11E]_ does; rotation is *clockwise* or
+  direction of rotation, as [API11E] does; rotation is *clockwise* or
   *counterclockwise* as seen with the well to the right;
 * beam angle psi is the angle of the front arm above the horizontal;
 * pitman angle chi is the direction of the vector A->B above the horizontal.
@@ -43,7 +43,7 @@ class DeadPositions:
 
     The beam stops when crank and pitman are in one line: stretched out (|OB| = P + R)
     or folded (|OB| = P - R). For a conventional unit the stretched position is the
-    bottom of the stroke ([Kharun2013]_: "crank and pitman stretched in one line").
+    bottom of the stroke ([SK8Rotation2013]: "crank and pitman stretched in one line").
     ``front_arm`` [m] turns beam rotation into polished-rod travel.
     """
 
@@ -149,7 +149,7 @@ def check_assembly(linkage: Linkage) -> None:
     The crank pin's distance from the centre bearing runs over [K - R, K + R]; the
     pitman and rear arm reach it at every crank angle only if (Grashof crank-rocker
     condition, strict so that the unit never locks in a toggle)
-    K + R < P + C and K - R > |P - C| ([Artobolevsky1951]_).
+    K + R < P + C and K - R > |P - C| ([Artobolevsky1951]).
     """
     lengths = {
         "front_arm": linkage.front_arm,

@@ -2,9 +2,9 @@
 
 Geometry, conventions and dead positions are in :mod:`.geometry`. The closed form is
 the cosine rule on the triangle C-A-B (the closed-vector-loop solution of
-[Kharun2013]_, eqs. 2-6, written for the beam angle directly); its first and second
+[SK8Rotation2013], eqs. 2-6, written for the beam angle directly); its first and second
 derivatives with respect to the crank angle come from differentiating the loop
-constraint |B - A| = P twice ([Popovych2015]_ eqs. 7-12 in planar form).
+constraint |B - A| = P twice ([Spatial7SK12] eqs. 7-12 in planar form).
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ class Motion:
     """Angles of the beam and pitman and their derivatives with respect to crank angle.
 
     All arrays share the shape of the crank angles they were computed for.
-    ``beam_rate`` is dpsi/dtheta (the first transfer function of [Kharun2013]_ eq. 6),
+    ``beam_rate`` is dpsi/dtheta (the first transfer function of [SK8Rotation2013] eq. 6),
     ``beam_rate2`` is d2psi/dtheta2; likewise for the pitman angle chi. Angles in rad.
     """
 
@@ -60,7 +60,7 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
 
     References
     ----------
-    Planar form of [Popovych2015]_ eqs. 7-12 (Bour's formula) and [Kharun2013]_ eq. 6.
+    Planar form of [Spatial7SK12] eqs. 7-12 (Bour's formula) and [SK8Rotation2013] eq. 6.
 
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
     >>> m = motion(sk8, np.radians([0.0, 90.0]))

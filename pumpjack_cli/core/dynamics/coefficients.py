@@ -1,20 +1,20 @@
 """Coefficients of the equation of motion of a beam pumping unit reduced to the crank shaft.
 
-[Kharun2013]_ eq. 1 (Lagrange's equation of a one-degree-of-freedom machine, with the
-crank angle theta as generalised coordinate; [Artobolevsky1951]_):
+[SK8Rotation2013] eq. 1 (Lagrange's equation of a one-degree-of-freedom machine, with the
+crank angle theta as generalised coordinate; [Artobolevsky1951]):
 
     I(theta) d(omega)/dt + 1/2 omega^2 dI/dtheta = M_drive(omega) - M_load(theta) - M_gravity(theta)
 
-* I, the reduced moment of inertia (kinetic energy T = 1/2 I omega^2), [Kharun2013]_ eq. 9:
+* I, the reduced moment of inertia (kinetic energy T = 1/2 I omega^2), [SK8Rotation2013] eq. 9:
   the drive (motor rotor, sheaves, gearbox) and the crank with its counterweights
   (constant), the pitmans, the beam with horsehead and equalizer, and the masses moving
   with the polished rod (rods, and the fluid on the upstroke only);
 * M_drive = (a + b u omega) u, the motor's linear working characteristic reduced to
-  the crank through the total ratio u ([Kharun2013]_ eqs. 25-26; :mod:`.drive`);
+  the crank through the total ratio u ([SK8Rotation2013] eqs. 25-26; :mod:`.drive`);
 * M_load = P(theta) TF(theta): polished-rod load times the torque factor A psi'
-  ([Kharun2013]_ eqs. 19-23; P from :mod:`pumpjack_cli.core.well` or a dynamometer card);
+  ([SK8Rotation2013] eqs. 19-23; P from :mod:`pumpjack_cli.core.well` or a dynamometer card);
 * M_gravity = dV/dtheta: derivative of the potential energy of crank arms,
-  counterweights, pitmans, beam, horsehead and equalizer ([Kharun2013]_ eq. 18).
+  counterweights, pitmans, beam, horsehead and equalizer ([SK8Rotation2013] eq. 18).
 
 The positions and transfer functions (psi', psi'', chi', chi'') come from the
 mechanism (:class:`pumpjack_cli.core.mechanism.Mechanism`), for whole arrays of crank

@@ -1,5 +1,5 @@
 """The drive of a pumping unit: induction motor characteristic and the reduced inertia of
-the motor, V-belt and gearbox ([Kharun2013]_ eqs. 25-26; [Artobolevsky1951]_).
+the motor, V-belt and gearbox ([SK8Rotation2013] eqs. 25-26; [Artobolevsky1951]).
 """
 
 from __future__ import annotations

@@ -3,13 +3,13 @@
 The equation of motion and its coefficients are :mod:`.coefficients`. It is
 integrated in the crank angle, d(omega)/dtheta = (M_drive - M_load - M_gravity -
 1/2 omega^2 I')/(I omega), dt/dtheta = 1/omega, over the upstroke and then the
-downstroke ([Kharun2013]_ eqs. 27 and 29), with scipy's DOP853 at a relative tolerance
+downstroke ([SK8Rotation2013] eqs. 27 and 29), with scipy's DOP853 at a relative tolerance
 ``rtol`` and absolute tolerances rtol x the scale of each state. The coefficients I,
 I' and M_load + M_gravity are tabulated exactly on 4096 crank angles per revolution
 and interpolated by cubic splines within each stroke (error ~1e-11 relative, below
 the default rtol = 1e-10), which makes one periodic solve take milliseconds.
 
-Periodic steady state ([Kharun2013]_): the speed omega_0 at the start of the upstroke is
+Periodic steady state ([SK8Rotation2013]): the speed omega_0 at the start of the upstroke is
 the root of R(omega_0) = omega_end(omega_0) - omega_0, found by secant iteration from
 the mean speed of the energy balance (a u + b u^2 <omega>_theta = E / 2 pi).
 """
