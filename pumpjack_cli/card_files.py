@@ -31,7 +31,7 @@ import numpy as np
 from .core.beam.card import Card, card_from_angles, crank_angle_from_position, upstroke_points
 from .core.beam.geometry import Linkage, dead_positions
 from .errors import PumpjackError
-from .units import INPUT_UNITS
+from .quantities import INPUT_UNITS
 
 STROKE_ERROR = 0.05
 STROKE_WARNING = 0.02

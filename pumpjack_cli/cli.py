@@ -1,41 +1,90 @@
-"""The `pumpjack` command: subcommands and the one error boundary.
+"""The `pumpjack` command: subcommands loaded on demand and the one error boundary.
 
 Every user error (:class:`~pumpjack_cli.errors.PumpjackError`, a bad option) ends
 as one line ``pumpjack: error: ...`` on stderr and exit code 2; ``--debug`` shows
-the traceback instead.
+the traceback instead. A subcommand's module (and with it numpy, scipy and the unit
+models) is imported only when that subcommand runs; ``pumpjack --help``,
+``--version`` and the listing of commands cost no more than typer itself.
 """
 
 from __future__ import annotations
 
+import importlib
 import sys
 
 import typer
+from typer.core import TyperGroup
 
-from .commands.dynamics import dynamics
-from .commands.inertia_error import inertia_error
-from .commands.compare_redundancy import compare_redundancy
-from .commands.kinematics import kinematics
-from .commands.reactions import reactions
-from .commands.units import units
+from . import __version__
 from .errors import PumpjackError
 
+#: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
+#: The summary is the first line of the function's docstring (a test keeps them equal).
+COMMANDS: dict[str, tuple[str, str, str]] = {
+    "units": ("units", "units", "List the bundled units with their stroke; name one in any command, or give a file path."),
+    "kinematics": ("kinematics", "kinematics",
+                   "Exact kinematics of the polished rod, beam and pitman for uniform crank rotation."),
+    "reactions": ("reactions", "reactions",
+                  "Joint reactions and balancing torque of the rational mechanism from a dynamometer card."),
+    "compare-redundancy": ("compare_redundancy", "compare_redundancy",
+                           "Real mechanism (redundant constraints, elastic pitmans, errors) against the rational one."),
+    "inertia-error": ("inertia_error", "inertia_error",
+                      "Error of the approximate inertia-force laws against the exact motion."),
+    "dynamics": ("dynamics", "dynamics", "Non-uniform crank rotation from the machine's equation of motion."),
+}
+CONTEXT = {"help_option_names": ["-h", "--help"]}
+
+
+def command_function(name: str):
+    """The function behind a subcommand, importing its module."""
+    module, function, _ = COMMANDS[name]
+    return getattr(importlib.import_module(f".commands.{module}", __package__), function)
+
+
+class LazyCommands(TyperGroup):
+    """A command group whose subcommands are built from their modules only when used."""
+
+    def list_commands(self, ctx) -> list[str]:
+        return list(COMMANDS)
+
+    def get_command(self, ctx, name: str):
+        if name not in COMMANDS:
+            return None
+        single = typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
+                             context_settings=CONTEXT)
+        single.command(name)(command_function(name))
+        command = typer.main.get_command(single)
+        command.name = name
+        return command
+
+    def format_commands(self, ctx, formatter) -> None:
+        with formatter.section("Commands"):
+            formatter.write_dl([(name, summary) for name, (_, _, summary) in COMMANDS.items()])
+
+
+def _version(value: bool) -> None:
+    if value:
+        sys.stdout.write(f"pumpjack {__version__}\n")
+        raise typer.Exit()
+
+
 app = typer.Typer(
+    cls=LazyCommands,
     name="pumpjack",
     help="Engineering calculator for beam pumping units: exact kinematics and more.",
     epilog="Add --debug anywhere on the command line to see a traceback on errors.",
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    context_settings=CONTEXT,
 )
-app.command("units")(units)
-app.command("kinematics")(kinematics)
-app.command("reactions")(reactions)
-app.command("compare-redundancy")(compare_redundancy)
-app.command("inertia-error")(inertia_error)
-app.command("dynamics")(dynamics)
 
 
 @app.callback()
-def _root() -> None:
+def _root(
+    version: bool = typer.Option(False, "--version", help="print the version and exit", callback=_version,
+                                 is_eager=True),
+) -> None:
     """Engineering calculator for beam pumping units (pumpjacks)."""
 
 

@@ -1,161 +1,127 @@
-"""The one renderer: a :class:`Report` to a rich table, CSV, JSON or a plot.
+"""The one renderer: a :class:`~pumpjack_cli.results.Result` to a text table, CSV, JSON or a plot.
 
-Commands build a :class:`Report` (SI values plus the quantity kind of each) and hand
-it to :func:`emit`; nothing else in the package prints results. Unit systems are
-applied here only (``si`` or oilfield ``field``), and column names carry the unit
-suffix of the system (``position_m`` / ``position_in``). CSV and JSON are written
-with the standard library, never through rich; floats are written with ``repr`` so
-that they parse back to exactly the numbers the library computed.
+Analyses build a result (SI values plus the quantity kind of each); commands hand it
+to :func:`emit`; nothing else in the package prints results. Unit systems are applied
+here only (``si`` or oilfield ``field``), and column names carry the unit suffix of
+the system (``position_m`` / ``position_in``; dimensionless quantities carry none).
+CSV and JSON are written with the standard library; floats are written with ``repr``
+so that they parse back to exactly the numbers the library computed. CSV is streamed
+in blocks of rows straight from the arrays, so a million-row table never becomes
+per-column Python lists. The terminal table is laid out here, without a layout
+engine: numbers and headers are never cut; columns that do not fit the width are
+folded into further blocks.
+
+This module imports nothing heavy at start-up (matplotlib only for a plot).
 """
 
 from __future__ import annotations
 
 import csv
-import io
 import json
 import math
 import os
+import shutil
 import sys
 import tempfile
-from collections.abc import Mapping
-from dataclasses import dataclass
+import textwrap
 from pathlib import Path
-from typing import TextIO
-
-import numpy as np
+from typing import Any, TextIO
 
 from .errors import PumpjackError
-from .units import output_unit
+from .quantities import output_unit
+from .results import TEXT, Column, Result
 
 FORMATS = ("table", "csv", "json")
-
-
-@dataclass(frozen=True)
-class Column:
-    """A per-crank-angle series: base name, quantity kind, description.
-
-    ``brief`` columns are the ones shown in the terminal table; CSV, JSON and plots
-    carry every column.
-    """
-
-    name: str
-    quantity: str
-    description: str
-    brief: bool = True
-
-
-@dataclass(frozen=True)
-class Scalar:
-    """One summary value (SI) with its quantity kind and description."""
-
-    name: str
-    quantity: str
-    value: float
-    description: str
-
-
-@dataclass(frozen=True)
-class Panel:
-    """One plot panel: solid curves and dashed curves (column base names) against the x column."""
-
-    title: str
-    solid: tuple[str, ...]
-    dashed: tuple[str, ...] = ()
-
-
-@dataclass(frozen=True)
-class Report:
-    """Everything a command outputs: SI values with their quantity kinds."""
-
-    title: str
-    summary: tuple[Scalar, ...]
-    columns: tuple[Column, ...]
-    series: Mapping[str, np.ndarray]
-    panels: tuple[Panel, ...] = ()
-
-    def column(self, name: str) -> Column:
-        return next(c for c in self.columns if c.name == name)
-
-
-TEXT = "text"
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+#: Rows converted and written at a time by the CSV writer.
+CSV_BLOCK = 4096
+#: Width of a table written to a file.
+FILE_TABLE_WIDTH = 160
 
 
 def display_name(name: str, quantity: str, system: str) -> str:
-    """Column or summary key with the unit suffix of the unit system."""
+    """Column or summary key with the unit suffix of the unit system (none for text or pure numbers)."""
     if quantity == TEXT:
         return name
-    return f"{name}_{output_unit(quantity, system).suffix}"
+    suffix = output_unit(quantity, system).suffix
+    return f"{name}_{suffix}" if suffix else name
 
 
-def _display_values(column: Column, values, system: str) -> list:
-    """A column's values in display units (text columns pass through)."""
+def _is_array(values: Any) -> bool:
+    return hasattr(values, "dtype")
+
+
+def _display_values(column: Column, values: Any, system: str) -> list:
+    """Values (a slice of a column) in display units as Python objects; text passes through."""
     if column.quantity == TEXT:
         return list(values)
-    return output_unit(column.quantity, system).convert(np.asarray(values, dtype=float)).tolist()
+    unit = output_unit(column.quantity, system)
+    if _is_array(values):
+        return unit.convert(values.astype(float, copy=False)).tolist()
+    return [unit.convert(float(v)) for v in values]
 
 
 def _unit_label(quantity: str, system: str) -> str:
     return "" if quantity == TEXT else output_unit(quantity, system).label
 
 
-def converted_summary(report: Report, system: str) -> dict[str, float]:
+def converted_summary(result: Result, system: str) -> dict[str, float]:
     """Summary values in the display units of ``system``, keyed by suffixed name."""
     return {
-        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(s.value))
-        for s in report.summary
+        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(float(s.value)))
+        for s in result.summary
     }
 
 
-def converted_series(report: Report, system: str) -> dict[str, list]:
-    """Series in the display units of ``system``, keyed by suffixed name."""
-    return {
-        display_name(c.name, c.quantity, system): _display_values(c, report.series[c.name], system)
-        for c in report.columns
-    }
+def converted_series(result: Result, system: str) -> dict[str, list]:
+    """Columns in the display units of ``system``, keyed by suffixed name."""
+    return {display_name(c.name, c.quantity, system): _display_values(c, c.values, system) for c in result.columns}
 
 
-def check_finite(report: Report) -> None:
-    """Refuse to output NaN or infinity: name the column and the first bad row."""
-    for s in report.summary:
+def check_finite(result: Result) -> None:
+    """Refuse to output NaN or infinity: name the value, or the column and the first bad row."""
+    for s in result.summary:
         if not math.isfinite(s.value):
             raise PumpjackError(f"result {s.name} is not finite ({s.value}); the computation failed")
-    for c in report.columns:
+    for c in result.columns:
         if c.quantity == TEXT:
             continue
-        values = np.asarray(report.series[c.name], dtype=float)
-        bad = np.flatnonzero(~np.isfinite(values))
-        if bad.size:
-            raise PumpjackError(f"result column {c.name} is not finite at row {bad[0]} of {values.size}")
+        if _is_array(c.values):
+            import numpy as np
+
+            bad = np.flatnonzero(~np.isfinite(c.values.astype(float, copy=False)))
+            first = int(bad[0]) if bad.size else None
+        else:
+            first = next((i for i, v in enumerate(c.values) if not math.isfinite(float(v))), None)
+        if first is not None:
+            raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")
 
 
-def write_csv(report: Report, system: str, stream: TextIO) -> None:
-    """Series as CSV: a header of suffixed snake_case names, one row per crank angle."""
-    series = converted_series(report, system)
+def write_csv(result: Result, system: str, stream: TextIO) -> None:
+    """Columns as CSV: a header of suffixed snake_case names, then the rows, block by block."""
     writer = csv.writer(stream, lineterminator="\n")
-    writer.writerow(series)
-    for row in zip(*series.values()):
-        writer.writerow([v if isinstance(v, str) else repr(v) for v in row])
+    writer.writerow(display_name(c.name, c.quantity, system) for c in result.columns)
+    for start in range(0, result.rows, CSV_BLOCK):
+        block = [_display_values(c, c.values[start:start + CSV_BLOCK], system) for c in result.columns]
+        writer.writerows([v if isinstance(v, str) else repr(v) for v in row] for row in zip(*block))
 
 
-def to_json_dict(report: Report, system: str) -> dict:
+def to_json_dict(result: Result, system: str) -> dict:
     """The JSON document: title, unit system, summary, column descriptions and series."""
     return {
-        "title": report.title,
+        "title": result.title,
         "units": system,
-        "summary": converted_summary(report, system),
+        "summary": converted_summary(result, system),
         "columns": {
-            display_name(c.name, c.quantity, system): {
-                "unit": _unit_label(c.quantity, system),
-                "description": c.description,
-            }
-            for c in report.columns
+            display_name(c.name, c.quantity, system): {"unit": _unit_label(c.quantity, system), "description": c.description}
+            for c in result.columns
         },
-        "series": converted_series(report, system),
+        "series": converted_series(result, system),
     }
 
 
-def write_json(report: Report, system: str, stream: TextIO) -> None:
-    json.dump(to_json_dict(report, system), stream, indent=1)
+def write_json(result: Result, system: str, stream: TextIO) -> None:
+    json.dump(to_json_dict(result, system), stream, indent=1)
     stream.write("\n")
 
 
@@ -163,59 +129,110 @@ def _format(value: float) -> str:
     return f"{value:.6g}"
 
 
-def write_table(report: Report, system: str, stream: TextIO, width: int | None = None) -> None:
-    """Summary and the brief columns as rich tables; units escaped from rich markup."""
-    from rich.console import Console
-    from rich.markup import escape
-    from rich.table import Table
-
-    console = Console(file=stream, width=width, highlight=False)
-    summary = Table(title=escape(report.title), show_header=True, header_style="bold")
-    for heading in ("quantity", "value", "unit", "meaning"):
-        summary.add_column(heading, justify="right" if heading == "value" else "left")
-    for s in report.summary:
+def _summary_lines(result: Result, system: str, width: int) -> list[str]:
+    """Summary as aligned lines: name, value, unit, and the meaning wrapped to the width."""
+    rows = []
+    for s in result.summary:
         unit = output_unit(s.quantity, system)
-        summary.add_row(s.name, _format(unit.convert(s.value)), escape(unit.label), escape(s.description))
-    if report.summary:
-        console.print(summary)
-    brief = [c for c in report.columns if c.brief]
-    table = Table(show_header=True, header_style="bold")
+        rows.append((s.name, _format(unit.convert(float(s.value))), unit.label, s.description))
+    if not rows:
+        return []
+    name_w = max(len(r[0]) for r in rows)
+    value_w = max(len(r[1]) for r in rows)
+    unit_w = max(len(r[2]) for r in rows)
+    lead = name_w + value_w + unit_w + 6
+    room = width - lead
+    lines = []
+    for name, value, label, meaning in rows:
+        head = f"{name:<{name_w}}  {value:>{value_w}}  {label:<{unit_w}}  "
+        if room >= 24:
+            wrapped = textwrap.wrap(meaning, room) or [""]
+            lines.append((head + wrapped[0]).rstrip())
+            lines += [" " * lead + more for more in wrapped[1:]]
+        else:
+            lines.append(head.rstrip())
+            lines += ["    " + more for more in textwrap.wrap(meaning, max(width - 4, 20))]
+    return lines
+
+
+def _table_blocks(columns: list[tuple[str, str, list[str], bool]], width: int) -> list[list[int]]:
+    """Column indices per block: the first column starts every block, the others fill the width."""
+    widths = [max(len(name), len(label), *(len(v) for v in values)) for name, label, values, _ in columns]
+    blocks, current, used = [], [0], widths[0]
+    for i in range(1, len(columns)):
+        if len(current) > 1 and used + 2 + widths[i] > width:
+            blocks.append(current)
+            current, used = [0], widths[0]
+        current.append(i)
+        used += 2 + widths[i]
+    blocks.append(current)
+    return blocks
+
+
+def _row_lines(columns: list[tuple[str, str, list[str], bool]], block: list[int]) -> list[str]:
+    """Header (name, unit), a rule and the rows of one block; text left-aligned, numbers right-aligned."""
+    widths = {i: max(len(columns[i][0]), len(columns[i][1]), *(len(v) for v in columns[i][2])) for i in block}
+
+    def line(cells) -> str:
+        return "  ".join(cell.ljust(widths[i]) if columns[i][3] else cell.rjust(widths[i]) for i, cell in cells).rstrip()
+
+    lines = [line((i, columns[i][0]) for i in block), line((i, columns[i][1]) for i in block),
+             "  ".join("-" * widths[i] for i in block)]
+    lines += [line((i, columns[i][2][r]) for i in block) for r in range(len(columns[block[0]][2]))]
+    return lines
+
+
+def write_table(result: Result, system: str, stream: TextIO, width: int | None = None) -> None:
+    """Title, summary and the brief columns as plain text that never cuts a number or a name."""
+    width = width if width is not None else shutil.get_terminal_size(fallback=(80, 24)).columns
+    width = max(width, 40)
+    lines = textwrap.wrap(result.title, width) + [""]
+    summary = _summary_lines(result, system, width)
+    if summary:
+        lines += summary + [""]
+    brief = [c for c in result.columns if c.brief]
+    columns = []
     for c in brief:
         label = _unit_label(c.quantity, system)
-        heading = f"{c.name} [{label}]" if label else c.name
-        table.add_column(escape(heading), justify="left" if c.quantity == TEXT else "right")
-    rows = zip(*(_display_values(c, report.series[c.name], system) for c in brief))
-    for row in rows:
-        table.add_row(*(escape(v) if isinstance(v, str) else _format(v) for v in row))
-    console.print(table)
-    hidden = len(report.columns) - len(brief)
+        values = _display_values(c, c.values, system)
+        columns.append((c.name, f"[{label}]" if label else "",
+                        [v if isinstance(v, str) else _format(v) for v in values], c.quantity == TEXT))
+    if columns:
+        for number, block in enumerate(_table_blocks(columns, width)):
+            if number:
+                lines.append("")
+            lines += _row_lines(columns, block)
+    hidden = len(result.columns) - len(brief)
     if hidden:
-        console.print(f"{hidden} more columns with --format csv or json")
+        lines += ["", f"{hidden} more columns with --format csv or json"]
+    stream.write("\n".join(lines) + "\n")
 
 
-def write_plot(report: Report, system: str, path: Path) -> None:
+def write_plot(result: Result, system: str, path: Path) -> None:
     """Each panel against the first column, dashed curves for approximations."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import numpy as np
 
-    x_col = report.columns[0]
+    x_col = result.columns[0]
     x_unit = output_unit(x_col.quantity, system)
-    x = x_unit.convert(np.asarray(report.series[x_col.name]))
-    fig, axes = plt.subplots(len(report.panels), 1, sharex=True, figsize=(8, 2.6 * len(report.panels)))
-    for ax, panel in zip(np.atleast_1d(axes), report.panels):
+    x = x_unit.convert(np.asarray(x_col.values, dtype=float))
+    fig, axes = plt.subplots(len(result.panels), 1, sharex=True, figsize=(8, 2.6 * len(result.panels)))
+    for ax, panel in zip(np.atleast_1d(axes), result.panels):
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
-                unit = output_unit(report.column(name).quantity, system)
-                ax.plot(x, unit.convert(np.asarray(report.series[name])), style, label=name)
-        unit = output_unit(report.column(panel.solid[0]).quantity, system)
+                column = result.column(name)
+                unit = output_unit(column.quantity, system)
+                ax.plot(x, unit.convert(np.asarray(column.values, dtype=float)), style, label=name)
+        unit = output_unit(result.column(panel.solid[0]).quantity, system)
         ax.set_ylabel(f"{panel.title} [{unit.label}]")
         ax.grid(True, alpha=0.3)
         if len(panel.solid) + len(panel.dashed) > 1:
             ax.legend(fontsize="small")
     np.atleast_1d(axes)[-1].set_xlabel(f"{x_col.name} [{x_unit.label}]")
-    fig.suptitle(report.title)
+    fig.suptitle(result.title)
     fig.tight_layout()
     with atomic_path(path) as tmp:
         fig.savefig(tmp, format=path.suffix.lstrip(".").lower())
@@ -248,7 +265,6 @@ class atomic_path:
 
 
 _WRITERS = {"csv": write_csv, "json": write_json, "table": write_table}
-PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 
 
 def choose_format(fmt: str | None, output: Path | None) -> str:
@@ -260,21 +276,19 @@ def choose_format(fmt: str | None, output: Path | None) -> str:
     return "table" if sys.stdout.isatty() else "csv"
 
 
-def emit(report: Report, fmt: str | None, system: str, output: Path | None, plot: Path | None) -> None:
-    """Write the report to stdout or ``output`` (atomically) and optionally a plot."""
-    check_finite(report)
+def emit(result: Result, fmt: str | None, system: str, output: Path | None, plot: Path | None) -> None:
+    """Write the result to stdout or ``output`` (atomically) and optionally a plot."""
+    check_finite(result)
     if plot is not None and plot.suffix.lower() not in PLOT_SUFFIXES:
         raise PumpjackError(f"--plot {plot}: use a file ending in {', '.join(PLOT_SUFFIXES)}")
     fmt = choose_format(fmt, output)
     if output is None:
-        _WRITERS[fmt](report, system, sys.stdout)
+        _WRITERS[fmt](result, system, sys.stdout)
     else:
-        buffer = io.StringIO()
-        if fmt == "table":
-            write_table(report, system, buffer, width=160)
-        else:
-            _WRITERS[fmt](report, system, buffer)
-        with atomic_path(output) as tmp:
-            tmp.write_text(buffer.getvalue(), encoding="utf-8")
+        with atomic_path(output) as tmp, open(tmp, "w", encoding="utf-8", newline="") as stream:
+            if fmt == "table":
+                write_table(result, system, stream, width=FILE_TABLE_WIDTH)
+            else:
+                _WRITERS[fmt](result, system, stream)
     if plot is not None:
-        write_plot(report, system, plot)
+        write_plot(result, system, plot)

@@ -185,8 +185,8 @@ def test_json_equals_library(run_cli, library_result):
     # Scaled summary values: one multiplication, rel 1e-12.
     assert summary["strokes_per_minute_spm"] == pytest.approx(s.crank_speed * 60 / (2 * math.pi), rel=1e-12)
     err = s.approximation_errors["harmonic"]
-    assert summary["harmonic_position_error_pct"] == pytest.approx(100 * err.position, rel=1e-12)
-    assert summary["harmonic_peak_acceleration_error_pct"] == pytest.approx(100 * err.peak_acceleration, rel=1e-12)
+    assert summary["harmonic_position_error_percent"] == pytest.approx(100 * err.position, rel=1e-12)
+    assert summary["harmonic_peak_acceleration_error_percent"] == pytest.approx(100 * err.peak_acceleration, rel=1e-12)
 
 
 def test_field_units(run_cli):

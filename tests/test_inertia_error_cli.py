@@ -23,7 +23,7 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.core.slider_crank.geometry import SliderCrank
 from pumpjack_cli.core.slider_crank.mechanism import slider_inertia_laws
 from pumpjack_cli.core.slider_crank.support_friction import redundant_support_friction
-from pumpjack_cli.units import parse_quantity
+from pumpjack_cli.quantities import parse_quantity
 
 ROOT = Path(__file__).resolve().parents[1]
 UNB = "unb-600a"
@@ -51,14 +51,14 @@ def test_bundled_unb600a_is_the_seed_mechanism():
 
 def test_slider_summary_reproduces_seed_equations(run_cli):
     summary = _json(run_cli, UNB, "--steps", "12")["summary"]
-    assert summary["crank_to_rod_ratio_ratio"] == pytest.approx(LAMBDA, rel=1e-15)
+    assert summary["crank_to_rod_ratio"] == pytest.approx(LAMBDA, rel=1e-15)
     assert summary["stroke_m"] == pytest.approx(2 * R, rel=1e-14)
     assert summary["peak_inertia_force_n"] == pytest.approx(MASS * OMEGA**2 * (R + R**2 / L2), rel=1e-13)
     assert summary["harmonic_peak_inertia_force_n"] == pytest.approx(MASS * R * OMEGA**2, rel=1e-13)
     assert summary["two_term_peak_inertia_force_n"] == pytest.approx(MASS * R * OMEGA**2 * (1 + LAMBDA), rel=1e-13)
-    assert summary["harmonic_peak_error_pct"] == pytest.approx(100 * LAMBDA / (1 + LAMBDA), rel=1e-12)
-    assert summary["harmonic_peak_error_of_law_pct"] == pytest.approx(100 * LAMBDA, rel=1e-12)
-    assert summary["two_term_peak_error_pct"] == pytest.approx(0.0, abs=1e-12)
+    assert summary["harmonic_peak_error_percent"] == pytest.approx(100 * LAMBDA / (1 + LAMBDA), rel=1e-12)
+    assert summary["harmonic_peak_error_of_law_percent"] == pytest.approx(100 * LAMBDA, rel=1e-12)
+    assert summary["two_term_peak_error_percent"] == pytest.approx(0.0, abs=1e-12)
 
 
 def test_slider_json_equals_library(run_cli):
@@ -71,9 +71,9 @@ def test_slider_json_equals_library(run_cli):
     assert series["inertia_force_n"] == (-300.0 * c.acceleration).tolist()
     for name, error in c.errors.items():
         assert series[f"acceleration_{name}_m_s2"] == c.laws[name].tolist()
-        assert summary[f"{name}_peak_error_pct"] == 100 * error.peak_error
-        assert summary[f"{name}_max_deviation_pct"] == 100 * error.max_deviation
-        assert summary[f"{name}_rms_deviation_pct"] == 100 * error.rms_deviation
+        assert summary[f"{name}_peak_error_percent"] == 100 * error.peak_error
+        assert summary[f"{name}_max_deviation_percent"] == 100 * error.max_deviation
+        assert summary[f"{name}_rms_deviation_percent"] == 100 * error.rms_deviation
     assert summary["crank_speed_rad_s"] == pytest.approx(omega, rel=1e-15)
 
 
@@ -95,7 +95,7 @@ def test_field_units(run_cli):
     field = _json(run_cli, UNB, "--steps", "4", "--units", "field")["summary"]
     lbf = 4.4482216152605  # N, NIST SP 811
     assert field["peak_inertia_force_lbf"] == pytest.approx(si["peak_inertia_force_n"] / lbf, rel=1e-14)
-    assert field["harmonic_peak_error_pct"] == si["harmonic_peak_error_pct"]
+    assert field["harmonic_peak_error_percent"] == si["harmonic_peak_error_percent"]
 
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
@@ -106,7 +106,7 @@ def test_beam_units_json_equals_library(run_cli, name):
     assert doc["series"]["acceleration_m_s2"] == c.acceleration.tolist()
     assert set(c.errors) == {"harmonic", "two_term", "chord"}
     for law, error in c.errors.items():
-        assert doc["summary"][f"{law}_peak_error_pct"] == 100 * error.peak_error
+        assert doc["summary"][f"{law}_peak_error_percent"] == 100 * error.peak_error
     # No mass given: accelerations only.
     assert not any(key.startswith("inertia_force") for key in doc["series"])
 
@@ -119,7 +119,7 @@ def test_beam_unit_peak_error_agrees_with_kinematics_command(run_cli):
     code, out, _ = run_cli("kinematics", "sk8-3.5-4000", "--steps", "8", "-f", "json")
     kinematics = json.loads(out)["summary"]
     for law in ("harmonic", "two_term"):
-        assert inertia[f"{law}_peak_error_pct"] == pytest.approx(abs(kinematics[f"{law}_peak_acceleration_error_pct"]), rel=1e-5)
+        assert inertia[f"{law}_peak_error_percent"] == pytest.approx(abs(kinematics[f"{law}_peak_acceleration_error_percent"]), rel=1e-5)
 
 
 def test_beam_unit_with_mass_gives_forces(run_cli):

@@ -13,7 +13,7 @@ import math
 
 import pytest
 
-from pumpjack_cli.units import output_unit, parse_quantity
+from pumpjack_cli.quantities import output_unit, parse_quantity
 
 # Exact definitions (NIST SP 811, Appendix B).
 IN = 0.0254  # m

@@ -52,10 +52,39 @@ def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
 
 
 def largest_magnitude(theta: np.ndarray, values: np.ndarray) -> Extreme:
-    """The sample of largest |value| and its crank angle [rad], on the given grid (no refinement).
+    """The sample of largest magnitude and its crank angle [rad], on the given grid (no refinement).
+
+    ``values`` is a series (N,) (magnitude |v|) or a series of vectors (N, k) (Euclidean norm).
 
     >>> largest_magnitude(np.array([0.0, 1.0, 2.0]), np.array([1.0, -3.0, 2.0]))
     Extreme(value=3.0, crank_angle=1.0)
+    >>> largest_magnitude(np.array([0.0, 1.0]), np.array([[3.0, 4.0], [1.0, 1.0]])).value
+    5.0
     """
-    i = int(np.argmax(np.abs(values)))
-    return Extreme(float(np.abs(values[i])), float(theta[i]))
+    magnitude = np.abs(values) if np.ndim(values) == 1 else np.linalg.norm(values, axis=-1)
+    i = int(np.argmax(magnitude))
+    return Extreme(float(magnitude[i]), float(theta[i]))
+
+
+def signed_extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
+    """The largest and the smallest sample and their crank angles [rad], on the given grid (no refinement).
+
+    >>> signed_extremes(np.array([0.0, 1.0, 2.0]), np.array([1.0, -3.0, 2.0]))
+    (Extreme(value=2.0, crank_angle=2.0), Extreme(value=-3.0, crank_angle=1.0))
+    """
+    top, bottom = int(np.argmax(values)), int(np.argmin(values))
+    return Extreme(float(values[top]), float(theta[top])), Extreme(float(values[bottom]), float(theta[bottom]))
+
+
+def uniform_time(crank_angle: np.ndarray, omega: float) -> np.ndarray:
+    """Time [s] from crank angle 0 at uniform rotation: t = theta / omega (theta [rad], omega [1/s])."""
+    return crank_angle / omega
+
+
+def cycle_period(omega: float) -> float:
+    """Time of one crank revolution, 2 pi / omega [s], for a mean crank speed omega [1/s].
+
+    >>> round(cycle_period(2 * np.pi / 6), 12)   # 10 strokes per minute
+    6.0
+    """
+    return 2.0 * np.pi / omega

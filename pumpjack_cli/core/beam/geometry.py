@@ -225,3 +225,48 @@ def dead_positions(linkage: Linkage) -> DeadPositions:
     if psi_s < psi_f:
         return DeadPositions(theta_s, theta_f, psi_s, psi_f, linkage.front_arm)
     return DeadPositions(theta_f, theta_s, psi_f, psi_s, linkage.front_arm)
+
+
+def vertical_offset_from_heights(centre_bearing_height: float, crank_shaft_height: float) -> float:
+    """H - G [m]: the centre bearing's height above the crank shaft from the API 11E letters
+    H (centre bearing above the base) and G (crank shaft above the base) [API11E]."""
+    return centre_bearing_height - crank_shaft_height
+
+
+def vertical_offset_from_frame(frame_length: float, horizontal_offset: float) -> float:
+    """sqrt(K^2 - I^2) [m]: the vertical offset from the API 11E letters K (straight
+    distance crank shaft - centre bearing) and I (its horizontal part) [API11E].
+
+    >>> vertical_offset_from_frame(5.0, 3.0)
+    4.0
+    """
+    if not frame_length > horizontal_offset:
+        raise GeometryError(f"K = {frame_length:.4g} m must exceed I = {horizontal_offset:.4g} m")
+    return math.sqrt(frame_length * frame_length - horizontal_offset * horizontal_offset)
+
+
+def pitman_lean(crank_half_spacing: float | None, equalizer_half_length: float | None) -> float:
+    """|b - e| [m]: offset of the pitman's ends along the crank shaft (0 without spatial data)."""
+    if crank_half_spacing is None or equalizer_half_length is None:
+        return 0.0
+    return abs(crank_half_spacing - equalizer_half_length)
+
+
+def beam_linkage(front_arm: float, rear_arm: float, crank_radius: float, pitman: float, horizontal_offset: float,
+                 vertical_offset: float, rotation: int, crank_half_spacing: float | None = None,
+                 equalizer_half_length: float | None = None) -> Linkage:
+    """The planar four-bar of a unit [m]; the pitman is projected on the beam plane,
+    sqrt(P^2 - (b - e)^2), when the crank pins (half spacing b) and the equalizer pins
+    (half length e) are spaced differently along the shaft.
+
+    >>> beam_linkage(3.5, 2.5, 1.01, 5.0, 2.195, 3.0, CLOCKWISE, 1.0, 4.0).pitman
+    4.0
+    """
+    lean = pitman_lean(crank_half_spacing, equalizer_half_length)
+    if lean >= pitman:
+        raise GeometryError(
+            f"pitman ({pitman:.4g} m) is shorter than the offset of its ends along the crank shaft "
+            f"|crank_half_spacing - equalizer_half_length| = {lean:.4g} m"
+        )
+    return Linkage(front_arm, rear_arm, crank_radius, math.sqrt(pitman**2 - lean**2), horizontal_offset,
+                   vertical_offset, rotation)

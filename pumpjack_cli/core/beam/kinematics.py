@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..sampling import Extreme, crank_grid, extremes
+from ..sampling import Extreme, crank_grid, cycle_period, extremes, uniform_time
 from .linkage import DeadPositions, Linkage, dead_positions, motion
 
 #: Crank positions used to locate extremes, independent of the output resolution.
@@ -184,7 +184,7 @@ def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsS
     tf_max, tf_min = extremes(theta, linkage.front_arm * m.beam_rate)
     return KinematicsSummary(
         crank_speed=omega,
-        period=2.0 * np.pi / omega,
+        period=cycle_period(omega),
         stroke=stroke,
         crank_angle_bottom=dead.crank_angle_bottom,
         crank_angle_top=dead.crank_angle_top,
@@ -223,7 +223,7 @@ def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> Kine
     from_bottom = theta - dead.crank_angle_bottom
     return KinematicsResult(
         crank_angle=theta,
-        time=theta / omega,
+        time=uniform_time(theta, omega),
         rod=rod,
         torque_factor=linkage.front_arm * m.beam_rate,
         beam_angle=m.beam_angle,

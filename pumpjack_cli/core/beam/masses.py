@@ -38,3 +38,8 @@ class MassModel:
     horsehead_mass: float
     horsehead_cg: float
     horsehead_inertia: float
+
+
+def counterweight_set_mass(block_mass: float, count: int) -> float:
+    """Mass of all counterweight blocks on both crank arms [kg]: block mass [kg] x count."""
+    return block_mass * count

@@ -32,7 +32,7 @@ from ..beam.card import Card, card_load
 from ..beam.linkage import Linkage, Motion
 from ..beam.masses import MassModel
 from ..constants import STANDARD_GRAVITY
-from .drive import MotorCharacteristic
+from .drive import MotorCharacteristic, rated_crank_speed
 
 
 class RodLoad(Protocol):
@@ -94,8 +94,8 @@ class Machine:
 
     @property
     def rated_crank_speed(self) -> float:
-        """omega_1 = omega_n / u [1/s] (seed 004: pi n_n / (30 u_r u_belt))."""
-        return self.motor.rated_speed / self.drive_ratio
+        """omega_1 = omega_n / u [1/s] (:func:`.drive.rated_crank_speed`)."""
+        return rated_crank_speed(self.motor.rated_speed, self.drive_ratio)
 
     def drive_torque(self, omega: np.ndarray | float) -> np.ndarray | float:
         """Motor torque reduced to the crank, (a + b u omega) u [N·m] (seed 004 eq. 26)."""

@@ -79,3 +79,28 @@ def drive_inertia(motor_shaft: float, gearbox_input: float, crank_shaft: float,
     4156.3
     """
     return motor_shaft * (belt_ratio * gearbox_ratio) ** 2 + gearbox_input * gearbox_ratio**2 + crank_shaft
+
+
+def belt_ratio(motor_sheave_diameter: float, gearbox_sheave_diameter: float) -> float:
+    """V-belt reduction u_belt = d_2 / d_1 of the driving sheave d_1 and the driven sheave d_2 [m]
+    (belt slip neglected; [SK8Rotation2013]).
+
+    >>> belt_ratio(0.25, 0.9)
+    3.6
+    """
+    return gearbox_sheave_diameter / motor_sheave_diameter
+
+
+def total_ratio(gearbox_ratio: float, belt_reduction: float) -> float:
+    """Motor speed / crank speed, u = u_r u_belt, of the gearbox and the V-belt reductions."""
+    return gearbox_ratio * belt_reduction
+
+
+def rated_crank_speed(motor_rated_speed: float, drive_ratio: float) -> float:
+    """Crank speed at the motor's rated speed, omega_1 = omega_n / u [1/s] ([SK8Rotation2013]:
+    pi n_n / (30 u_r u_belt) = 1.1422 1/s for SK8-3,5-4000).
+
+    >>> round(rated_crank_speed(1460 * 3.141592653589793 / 30, total_ratio(37.18, belt_ratio(0.25, 0.9))), 4)
+    1.1423
+    """
+    return motor_rated_speed / drive_ratio

@@ -98,6 +98,11 @@ class DynamicsSummary:
     breakdown_torque_margin: float
     convergence: Convergence
 
+    @property
+    def mean_power(self) -> float:
+        """Mean motor power over the cycle [W]: energy per cycle / cycle time."""
+        return self.energy_per_cycle / self.period
+
 
 @dataclass(frozen=True)
 class SteadyState:

@@ -83,6 +83,17 @@ def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) 
     )
 
 
+def travel_from_outer_dead_centre(mechanism: SliderCrank, crank_angle: np.ndarray) -> np.ndarray:
+    """Slider travel s [m] from the outer dead centre towards the crank: s = x_outer - x(phi)."""
+    return dead_centres(mechanism).position_outer - exact_motion(mechanism, crank_angle, 1.0).position
+
+
+def inertia_force(mass: float, acceleration):
+    """d'Alembert inertia force Phi = -m a [N] of a mass m [kg] with acceleration a [m/s^2]
+    ([InertiaUNB600A] eq. 1), positive along the axis of the acceleration."""
+    return -mass * acceleration
+
+
 def series_coefficients(crank_ratio: float, terms: int) -> np.ndarray:
     """Coefficients c_1..c_terms of a = -r omega^2 [cos phi + sum_j c_j cos 2j phi].
 

@@ -39,6 +39,7 @@ Sign convention: w up, moments counterclockwise, forces up on the link.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -189,3 +190,17 @@ def redundant_support_friction(
         intermediate_friction=at_support,
         total_friction=guide + at_support,
     )
+
+
+def slider_length(section_lengths) -> float:
+    """L [m]: clamped end A to guide B, the sum of the section lengths l_i [m]."""
+    return sum(section_lengths)
+
+
+def solid_round_second_moment(diameter):
+    """J = pi d^4 / 64 [m^4], second moment of area of a solid circle of diameter d [m].
+
+    >>> round(solid_round_second_moment(0.1) * 1e8, 4)   # pi 1e-4 / 64 m^4
+    490.8739
+    """
+    return math.pi * diameter**4 / 64.0

@@ -1,12 +1,14 @@
 """Physical quantities at the edges: parsing field units on input, labelling output.
 
+This module imports no numpy (start-up cost matters in pipelines); display conversion
+works on floats and on numpy arrays alike.
+
 Inside the package every number is SI (m, kg, s, N, rad). Config values may be plain
 numbers (taken as SI) or strings with a unit (``"3500 mm"``, ``"137.5 in"``,
 ``"1460 rpm"``); :func:`parse_quantity` converts them once. The renderer converts
 results back for display through :data:`OUTPUT_QUANTITIES`.
 
-Conversion factors are exact definitions or the values of NIST Special Publication
-811 (2008), Appendix B (in = 0.0254 m, ft = 0.3048 m, lb = 0.45359237 kg,
+Conversion factors are exact definitions or the values of [NIST811], Appendix B (in = 0.0254 m, ft = 0.3048 m, lb = 0.45359237 kg,
 lbf = 4.4482216152605 N, kgf = 9.80665 N, hp = 745.699872 W).
 """
 
@@ -15,8 +17,6 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-
-import numpy as np
 
 
 INCH = 0.0254
@@ -91,8 +91,8 @@ def parse_quantity(value: object, dimension: str) -> float:
     3.5
     >>> round(parse_quantity("137.5 in", "length"), 6)
     3.4925
-    >>> round(parse_quantity("1460 rpm", "rotational_speed"), 4)
-    152.8909
+    >>> round(parse_quantity("1460 rpm", "rotational_speed"), 4)   # 1460 x 2 pi / 60 = 152.89084...
+    152.8908
     """
     if isinstance(value, bool):
         raise ValueError("expected a number or a string with a unit, got a boolean")
@@ -129,9 +129,18 @@ class OutputUnit:
     decimals: int | None = None
 
     def convert(self, si_values):
-        """SI value(s) -> display value(s)."""
-        shown = np.multiply(si_values, self.scale)
-        return shown if self.decimals is None else np.round(shown, self.decimals)
+        """SI value(s) -> display value(s): a float for a float, an array for a numpy array.
+
+        Rounding (angles) is round-half-even at ``decimals``, computed as numpy's
+        ``around`` does (scale, round to integer, unscale) for floats and arrays alike.
+        """
+        shown = si_values * self.scale
+        if self.decimals is None:
+            return shown
+        factor = 10.0**self.decimals
+        if isinstance(shown, float):
+            return round(shown * factor) / factor
+        return shown.round(self.decimals)
 
 
 _DEGREES = OutputUnit("deg", "deg", 180 / math.pi, decimals=9)
@@ -152,9 +161,9 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "stroke_rate": {"si": OutputUnit("1/min", "spm", 60 / (2 * math.pi)), "field": OutputUnit("1/min", "spm", 60 / (2 * math.pi))},
     "force": {"si": OutputUnit("N", "n", 1.0), "field": OutputUnit("lbf", "lbf", 1 / POUND_FORCE)},
     "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
-    "percent": {"si": OutputUnit("%", "pct", 100.0), "field": OutputUnit("%", "pct", 100.0)},
-    "ratio": {"si": OutputUnit("1", "ratio", 1.0), "field": OutputUnit("1", "ratio", 1.0)},
-    "count": {"si": OutputUnit("1", "count", 1.0), "field": OutputUnit("1", "count", 1.0)},
+    "percent": {"si": OutputUnit("%", "percent", 100.0), "field": OutputUnit("%", "percent", 100.0)},
+    "ratio": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
+    "count": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
     "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
     "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
     "moment_of_inertia": {

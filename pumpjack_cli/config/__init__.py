@@ -1,0 +1,29 @@
+"""Validated unit configs: the field types, one schema per machine kind, and the files.
+
+* :mod:`.quantities`: field types (SI floats parsed from values with units);
+* :mod:`.geometry_names`: GOST names and API 11E letters of the geometry (pure Python);
+* :mod:`.beam_unit`: the beam pumping unit (geometry, masses, drive, well, ...);
+* :mod:`.slider_crank`: slider-crank machines (drill pumps; [InertiaUNB600A]);
+* :mod:`.files`: reading files, bundled units, the registry of kinds.
+
+The names below are imported lazily, so that ``import pumpjack_cli.config`` costs
+nothing until a schema is used.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+_EXPORTS = {
+    "load_unit": "files", "load_any_unit": "files", "read_unit_file": "files", "parse_unit": "files",
+    "bundled_units": "files", "unit_listing": "files", "format_validation_error": "files", "UNIT_KINDS": "files",
+    "UnitConfig": "beam_unit", "Geometry": "beam_unit", "Masses": "beam_unit", "Drive": "beam_unit",
+    "Motor": "beam_unit", "Well": "beam_unit", "Deviations": "beam_unit", "PitmanSectionConfig": "beam_unit",
+    "SliderCrankConfig": "slider_crank", "SteppedSlider": "slider_crank",
+}
+
+
+def __getattr__(name: str):
+    if name not in _EXPORTS:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(f".{_EXPORTS[name]}", __name__), name)

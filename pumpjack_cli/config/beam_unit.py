@@ -1,0 +1,323 @@
+"""Schema of a beam pumping unit file (kind ``beam-pump``): geometry, masses, drive, well.
+
+Values are SI numbers or strings with a unit, converted once by the field types of
+:mod:`.quantities`; unknown keys are rejected. Geometry may be written with the GOST
+names or the API Spec 11E letters (:mod:`.geometry_names`). Bracketed symbols in the
+descriptions are those of the seed papers ([Spatial7SK12], [PopovychSenchishak],
+[SK8Rotation2013]).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any, Literal
+
+from pydantic import Field, model_validator
+
+from ..core.beam.geometry import Linkage, beam_linkage, check_assembly
+from ..core.beam.masses import MassModel, counterweight_set_mass
+from ..core.beam.redundancy import PinTilts, PitmanSection
+from ..core.beam.spatial import SpatialLinkage
+from ..core.dynamics.drive import belt_ratio, rated_crank_speed, total_ratio
+from ..errors import ConfigError, GeometryError
+from .geometry_names import ROTATION_SIGNS, canonical_geometry
+from .quantities import (Angle, Area, AreaMoment, Count, Density, Fraction, KinematicViscosity, Length, Mass,
+                         MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section)
+
+
+class Geometry(Section):
+    """Four-bar geometry of a conventional (class I) unit, rotation direction included."""
+
+    front_arm: Length = Field(gt=0, le=20, description="k1 / A: centre bearing to horsehead arc [m]")
+    rear_arm: Length = Field(gt=0, le=20, description="k / C: centre bearing to equalizer bearing [m]")
+    crank_radius: Length = Field(gt=0, le=5, description="r / R: crank shaft to crank pin [m]")
+    pitman: Length = Field(gt=0, le=20, description="l / P: crank pin to equalizer bearing [m]")
+    horizontal_offset: Length = Field(
+        ge=0, le=20, description="l1 / I: horizontal distance crank shaft - centre bearing [m]"
+    )
+    vertical_offset: Length = Field(
+        gt=0, le=20, description="l2 / H-G: height of the centre bearing above the crank shaft [m]"
+    )
+    rotation: Literal["clockwise", "counterclockwise"] = Field(
+        description="crank rotation seen with the well to the right"
+    )
+    crank_half_spacing: Length | None = Field(
+        default=None, gt=0, le=5,
+        description="spatial model: crank shaft mid-plane to each crank pin, along the shaft [m]",
+    )
+    equalizer_half_length: Length | None = Field(
+        default=None, gt=0, le=5, description="spatial model: equalizer bearing D to each pin, BD = DB1 [m]"
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _names(cls, data: Any) -> Any:
+        """Map GOST names and API letters to field names; reject double definitions."""
+        return canonical_geometry(data) if isinstance(data, dict) else data
+
+    @model_validator(mode="after")
+    def _assembles(self) -> "Geometry":
+        try:
+            check_assembly(self.linkage())
+        except GeometryError as exc:
+            raise ValueError(str(exc)) from None
+        return self
+
+    def linkage(self) -> Linkage:
+        """The numerical core's planar four-bar (:func:`~pumpjack_cli.core.beam.geometry.beam_linkage`)."""
+        return beam_linkage(self.front_arm, self.rear_arm, self.crank_radius, self.pitman, self.horizontal_offset,
+                            self.vertical_offset, ROTATION_SIGNS[self.rotation], self.crank_half_spacing,
+                            self.equalizer_half_length)
+
+    def spatial(self, source: str = "unit") -> SpatialLinkage:
+        """The spatial model; needs crank_half_spacing and equalizer_half_length."""
+        if self.crank_half_spacing is None or self.equalizer_half_length is None:
+            raise ConfigError(
+                f"{source}: geometry: the spatial model needs crank_half_spacing and equalizer_half_length"
+            )
+        return SpatialLinkage(self.linkage(), self.crank_half_spacing, self.equalizer_half_length)
+
+
+class CrankArm(Section):
+    """One of the two crank arms of the double crank (link 1), without counterweights."""
+
+    mass: Mass = Field(gt=0, le=2e4, description="one crank arm (m_kr, m_1) [kg]")
+    cg_radius: Length = Field(
+        ge=0, le=5, description="crank shaft to the arm's centre of mass, towards the crank pin (OS_1) [m]"
+    )
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about its centre of mass, axis along the crank shaft [kg·m²]"
+    )
+
+
+class Counterweights(Section):
+    """Counterweight blocks on the crank arms, treated as point masses at their centre of mass."""
+
+    mass: Mass = Field(ge=0, le=5e3, description="one block (m_pr1) [kg]")
+    count: Count = Field(ge=0, le=16, description="number of blocks on both arms together (shared equally)")
+    radius: Length = Field(ge=0, le=5, description="crank shaft to the blocks' centre of mass (r_pr, OS_pr) [m]")
+    phase: Angle = Field(
+        default=0.0, gt=-math.pi, le=math.pi,
+        description="angle from the crank pin direction to the blocks' centre of mass, in the direction of "
+        "rotation; 0 on conventional units, whose blocks sit on the crank arm in line with the pin [rad]",
+    )
+
+
+class Pitman(Section):
+    """One pitman (links 2 and 3 are equal)."""
+
+    mass: Mass = Field(gt=0, le=5e3, description="one pitman (m_2) [kg]")
+    cg_from_crank_pin: Length = Field(
+        ge=0, le=20, description="crank pin A to the centre of mass, along the pitman (AS_2) [m]"
+    )
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about its centre of mass, across the pitman (J_S2) [kg·m²]"
+    )
+
+
+class Equalizer(Section):
+    """Equalizer (cross-yoke, link 4); centre of mass at its bearing D on the beam."""
+
+    mass: Mass = Field(ge=0, le=2e4, description="equalizer (m_tr, m_4) [kg]")
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about D, axis along the crank shaft (its pin line BB1) [kg·m²]"
+    )
+    transverse_inertia: MomentOfInertia = Field(
+        ge=0, le=1e5, description="moment of inertia about D, axes across the pin line [kg·m²]"
+    )
+
+
+class BeamPart(Section):
+    """The walking beam body or the horsehead; centre of mass on the beam line D-C-E."""
+
+    mass: Mass = Field(ge=0, le=5e4, description="mass [kg]")
+    cg: Length = Field(
+        ge=-20, le=20, description="centre bearing C to the centre of mass along the beam, towards the well positive [m]"
+    )
+    inertia: MomentOfInertia = Field(
+        ge=0, le=1e6, description="moment of inertia about its centre of mass, axis along the crank shaft [kg·m²]"
+    )
+
+
+class Masses(Section):
+    """Masses, centres of mass and inertias of the moving links (seed 000/003/004 names in brackets)."""
+
+    crank_arm: CrankArm
+    counterweights: Counterweights
+    pitman: Pitman
+    equalizer: Equalizer
+    beam: BeamPart = Field(description="walking beam body (m_b, m_bal)")
+    horsehead: BeamPart = Field(description="horsehead (m_gb)")
+
+    def model(self) -> MassModel:
+        """The numerical core's view of the masses."""
+        return MassModel(
+            crank_arm_mass=self.crank_arm.mass,
+            crank_arm_cg=self.crank_arm.cg_radius,
+            crank_arm_inertia=self.crank_arm.inertia,
+            counterweight_mass=counterweight_set_mass(self.counterweights.mass, self.counterweights.count),
+            counterweight_radius=self.counterweights.radius,
+            counterweight_phase=self.counterweights.phase,
+            pitman_mass=self.pitman.mass,
+            pitman_cg=self.pitman.cg_from_crank_pin,
+            pitman_inertia=self.pitman.inertia,
+            equalizer_mass=self.equalizer.mass,
+            equalizer_inertia=self.equalizer.inertia,
+            equalizer_transverse_inertia=self.equalizer.transverse_inertia,
+            beam_mass=self.beam.mass,
+            beam_cg=self.beam.cg,
+            beam_inertia=self.beam.inertia,
+            horsehead_mass=self.horsehead.mass,
+            horsehead_cg=self.horsehead.cg,
+            horsehead_inertia=self.horsehead.inertia,
+        )
+
+
+class Motor(Section):
+    """Induction motor nameplate data (seed 004, eqs. 25-26)."""
+
+    model: str = Field(description="motor type designation")
+    rated_power: Power = Field(gt=0, le=1e6, description="rated shaft power [W]")
+    synchronous_speed: RotationalSpeed = Field(gt=0, le=400, description="synchronous speed n_s [rad/s]")
+    rated_speed: RotationalSpeed = Field(gt=0, le=400, description="rated speed n_n [rad/s]")
+    starting_torque_ratio: Number = Field(gt=0, le=10, description="starting torque / rated torque")
+    breakdown_torque_ratio: Number = Field(gt=1, le=10, description="pull-out (maximum) torque / rated torque")
+    rotor_inertia: MomentOfInertia = Field(gt=0, le=1e3, description="rotor moment of inertia [kg·m²]")
+
+    @model_validator(mode="after")
+    def _slip(self) -> "Motor":
+        if not self.rated_speed < self.synchronous_speed:
+            raise ValueError("rated_speed must be below synchronous_speed (an induction motor has slip)")
+        return self
+
+
+class Drive(Section):
+    """Motor, V-belt drive and gearbox between the motor and the crank shaft."""
+
+    motor: Motor
+    gearbox: str = Field(description="gearbox type designation")
+    gearbox_ratio: Number = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
+    motor_sheave_diameter: Length = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
+    gearbox_sheave_diameter: Length = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
+    motor_sheave_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e3, description="motor (driving) sheave, on the motor shaft; 0: not counted [kg·m²]"
+    )
+    gearbox_sheave_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e4, description="gearbox (driven) sheave, on the gearbox input shaft; 0: not counted [kg·m²]"
+    )
+    gearbox_inertia: MomentOfInertia = Field(
+        default=0.0, ge=0, le=1e4,
+        description="gears and shafts of the gearbox referred to its input shaft; 0: not counted [kg·m²]",
+    )
+
+    @property
+    def belt_ratio(self) -> float:
+        """V-belt reduction u_belt = d_2 / d_1 (:func:`~pumpjack_cli.core.dynamics.drive.belt_ratio`)."""
+        return belt_ratio(self.motor_sheave_diameter, self.gearbox_sheave_diameter)
+
+    @property
+    def total_ratio(self) -> float:
+        """Motor speed / crank speed (:func:`~pumpjack_cli.core.dynamics.drive.total_ratio`)."""
+        return total_ratio(self.gearbox_ratio, self.belt_ratio)
+
+    @property
+    def rated_crank_speed(self) -> float:
+        """Crank speed at the motor's rated speed [1/s] (:func:`~pumpjack_cli.core.dynamics.drive.rated_crank_speed`)."""
+        return rated_crank_speed(self.motor.rated_speed, self.total_ratio)
+
+
+class RodSection(Section):
+    """One section of a tapered rod string."""
+
+    diameter: Length = Field(gt=0, le=0.06, description="rod diameter [m]")
+    fraction: Fraction = Field(gt=0, le=1, description="share of the string length (0..1, or '51 %')")
+
+
+class Well(Section):
+    """Downhole data of the well the unit pumps (seed 004)."""
+
+    pump_depth: Length = Field(gt=0, le=5000, description="pump setting depth [m]")
+    plunger_diameter: Length = Field(gt=0, le=0.15, description="pump plunger diameter [m]")
+    rod_string: tuple[RodSection, ...] = Field(min_length=1, description="rod sections from the top down")
+    fluid_density: Density = Field(gt=100, le=2000, description="produced fluid density [kg/m³]")
+    fluid_kinematic_viscosity: KinematicViscosity = Field(
+        gt=0, le=1e-2, description="produced fluid kinematic viscosity [m²/s]"
+    )
+    tubing_inner_diameter: Length = Field(gt=0, le=0.2, description="tubing inner diameter [m]")
+    plunger_clearance: Length | None = Field(
+        default=None, gt=0, le=1e-3, description="clearance between plunger and barrel, for the plunger friction [m]"
+    )
+    pump_submergence: Length | None = Field(
+        default=None, ge=0, le=5000, description="depth of the pump below the dynamic fluid level, h [m]"
+    )
+    rod_density: Density = Field(default=7850.0, gt=1000, le=10000, description="rod material density (steel) [kg/m³]")
+
+    @model_validator(mode="after")
+    def _taper(self) -> "Well":
+        total = sum(section.fraction for section in self.rod_string)
+        if abs(total - 1.0) > 0.005:
+            raise ValueError(f"rod_string fractions add up to {total:.3f}, not 1")
+        return self
+
+
+
+
+class PitmanSectionConfig(Section):
+    """Elastic pitman for the real mechanism (seed 000 eqs. 18-21; defaults from the seed
+    where it gives them: E = 2.1e11 Pa, J_z = 17.61e-6 m^4)."""
+
+    youngs_modulus: Pressure = Field(default=2.1e11, gt=0, le=1e12, description="E [Pa] (seed 000)")
+    shear_modulus: Pressure = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
+    area: Area = Field(gt=0, le=0.1, description="cross-section area [m²]")
+    inplane_inertia: AreaMoment = Field(
+        default=17.61e-6, gt=0, le=1e-2, description="J_z: second moment about the pin direction [m⁴] (seed 000)"
+    )
+    outofplane_inertia: AreaMoment = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
+    torsion_constant: AreaMoment = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")
+
+    def model(self) -> PitmanSection:
+        return PitmanSection(self.youngs_modulus, self.shear_modulus, self.area, self.inplane_inertia,
+                             self.outofplane_inertia, self.torsion_constant)
+
+
+class Deviations(Section):
+    """Manufacturing and wear errors of side 3 (crank pin A1, pitman A1B1, pin B1)
+    against side 2; all zero for an ideal unit."""
+
+    crank_phase: Angle = Field(default=0.0, ge=-0.2, le=0.2,
+                               description="crank pin A1 ahead of A in the direction of rotation [rad]")
+    crank_radius: Length = Field(default=0.0, ge=-0.5, le=0.5, description="crank radius of A1 minus that of A [m]")
+    pitman_length: Length = Field(default=0.0, ge=-0.5, le=0.5, description="pitman A1B1 minus pitman AB [m]")
+    crank_pin_tilt_radial: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                         description="pin A1 bore turned about the arm's radial line [rad]")
+    crank_pin_tilt_tangential: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                             description="pin A1 bore turned about the arm's tangent [rad]")
+    equalizer_pin_roll: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                      description="pin B1 bore turned about the beam's long axis [rad]")
+    equalizer_pin_yaw: Angle = Field(default=0.0, ge=-0.05, le=0.05,
+                                     description="pin B1 bore turned about the vertical across the beam [rad]")
+
+    def tilts(self) -> PinTilts:
+        return PinTilts(self.crank_pin_tilt_radial, self.crank_pin_tilt_tangential,
+                        self.equalizer_pin_roll, self.equalizer_pin_yaw)
+
+    def apply(self, spatial: SpatialLinkage) -> SpatialLinkage:
+        """The spatial model with the side-3 deviations of position."""
+        return dataclasses.replace(spatial, crank_phase_offset=self.crank_phase,
+                                   crank_radius_offset=self.crank_radius, pitman_length_offset=self.pitman_length)
+
+
+class UnitConfig(Section):
+    """A whole pumping unit: identification, geometry and optional masses, drive, well."""
+
+    kind: Literal["beam-pump"] = Field(default="beam-pump", description="machine kind (see UNIT_KINDS)")
+    name: str = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
+    description: str = Field(default="", description="one line shown by `pumpjack units`")
+    sources: tuple[str, ...] = Field(default=(), description="where the data come from")
+    geometry: Geometry
+    masses: Masses | None = None
+    drive: Drive | None = None
+    well: Well | None = None
+    pitman_section: PitmanSectionConfig | None = None
+    deviations: Deviations = Deviations()

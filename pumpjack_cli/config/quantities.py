@@ -1,0 +1,42 @@
+"""Field types of unit files: SI floats parsed once from numbers or strings with units.
+
+Every physical field of a unit file is one of these annotated types; the conversion is
+:func:`pumpjack_cli.quantities.parse_quantity`, so ``"3500 mm"``, ``"137.5 in"`` and
+``3.5`` all become 3.5 (metres) here and everything downstream is SI.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+from typing import Annotated
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Strict
+
+from ..quantities import parse_quantity
+
+
+def _quantity(dimension: str) -> BeforeValidator:
+    return BeforeValidator(partial(parse_quantity, dimension=dimension))
+
+
+Length = Annotated[float, _quantity("length")]
+Mass = Annotated[float, _quantity("mass")]
+MomentOfInertia = Annotated[float, _quantity("moment_of_inertia")]
+RotationalSpeed = Annotated[float, _quantity("rotational_speed")]
+Power = Annotated[float, _quantity("power")]
+Density = Annotated[float, _quantity("density")]
+KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
+Fraction = Annotated[float, _quantity("fraction")]
+Angle = Annotated[float, _quantity("angle")]
+Pressure = Annotated[float, _quantity("pressure")]
+AreaMoment = Annotated[float, _quantity("area_moment")]
+Area = Annotated[float, _quantity("area")]
+#: Plain numbers without a unit; strict so that ``true`` is not read as 1.
+Number = Annotated[float, Strict()]
+Count = Annotated[int, Strict()]
+
+
+class Section(BaseModel):
+    """A table of a unit file: unknown keys are errors, values are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)

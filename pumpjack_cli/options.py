@@ -1,0 +1,67 @@
+"""Options shared by the commands, defined once, and the one hand-over to the renderer.
+
+Imports nothing heavy: `pumpjack units` and every command's ``--help`` use it.
+"""
+
+from __future__ import annotations
+
+from enum import Enum
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from .render import emit
+from .results import Result
+
+
+class Format(str, Enum):
+    table = "table"
+    csv = "csv"
+    json = "json"
+
+
+class UnitSystem(str, Enum):
+    si = "si"
+    field = "field"
+
+
+class Rotation(str, Enum):
+    uniform = "uniform"
+    dynamic = "dynamic"
+
+
+FormatOption = Annotated[
+    Format | None,
+    typer.Option("--format", "-f", help="table, csv or json [default: table on a terminal, csv in a pipe]"),
+]
+OutputOption = Annotated[
+    Path | None,
+    typer.Option("--output", "-o", help="write to this file (atomically) instead of stdout", dir_okay=False),
+]
+PlotOption = Annotated[
+    Path | None,
+    typer.Option("--plot", help="also draw the curves to FILE.png, .svg or .pdf", dir_okay=False),
+]
+UnitsOption = Annotated[
+    UnitSystem,
+    typer.Option("--units", help="si (m, m/s, N, N·m) or field (in, ft/s, lbf, lbf·in)"),
+]
+UnitArgument = Annotated[str, typer.Argument(help="bundled unit name (see `pumpjack units`) or path to a unit file")]
+CardOption = Annotated[Path, typer.Option("--card", help="dynamometer card CSV (see docs/cards.md)", dir_okay=False)]
+CardUnitsOption = Annotated[
+    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
+]
+SpmOption = Annotated[
+    float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)
+]
+StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
+RotationOption = Annotated[Rotation, typer.Option(
+    "--rotation", help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the periodic "
+    "motion from the machine's equation of motion under this card (as `pumpjack dynamics --card`)")]
+
+
+def output(result: Result, shown: tuple[str, ...], fmt: Format | None, units: UnitSystem, out: Path | None,
+           plot: Path | None) -> None:
+    """Hand a result to the renderer, with the columns ``shown`` in the terminal table."""
+    emit(result.showing(shown), fmt.value if fmt else None, units.value, out, plot)

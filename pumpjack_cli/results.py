@@ -1,0 +1,85 @@
+"""What every analysis returns: a titled table of SI columns, summary values and plot panels.
+
+A :class:`Result` declares each output column once, with its name, quantity kind,
+description and values; the renderer (:mod:`pumpjack_cli.render`) turns it into a
+terminal table, CSV, JSON or a plot, and the commands only choose which columns the
+terminal table shows by default (:meth:`Result.showing`). Names follow
+``docs/glossary.md``; the renderer adds the unit suffix of the chosen unit system.
+
+This module imports nothing heavy: values may be numpy arrays or lists of text.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+#: Quantity kind of a text column (no unit, no conversion).
+TEXT = "text"
+
+
+@dataclass(frozen=True)
+class Column:
+    """A per-row series: name, quantity kind (:data:`pumpjack_cli.quantities.OUTPUT_QUANTITIES`
+    or :data:`TEXT`), description and values (SI). ``brief`` columns are the ones the
+    terminal table shows; CSV, JSON and plots carry every column."""
+
+    name: str
+    quantity: str
+    description: str
+    values: Any
+    brief: bool = False
+
+
+@dataclass(frozen=True)
+class Scalar:
+    """One summary value (SI) with its quantity kind and description."""
+
+    name: str
+    quantity: str
+    value: float
+    description: str
+
+
+@dataclass(frozen=True)
+class Panel:
+    """One plot panel: solid curves and dashed curves (column names) against the first column."""
+
+    title: str
+    solid: tuple[str, ...]
+    dashed: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Result:
+    """Everything a command outputs: a title, summary values, columns and plot panels, SI."""
+
+    title: str
+    summary: tuple[Scalar, ...]
+    columns: tuple[Column, ...]
+    panels: tuple[Panel, ...] = ()
+
+    def column(self, name: str) -> Column:
+        """The column called ``name``."""
+        return next(c for c in self.columns if c.name == name)
+
+    def showing(self, names: Iterable[str]) -> Result:
+        """The same result with exactly the columns ``names`` shown in the terminal table."""
+        shown = set(names)
+        unknown = shown - {c.name for c in self.columns}
+        if unknown:
+            raise KeyError(f"no column {', '.join(sorted(unknown))} in {self.title!r}")
+        return dataclasses.replace(
+            self, columns=tuple(dataclasses.replace(c, brief=c.name in shown) for c in self.columns))
+
+    @property
+    def rows(self) -> int:
+        """Number of rows (length of the first column; all columns have the same length)."""
+        return len(self.columns[0].values) if self.columns else 0
+
+
+def columns_from(table: Sequence[tuple[str, str, str, Any]]) -> tuple[Column, ...]:
+    """Columns from rows of (name, quantity, description, values), declared once each."""
+    return tuple(Column(name, quantity, description, values) for name, quantity, description, values in table)
