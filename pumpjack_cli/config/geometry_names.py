@@ -45,8 +45,9 @@ def canonical_geometry(data: dict[str, Any]) -> dict[str, Any]:
 
     Raises ValueError when a dimension is given twice or the API letters are incomplete.
 
-    >>> canonical_geometry({"A": "72 in", "K": 5.0, "I": 3.0, "rotation": "CW"})
-    {'front_arm': '72 in', 'horizontal_offset': 3.0, 'rotation': 'clockwise', 'vertical_offset': 4.0}
+    >>> fields = canonical_geometry({"A": "72 in", "K": 5.0, "I": 3.0, "rotation": "CW"})
+    >>> sorted(fields.items())   # vertical offset sqrt(5^2 - 3^2) = 4
+    [('front_arm', '72 in'), ('horizontal_offset', 3.0), ('rotation', 'clockwise'), ('vertical_offset', 4.0)]
     """
     data = dict(data)
     api_height = [key for key in ("H", "G", "K") if key in data]

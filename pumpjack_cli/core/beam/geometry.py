@@ -190,8 +190,11 @@ def assembly_angle(x: Any, y: Any, reach: Any, rear_arm: float, xp: Any = math) 
     cannot change during motion without passing a toggle, which :func:`check_assembly`
     excludes. ``xp`` is :mod:`math` for scalars or numpy for arrays.
 
-    >>> round(assembly_angle(-2.195, -3.0, 4.01, 2.5), 6)   # SK8: stretched dead position
-    -0.415225
+    SK8-3,5-4000 at its stretched (bottom) dead position, where the beam swings to
+    -23.8 degrees ([SK8Rotation2013] data, l1 horizontal, l2 vertical):
+
+    >>> round(math.degrees(assembly_angle(-2.195, -3.0, 3.0 + 1.01, 2.5)), 1)
+    -23.8
     """
     distance = xp.hypot(x, y)
     delta = xp.atan2(y, x)
