@@ -10,7 +10,7 @@ import math
 import pytest
 
 from pumpjack_cli.card_files import read_card
-from pumpjack_cli.analysis.inputs import machine as build_machine
+from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.periodic import steady_state
 from pumpjack_cli.core.sampling import crank_grid

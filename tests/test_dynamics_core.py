@@ -20,7 +20,7 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli.analysis.inputs import machine as build_machine
+from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import Card
 from pumpjack_cli.core.dynamics.coefficients import CardLoad, coefficients

@@ -133,7 +133,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_card):
     torque through the drive less what accelerates the drive's own inertia,
     M_z = u M_motor - I_drive eps1: two independent models (spatial kinetostatics,
     reduced-inertia equation of motion) must agree through the power balance."""
-    from pumpjack_cli.analysis.inputs import machine as build_machine
+    from pumpjack_cli.analysis.machine import machine as build_machine
     from pumpjack_cli.core.dynamics.periodic import steady_state
 
     code, out, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--steps", "90", "-f", "json")

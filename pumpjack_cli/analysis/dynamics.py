@@ -8,7 +8,8 @@ from ..core.dynamics.periodic import steady_state
 from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
-from .inputs import load_card, machine
+from .card_runs import load_card
+from .machine import machine
 
 #: Well-model forces of the summary: name, description.
 _WELL_FORCES = (

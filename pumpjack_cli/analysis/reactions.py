@@ -11,7 +11,9 @@ from ..core.sampling import largest_magnitude, signed_extremes
 from ..errors import PumpjackError
 from ..quantities import parse_quantity
 from ..results import Column, Panel, Result, Scalar
-from .inputs import CardRun, card_run, mass_model, require
+from .card_runs import CardRun, card_run
+from .inputs import require
+from .machine import mass_model
 
 #: Reaction vectors of the output: name, description.
 REACTIONS = {
