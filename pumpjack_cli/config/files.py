@@ -26,11 +26,14 @@ SUFFIXES = (".toml", ".yaml", ".yml", ".json")
 
 @dataclass(frozen=True)
 class Kind:
-    """A machine kind: the schema class (``module:Class`` under this package) and the
-    exact stroke [m] of a file's raw ``[geometry]`` table, computed without the schema."""
+    """A machine kind: the schema class (``module:Class`` under this package), the exact
+    stroke [m] of a file's raw ``[geometry]`` table computed without the schema, and
+    whether it is a beam pumping unit (a linkage driving a polished rod, which the
+    beam-unit commands accept)."""
 
     schema: str
     stroke: Callable[[dict], float]
+    beam_unit: bool
 
     def model(self) -> type:
         module, name = self.schema.split(":")
@@ -39,8 +42,9 @@ class Kind:
 
 #: Machine kinds a file can describe, by its top-level ``kind`` key (default beam-pump).
 UNIT_KINDS: dict[str, Kind] = {
-    "beam-pump": Kind("beam_unit:UnitConfig", lambda geometry: linkage_of(geometry).stroke),
-    "slider-crank": Kind("slider_crank:SliderCrankConfig", lambda geometry: slider_crank_of(**geometry).stroke),
+    "beam-pump": Kind("beam_unit:UnitConfig", lambda geometry: linkage_of(geometry).stroke, beam_unit=True),
+    "slider-crank": Kind("slider_crank:SliderCrankConfig", lambda geometry: slider_crank_of(**geometry).stroke,
+                         beam_unit=False),
 }
 DEFAULT_KIND = "beam-pump"
 
@@ -151,6 +155,6 @@ def load_any_unit(spec: str):
 def load_unit(spec: str):
     """A beam pumping unit by bundled name or file path; other machine kinds are an error."""
     config = load_any_unit(spec)
-    if config.kind != DEFAULT_KIND:
+    if not UNIT_KINDS[config.kind].beam_unit:
         raise ConfigError(f"{spec}: is a {config.kind} machine, not a beam pumping unit")
     return config

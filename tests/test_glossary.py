@@ -1,0 +1,70 @@
+"""Every output name of every command is in docs/glossary.md (one name per quantity).
+
+Each command runs with ``-f json``; every summary key and column key, stripped of the
+unit suffix of its system, must be a name the glossary lists in a code span. A code
+span may hold brace alternatives (``r{12,13}_{x,y}``), expanded here.
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from pumpjack_cli.quantities import OUTPUT_QUANTITIES
+
+GLOSSARY = Path(__file__).resolve().parents[1] / "docs" / "glossary.md"
+SK8_CARD = "samples/sk8-3.5-4000-card.csv"
+
+RUNS = [
+    ("units",),
+    ("kinematics", "sk8-3.5-4000", "--steps", "8"),
+    ("reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--steps", "8"),
+    ("compare-redundancy", "7sk12-2.5-5600", "--card", "samples/7sk12-2.5-5600-card.csv", "--spm", "8", "--steps", "8"),
+    ("dynamics", "sk8-3.5-4000", "--steps", "8"),
+    ("dynamics", "sk8-3.5-4000", "--steps", "8", "--card", SK8_CARD),
+    ("inertia-error", "unb-600a", "--steps", "8"),
+    ("inertia-error", "unb-600a", "--steps", "8", "--support-friction"),
+    ("inertia-error", "sk8-3.5-4000", "--steps", "8", "--mass", "100"),
+]
+
+
+def _expand(span: str) -> list[str]:
+    parts = re.split(r"\{([^}]*)\}", span)
+    choices = [[part] if i % 2 == 0 else part.split(",") for i, part in enumerate(parts)]
+    return ["".join(combo) for combo in itertools.product(*choices)]
+
+
+def glossary_names() -> set[str]:
+    text = GLOSSARY.read_text(encoding="utf-8")
+    return {name for span in re.findall(r"`([^`]+)`", text) for name in _expand(span)}
+
+
+def _base(key: str, system: str, names: set[str]) -> str:
+    if key in names:
+        return key
+    suffixes = sorted({units[system].suffix for units in OUTPUT_QUANTITIES.values() if units[system].suffix},
+                      key=len, reverse=True)
+    for suffix in suffixes:
+        if key.endswith("_" + suffix):
+            return key[: -len(suffix) - 1]
+    return key
+
+
+def test_brace_expansion():
+    assert _expand("r{12,13}_{x,y}") == ["r12_x", "r12_y", "r13_x", "r13_y"]
+
+
+@pytest.mark.parametrize("argv", RUNS, ids=lambda argv: " ".join(argv[:2]))
+@pytest.mark.parametrize("system", ["si", "field"])
+def test_every_output_name_is_in_the_glossary(run_cli, argv, system):
+    code, out, err = run_cli(*argv, "-f", "json", "--units", system)
+    assert code == 0, err
+    document = json.loads(out)
+    names = glossary_names()
+    keys = list(document["summary"]) + list(document["columns"])
+    missing = sorted({key for key in keys if _base(key, system, names) not in names})
+    assert not missing, f"not in docs/glossary.md: {missing}"
