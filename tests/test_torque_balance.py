@@ -165,3 +165,14 @@ def test_counterweight_moment_below_the_arms_alone():
         counterweight_placement(-1.0, masses, (0.0, 2.0))
     with pytest.raises(TorqueError, match="slot range"):
         counterweight_placement(1.0, masses, (2.0, 1.0))
+
+
+@pytest.mark.parametrize("call", [
+    lambda: min_peak_moment(np.array([1.0, np.nan]), np.array([1.0, -1.0])),
+    lambda: min_rms_moment(np.array([1.0, 2.0]), np.array([np.inf, 1.0])),
+    lambda: equal_peaks_moment(np.array([1.0]), np.array([1.0]), np.array([True])),
+    lambda: min_rms_moment(np.array([1.0, 2.0]), np.array([1.0, 1.0]), weights=np.array([1.0, -1.0])),
+])
+def test_optimisers_reject_bad_arrays(call):
+    with pytest.raises(TorqueError):
+        call()

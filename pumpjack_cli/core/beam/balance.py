@@ -36,6 +36,14 @@ def balance_criteria() -> tuple[str, ...]:
     return BALANCE_CRITERIA
 
 
+def _check(name: str, base: np.ndarray, sine: np.ndarray) -> None:
+    """Raise TorqueError unless base and sine are finite 1-D arrays of one length >= 2."""
+    if base.ndim != 1 or base.shape != sine.shape or base.size < 2:
+        raise TorqueError(f"{name}: torque and sine must be 1-D arrays of one length, at least 2 crank angles")
+    if not (np.all(np.isfinite(base)) and np.all(np.isfinite(sine))):
+        raise TorqueError(f"{name}: the torque is not finite at every crank angle")
+
+
 def _lines(base: np.ndarray, sine: np.ndarray, moment: float) -> np.ndarray:
     return base - moment * sine
 
@@ -102,9 +110,11 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     >>> equal_peaks_moment(np.array([10.0, -4.0]), np.array([1.0, -1.0]), np.array([True, False]))
     7.0
     """
-    if not np.any(upstroke) or np.all(upstroke):
-        raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("equal peak torques", base, sine)
     up = np.asarray(upstroke, dtype=bool)
+    if up.shape != base.shape or not np.any(up) or np.all(up):
+        raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
     down = ~up
 
     def g(moment: float) -> float:
@@ -180,7 +190,11 @@ def min_rms_moment(base: np.ndarray, sine: np.ndarray, weights: np.ndarray | Non
     >>> min_rms_moment(np.array([1.0, 3.0]), np.array([1.0, 1.0]))
     2.0
     """
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("minimum RMS torque", base, sine)
     w = np.ones_like(base) if weights is None else np.asarray(weights, dtype=float)
+    if w.shape != base.shape or not np.all(np.isfinite(w)) or np.any(w < 0):
+        raise TorqueError("minimum RMS torque: the weights must be finite, >= 0, one per crank angle")
     denominator = float(np.sum(w * sine * sine))
     if not denominator > 0:
         raise TorqueError("minimum RMS torque: sin(theta - tau) vanishes at every crank angle given")
@@ -218,6 +232,9 @@ def min_peak_moment(base: np.ndarray, sine: np.ndarray) -> float:
     >>> min_peak_moment(np.array([10.0, -4.0]), np.array([1.0, -1.0]))
     7.0
     """
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("minimum peak torque", base, sine)
+
     def active(moment: float) -> tuple[int, float]:
         torque = _lines(base, sine, moment)
         i = int(np.argmax(np.abs(torque)))
@@ -325,6 +342,9 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     if not np.all(np.isfinite(base)):
         raise TorqueError("balance: the rod load or the extra torque is not finite at every crank angle")
     sine = np.sin(theta - balance.offset)
+    if weights is not None and (np.shape(weights) != theta.shape or not np.all(np.isfinite(weights))
+                                or np.any(np.asarray(weights) < 0) or not np.sum(weights) > 0):
+        raise TorqueError("balance: the weights must be finite, >= 0, not all 0, one per crank angle")
     up = upstroke_mask(linkage, theta)
     note = ""
     if criterion == "equal-peaks":

@@ -5,7 +5,7 @@
 * structure loading = 100 max W / W_rated, W the polished-rod load;
 * stroke = 100 S / S_max;
 * polished-rod power P_pr = (work per cycle) x (cycles per second), the work being the
-  area of the card, the closed integral of W ds [J] ([Gault]: card area = work);
+  area of the card, the closed integral of W ds [J] (the work of the polished-rod force);
 * cyclic load factor CLF = T_rms / T_mean, the ratio of the RMS to the average net
   gearbox torque over the cycle ([DurhamLockard1988]). At uniform crank speed
   T_mean = (card work) / 2 pi (the counterbalance and the structure do no net work),
@@ -56,7 +56,7 @@ def card_work(linkage: Linkage, card: Card) -> float:
 
     References
     ----------
-    [Gault] (card area = work per stroke).
+    [API11E] (polished-rod load and position); work of a force along its path.
     """
     s = linkage.front_arm * linkage.motion(card.crank_angle).beam_angle
     w = np.asarray(card.load, dtype=float)
@@ -139,7 +139,7 @@ def loading(net_torque: np.ndarray, card: Card, linkage: Linkage, cycles_per_sec
 
     References
     ----------
-    [API11E]; [DurhamLockard1988]; [Gault].
+    [API11E]; [DurhamLockard1988].
 
     Examples
     --------

@@ -57,7 +57,7 @@ def _finite(name: str, *arrays: np.ndarray) -> None:
 
 
 def torque_factor(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
-    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]).
+    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]; [Kretzer]).
 
     >>> from pumpjack_cli.core.beam.geometry import Linkage
     >>> lk = Linkage(72, 64, 24, 74.5, 64, 116 - 41)   # C-114D-133-54, inches ([Guo2007] Table 12.1)
