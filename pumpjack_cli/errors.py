@@ -21,3 +21,11 @@ class GeometryError(PumpjackError, ValueError):
 
 class DynamicsError(PumpjackError, ValueError):
     """A machine whose motion cannot be computed: inertia, motor, well data or a failed solve."""
+
+
+class DesignationError(PumpjackError, ValueError):
+    """A pumping-unit designation that is neither an API Spec 11E nor a GOST 5866-76 one."""
+
+
+class TorqueError(PumpjackError, ValueError):
+    """Gearbox-torque, counterbalance or loading input that cannot give a result."""

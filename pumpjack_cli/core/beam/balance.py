@@ -1,0 +1,370 @@
+"""The counterbalance moment that best balances a card: equal stroke peaks, least RMS
+torque, least peak torque.
+
+The API net torque (:mod:`.counterbalance`) is affine in the counterbalance moment M:
+T_i(M) = a_i - M s_i with a_i = TF_i (W_i - B) (+ any torque that does not depend on M)
+and s_i = sin(theta_i - tau), on a grid of crank angles theta_i. Every criterion is
+therefore a one-dimensional problem in M that is solved exactly on the grid (no scan):
+the RMS in closed form, the peak and the stroke peaks as maxima of affine functions
+(convex, piecewise linear), by bisection to the float resolution and the exact
+intersection of the active lines.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import TorqueError
+from .counterbalance import Counterbalance, counterbalance_effect, upstroke_mask
+from .linkage import Linkage
+
+#: Balance criteria of :func:`recommend_counterbalance`.
+BALANCE_CRITERIA = ("equal-peaks", "min-rms", "min-peak")
+
+#: Bisection steps of the 1-D searches (each halves the bracket; 200 reach the float
+#: resolution from any bracket a double can hold).
+_BISECTIONS = 200
+#: Samples of the equal-peaks function over [0, M_hi] to find every sign change.
+_ROOT_SAMPLES = 257
+
+
+def balance_criteria() -> tuple[str, ...]:
+    """Names of the balance criteria: ``equal-peaks``, ``min-rms``, ``min-peak``."""
+    return BALANCE_CRITERIA
+
+
+def _check(name: str, base: np.ndarray, sine: np.ndarray) -> None:
+    """Raise TorqueError unless base and sine are finite 1-D arrays of one length >= 2."""
+    if base.ndim != 1 or base.shape != sine.shape or base.size < 2:
+        raise TorqueError(f"{name}: torque and sine must be 1-D arrays of one length, at least 2 crank angles")
+    if not (np.all(np.isfinite(base)) and np.all(np.isfinite(sine))):
+        raise TorqueError(f"{name}: the torque is not finite at every crank angle")
+
+
+def _lines(base: np.ndarray, sine: np.ndarray, moment: float) -> np.ndarray:
+    return base - moment * sine
+
+
+def _stroke_peaks(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray, moment: float) -> tuple[float, float, int, int]:
+    """Largest net torque of the upstroke and of the downstroke at ``moment``, and where."""
+    torque = _lines(base, sine, moment)
+    up = np.flatnonzero(upstroke)
+    down = np.flatnonzero(~upstroke)
+    i, j = up[np.argmax(torque[up])], down[np.argmax(torque[down])]
+    return float(torque[i]), float(torque[j]), int(i), int(j)
+
+
+def _asymptote(base: np.ndarray, sine: np.ndarray) -> tuple[float, float, float]:
+    """Slope -s*, intercept a* of max_i (a_i - M s_i) for large M, and the M beyond which it holds.
+
+    The dominant line has the smallest s (the largest a among ties); it lies above line i
+    for M > (a_i - a*)/(s_i - s*).
+    """
+    smallest = float(np.min(sine))
+    ties = sine == smallest
+    top = float(np.max(base[ties]))
+    others = ~ties
+    crossing = float(np.max((base[others] - top) / (sine[others] - smallest))) if np.any(others) else 0.0
+    return smallest, top, crossing
+
+
+def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> float | None:
+    """M >= 0 at which the largest net torques of the up- and the downstroke are equal.
+
+    With T_i(M) = a_i - M s_i (a = net torque without counterbalance, s = sin(theta -
+    tau)), U(M) = max over the upstroke of T and D(M) = max over the downstroke are
+    convex piecewise-linear; g = U - D is piecewise-linear but need not be monotonic.
+    Every sign change of g on [0, M_hi] (M_hi: beyond it both maxima follow their
+    asymptotic lines, so g is linear) is bracketed on a grid of samples and bisected to
+    the float resolution; the root is then made exact by intersecting the active lines
+    when they are the same at both ends of the final bracket. A root beyond M_hi is
+    the exact root of the linear tail. Of several roots the one with the smallest
+    largest |T| is returned; None when g has no root at M >= 0 (the criterion cannot
+    be met by any counterbalance).
+
+    Parameters
+    ----------
+    base : ndarray
+        a_i, net torque without the counterbalance term [N·m], per crank angle.
+    sine : ndarray
+        s_i = sin(theta_i - tau).
+    upstroke : ndarray of bool
+        True on the upstroke; both strokes must hold samples.
+
+    Returns
+    -------
+    float or None
+        M [N·m].
+
+    References
+    ----------
+    Equal peak torques on both strokes: [Rowlan2004] (balanced gearbox loading).
+
+    Examples
+    --------
+    T = 10 - M on the upstroke, -4 + M on the downstroke: equal at M = 7.
+
+    >>> equal_peaks_moment(np.array([10.0, -4.0]), np.array([1.0, -1.0]), np.array([True, False]))
+    7.0
+    """
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("equal peak torques", base, sine)
+    up = np.asarray(upstroke, dtype=bool)
+    if up.shape != base.shape or not np.any(up) or np.all(up):
+        raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
+    down = ~up
+
+    def g(moment: float) -> float:
+        u, d, _, _ = _stroke_peaks(base, sine, up, moment)
+        return u - d
+
+    su, au, cu = _asymptote(base[up], sine[up])
+    sd, ad, cd = _asymptote(base[down], sine[down])
+    m_hi = max(cu, cd, 0.0)
+    grid = np.linspace(0.0, m_hi, _ROOT_SAMPLES) if m_hi > 0 else np.zeros(1)
+    torque = base[None, :] - grid[:, None] * sine[None, :]
+    values = np.max(np.where(up, torque, -np.inf), axis=1) - np.max(np.where(down, torque, -np.inf), axis=1)
+    roots = [float(m) for m, v in zip(grid, values) if v == 0.0]
+    for k in np.flatnonzero(values[:-1] * values[1:] < 0):
+        roots.append(_bisect_root(g, float(grid[k]), float(grid[k + 1]), base, sine, up))
+    slope = sd - su
+    if slope != 0.0:
+        tail = m_hi - float(values[-1]) / slope
+        if tail > m_hi:
+            roots.append(tail)
+    if not roots:
+        return None
+    return min(roots, key=lambda m: float(np.max(np.abs(_lines(base, sine, m)))))
+
+
+def _bisect_root(g, lo: float, hi: float, base: np.ndarray, sine: np.ndarray, up: np.ndarray) -> float:
+    """Root of the piecewise-linear g in [lo, hi] (g(lo) g(hi) < 0), exact on the final piece."""
+    g_lo = g(lo)
+    for _ in range(_BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            break
+        g_mid = g(mid)
+        if g_mid == 0.0:
+            return mid
+        if (g_mid > 0) == (g_lo > 0):
+            lo, g_lo = mid, g_mid
+        else:
+            hi = mid
+    _, _, iu_lo, id_lo = _stroke_peaks(base, sine, up, lo)
+    _, _, iu_hi, id_hi = _stroke_peaks(base, sine, up, hi)
+    if iu_lo == iu_hi and id_lo == id_hi and sine[iu_lo] != sine[id_lo]:
+        return float((base[iu_lo] - base[id_lo]) / (sine[iu_lo] - sine[id_lo]))
+    return 0.5 * (lo + hi)
+
+
+def min_rms_moment(base: np.ndarray, sine: np.ndarray, weights: np.ndarray | None = None) -> float:
+    """M minimising the RMS net torque (closed form; may be negative, the caller clamps).
+
+    T = a - M s is affine in M, so mean(w T^2) is a parabola in M with its minimum at
+    M = mean(w a s) / mean(w s^2); w are time weights (uniform crank speed: all equal).
+
+    Parameters
+    ----------
+    base : ndarray
+        a_i [N·m].
+    sine : ndarray
+        s_i = sin(theta_i - tau).
+    weights : ndarray, optional
+        Time share of each sample (dt_i); None for a uniform crank-angle grid at uniform speed.
+
+    Returns
+    -------
+    float
+        M [N·m].
+
+    References
+    ----------
+    Minimum RMS torque balance (motor heating): [DurhamLockard1988].
+
+    Examples
+    --------
+    >>> min_rms_moment(np.array([1.0, 3.0]), np.array([1.0, 1.0]))
+    2.0
+    """
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("minimum RMS torque", base, sine)
+    w = np.ones_like(base) if weights is None else np.asarray(weights, dtype=float)
+    if w.shape != base.shape or not np.all(np.isfinite(w)) or np.any(w < 0):
+        raise TorqueError("minimum RMS torque: the weights must be finite, >= 0, one per crank angle")
+    denominator = float(np.sum(w * sine * sine))
+    if not denominator > 0:
+        raise TorqueError("minimum RMS torque: sin(theta - tau) vanishes at every crank angle given")
+    return float(np.sum(w * base * sine)) / denominator
+
+
+def min_peak_moment(base: np.ndarray, sine: np.ndarray) -> float:
+    """M >= 0 minimising max |a_i - M s_i| (exact 1-D minimisation of a convex piecewise-linear function).
+
+    f(M) = max_i |a_i - M s_i| is convex; its minimiser lies in [0, 2 max|a| / max|s|]
+    (f(M) >= |M| max|s| - max|a| and f(0) = max|a|). Bisection on the sign of the
+    subgradient -sigma_i s_i of the active line i (sigma_i its sign) brackets the kink;
+    the two active lines at the ends of the final bracket are intersected exactly.
+
+    Parameters
+    ----------
+    base : ndarray
+        a_i [N·m].
+    sine : ndarray
+        s_i = sin(theta_i - tau).
+
+    Returns
+    -------
+    float
+        M [N·m]; 0 when the unconstrained optimum would be negative.
+
+    References
+    ----------
+    Minimum peak torque balance: [Rowlan2004]; convexity of a maximum of affine functions.
+
+    Examples
+    --------
+    max(|10 - M|, |-4 + M|) is smallest (7) at M = 7:
+
+    >>> min_peak_moment(np.array([10.0, -4.0]), np.array([1.0, -1.0]))
+    7.0
+    """
+    base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
+    _check("minimum peak torque", base, sine)
+
+    def active(moment: float) -> tuple[int, float]:
+        torque = _lines(base, sine, moment)
+        i = int(np.argmax(np.abs(torque)))
+        return i, (1.0 if torque[i] >= 0 else -1.0)
+
+    def slope(moment: float) -> float:
+        i, sign = active(moment)
+        return -sign * float(sine[i])
+
+    def f(moment: float) -> float:
+        return float(np.max(np.abs(_lines(base, sine, moment))))
+
+    scale = float(np.max(np.abs(sine)))
+    if not scale > 0:
+        raise TorqueError("minimum peak torque: sin(theta - tau) vanishes at every crank angle given")
+    lo, hi = 0.0, 2.0 * float(np.max(np.abs(base))) / scale
+    if slope(lo) >= 0.0 or hi == 0.0:
+        return 0.0
+    for _ in range(_BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        if mid <= lo or mid >= hi:
+            break
+        s_mid = slope(mid)
+        if s_mid == 0.0:
+            return mid
+        if s_mid < 0:
+            lo = mid
+        else:
+            hi = mid
+    (i, si), (j, sj) = active(lo), active(hi)
+    candidates = [lo, hi]
+    denominator = si * sine[i] - sj * sine[j]
+    if i != j and denominator != 0.0:
+        kink = float((si * base[i] - sj * base[j]) / denominator)
+        if lo - (hi - lo) <= kink <= hi + (hi - lo):
+            candidates.append(kink)
+    return min(candidates, key=f)
+
+
+@dataclass(frozen=True)
+class BalanceRecommendation:
+    """The counterbalance moment a criterion asks for and the loading it gives (SI).
+
+    ``moment`` M [N·m] (None when the criterion cannot be met, ``note`` says why);
+    ``peak_net_torque`` max |T| [N·m]; ``upstroke_peak``, ``downstroke_peak``: the
+    largest T of each stroke [N·m]; ``rms_torque`` [N·m]; ``counterbalance_effect``
+    CBE [N] at the test angle; B and tau are those given.
+    """
+
+    criterion: str
+    moment: float | None
+    peak_net_torque: float | None
+    upstroke_peak: float | None
+    downstroke_peak: float | None
+    rms_torque: float | None
+    counterbalance_effect: float | None
+    note: str
+
+
+def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.ndarray, rod_load: np.ndarray,
+                             balance: Counterbalance, *, extra_torque: np.ndarray | float = 0.0,
+                             weights: np.ndarray | None = None, test_angle: float = math.pi / 2) -> BalanceRecommendation:
+    """The counterbalance moment M that meets ``criterion`` for a card, with B and tau kept.
+
+    T(theta; M) = TF (W - B) + T_extra - M sin(theta - tau) is affine in M:
+
+    * ``equal-peaks``: the largest T of the upstroke equals that of the downstroke
+      (:func:`equal_peaks_moment`);
+    * ``min-rms``: the smallest RMS of T (:func:`min_rms_moment`), clamped at M >= 0;
+    * ``min-peak``: the smallest max |T| (:func:`min_peak_moment`).
+
+    Parameters
+    ----------
+    criterion : str
+        One of :data:`BALANCE_CRITERIA`.
+    linkage : Linkage
+        The unit (torque factors, dead positions).
+    crank_angle : ndarray
+        theta [rad]; a uniform grid over one revolution unless ``weights`` are given.
+    rod_load : ndarray
+        W [N] at those angles.
+    balance : Counterbalance
+        B [N] and tau [rad] are used; its M is ignored.
+    extra_torque : ndarray or float
+        Further torque terms that do not change with M [N·m] (e.g. the inertia terms of
+        :func:`.torque.torque_components`); 0 for the API method.
+    weights : ndarray, optional
+        Time share of each sample for the RMS (non-uniform speed).
+    test_angle : float
+        theta_t of the counterbalance effect [rad].
+
+    Returns
+    -------
+    BalanceRecommendation
+
+    References
+    ----------
+    [Rowlan2004]; [API11E]; [DurhamLockard1988].
+    """
+    if criterion not in BALANCE_CRITERIA:
+        raise TorqueError(f"unknown balance criterion {criterion!r}; use one of {', '.join(BALANCE_CRITERIA)}")
+    theta = np.asarray(crank_angle, dtype=float)
+    tf = linkage.front_arm * linkage.motion(theta).beam_rate
+    base = tf * (np.asarray(rod_load, dtype=float) - balance.structural_unbalance) + extra_torque
+    if not np.all(np.isfinite(base)):
+        raise TorqueError("balance: the rod load or the extra torque is not finite at every crank angle")
+    sine = np.sin(theta - balance.offset)
+    if weights is not None and (np.shape(weights) != theta.shape or not np.all(np.isfinite(weights))
+                                or np.any(np.asarray(weights) < 0) or not np.sum(weights) > 0):
+        raise TorqueError("balance: the weights must be finite, >= 0, not all 0, one per crank angle")
+    up = upstroke_mask(linkage, theta)
+    note = ""
+    if criterion == "equal-peaks":
+        moment = equal_peaks_moment(base, sine, up)
+        if moment is None:
+            u, d, _, _ = _stroke_peaks(base, sine, up, 0.0)
+            return BalanceRecommendation(criterion, None, None, None, None, None, None,
+                                         f"no counterbalance moment M >= 0 makes the stroke peaks equal "
+                                         f"(at M = 0 the upstroke peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)")
+    elif criterion == "min-rms":
+        moment = min_rms_moment(base, sine, weights)
+        if moment < 0:
+            note = f"the RMS torque is least at M = {moment:.6g} N·m < 0; M = 0 is the best counterbalance"
+            moment = 0.0
+    else:
+        moment = min_peak_moment(base, sine)
+    torque = _lines(base, sine, moment)
+    u, d, _, _ = _stroke_peaks(base, sine, up, moment)
+    w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
+    rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
+    tf_test = float(linkage.front_arm * linkage.motion(np.array([test_angle])).beam_rate[0])
+    cbe = counterbalance_effect(tf_test, balance._replace(moment=moment), test_angle)
+    return BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note)

@@ -1,0 +1,228 @@
+"""Counterbalance of a crank-balanced beam pumping unit: B, M and tau from the masses,
+the counterbalance effect, and the counterweight placement that realises a moment (the
+moment that best balances a card is :mod:`.balance`).
+
+Conventions (those of the whole package, :mod:`.geometry`): crank angle theta from 12
+o'clock in the direction of rotation, well to the right; net gearbox torque T positive
+when the gearbox drives the crank in its direction of rotation (the sign of
+:attr:`.kinetostatics.Reactions.balancing_torque`); torque factor TF = A psi' = ds/dtheta,
+positive on the upstroke of a conventional unit; polished-rod load W positive pulling
+the horsehead down. The API net torque is then ([API11E]; [Rowlan2004] method 1)
+
+    T(theta) = TF(theta) (W(theta) - B) - M sin(theta - tau)
+
+* B, structural unbalance [N]: the force that must act *downwards* at the polished rod
+  to hold the walking beam level with the pitmans disconnected from the crank pins
+  (they then hang from the equalizer pins, at the rear-arm distance C behind the centre
+  bearing). Positive for a rear-heavy beam, whose weight helps lift the rods.
+* M, maximum counterbalance moment [N·m]: the gravity moment of both crank arms and all
+  counterweights about the crank shaft when their resultant is horizontal.
+* tau, crank offset [rad]: the angle by which the resultant of crank arms and
+  counterweights *lags* the crank pin, measured against the direction of rotation;
+  0 when the counterweights sit on the crank arm in line with the pin (every
+  conventional unit). With the package's ``counterweight_phase`` phi (angle from the
+  pin to the blocks, *in* the direction of rotation) and no crank-arm mass, tau = -phi.
+  Sources write the sign before tau differently (sin(theta - tau) or sin(theta + tau));
+  this module's definition is fixed by the geometry above and tested against the
+  spatial kinetostatics.
+
+The counterbalance term: the potential energy of crank arms and counterweights is
+V = g sum m_i r_i cos(theta + phi_i) (heights above the shaft), so the gearbox torque
+that holds them is dV/dtheta = -g sum m_i r_i sin(theta + phi_i) = -M sin(theta - tau)
+with M exp(-i tau) = g sum m_i r_i exp(i phi_i).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+
+from ...errors import TorqueError
+from ..constants import STANDARD_GRAVITY
+from .linkage import Linkage
+from .masses import MassModel
+
+class Counterbalance(NamedTuple):
+    """Structural unbalance B [N], maximum counterbalance moment M [N·m], crank offset tau [rad]."""
+
+    structural_unbalance: float
+    moment: float
+    offset: float = 0.0
+
+
+def counterbalance_from_masses(linkage: Linkage, masses: MassModel, gravity: float = STANDARD_GRAVITY) -> Counterbalance:
+    """B, M and tau of a unit from the masses of its links.
+
+    B = g [(m_eq + 2 m_p) C - m_b x_b - m_h x_h] / A: the beam group level (psi = 0),
+    both pitmans hanging whole from the equalizer pins at the rear-arm distance C, the
+    beam body and horsehead centres of mass at x_b, x_h from the centre bearing (towards
+    the well positive), the equalizer at D. M exp(-i tau) = g (2 m_a r_a + m_cw r_cw
+    exp(i phi)): both crank arms in line with the pin, all counterweights at phase phi.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        Front arm A [m] and rear arm C [m] are used.
+    masses : MassModel
+        Link masses [kg] and centres of mass [m].
+    gravity : float
+        g [m/s²].
+
+    Returns
+    -------
+    Counterbalance
+        B [N], M [N·m], tau [rad].
+
+    References
+    ----------
+    [API11E] (definitions of B and M); [Rowlan2004].
+
+    Examples
+    --------
+    Only counterweights, 1000 kg at 1 m in line with the pin: M = 9806.65 N·m, tau = 0;
+    a beam body of 100 kg at 2 m towards the well, A = 4 m: B = -9.80665·200/4 = -490.3 N.
+
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> lk = Linkage(4.0, 2.5, 1.0, 3.0, 2.2, 3.0)
+    >>> m = MassModel(0, 0, 0, 1000.0, 1.0, 0.0, 0, 0, 0, 0, 0, 0, 100.0, 2.0, 0, 0, 0, 0)
+    >>> [round(v, 2) for v in counterbalance_from_masses(lk, m)]
+    [-490.33, 9806.65, 0.0]
+    """
+    rear = (masses.equalizer_mass + 2.0 * masses.pitman_mass) * linkage.rear_arm
+    front = masses.beam_mass * masses.beam_cg + masses.horsehead_mass * masses.horsehead_cg
+    arms = 2.0 * masses.crank_arm_mass * masses.crank_arm_cg
+    weights = masses.counterweight_mass * masses.counterweight_radius
+    x = arms + weights * math.cos(masses.counterweight_phase)
+    y = weights * math.sin(masses.counterweight_phase)
+    offset = 0.0 - math.atan2(y, x)
+    return Counterbalance(gravity * (rear - front) / linkage.front_arm, gravity * math.hypot(x, y), offset)
+
+
+def counterbalance_effect(torque_factor_at_test: float, balance: Counterbalance, test_angle: float = math.pi / 2) -> float:
+    """Counterbalance effect CBE [N]: the polished-rod load the counterbalance holds at the test angle.
+
+    From T = 0 at theta_t: CBE = B + M sin(theta_t - tau) / TF(theta_t). The usual test
+    position is the crank horizontal on the upstroke, theta_t = 90 deg ([Rowlan2004]).
+
+    Parameters
+    ----------
+    torque_factor_at_test : float
+        TF(theta_t) [m]; must not vanish.
+    balance : Counterbalance
+        B [N], M [N·m], tau [rad].
+    test_angle : float
+        theta_t [rad].
+
+    Returns
+    -------
+    float
+        CBE [N].
+
+    References
+    ----------
+    [Rowlan2004]; [API11E].
+
+    Examples
+    --------
+    B = 1000 N, M = 50 kN·m, tau = 0, TF(90 deg) = 1.25 m: CBE = 1000 + 50 000/1.25 = 41 000 N.
+
+    >>> counterbalance_effect(1.25, Counterbalance(1000.0, 50e3, 0.0))
+    41000.0
+    """
+    if not abs(torque_factor_at_test) > 0 or not math.isfinite(torque_factor_at_test):
+        raise TorqueError(f"counterbalance effect: the torque factor at the test angle "
+                          f"{math.degrees(test_angle):.4g} deg is {torque_factor_at_test:.4g} m; "
+                          f"choose a test angle away from the dead positions")
+    return balance.structural_unbalance + balance.moment * math.sin(test_angle - balance.offset) / torque_factor_at_test
+
+
+# --- realising a moment with counterweight blocks ----------------------------------
+
+
+@dataclass(frozen=True)
+class CounterweightPlacement:
+    """Where the counterweights must sit for a moment M (point masses, as :class:`MassModel`).
+
+    ``radius`` [m]: crank shaft to the blocks' centre of mass with the present blocks,
+    None when no radius gives M (the crank arms alone exceed it); ``mass`` [kg]: total
+    counterweight mass needed at the present radius, None when none does;
+    ``within_range``: the radius lies in [r_min, r_max]; ``note``: why not, or empty.
+    """
+
+    radius: float | None
+    mass: float | None
+    within_range: bool
+    note: str
+
+
+def _magnitude_root(c: float, phase: float, target: float, per_unit: float) -> float | None:
+    """x >= 0 with |c + per_unit x exp(i phase)| = target (the positive root of a quadratic), or None."""
+    disc = target * target - (c * math.sin(phase)) ** 2
+    if disc < 0 or not per_unit > 0:
+        return None
+    x = (-c * math.cos(phase) + math.sqrt(disc)) / per_unit
+    return x if x >= 0 else None
+
+
+def counterweight_placement(moment: float, masses: MassModel, radius_range: tuple[float, float],
+                            gravity: float = STANDARD_GRAVITY) -> CounterweightPlacement:
+    """Counterweight radius (with the present blocks) and total mass (at the present radius) giving M.
+
+    Solves |2 m_a r_a + m_cw r_cw exp(i phi)| = M/g for r_cw (blocks fixed) and for m_cw
+    (radius fixed), phi the counterweight phase; with phi != 0 the crank offset tau
+    changes with them (see :func:`counterbalance_from_masses`).
+
+    Parameters
+    ----------
+    moment : float
+        M [N·m], >= 0.
+    masses : MassModel
+        Crank arms and counterweights [kg, m, rad].
+    radius_range : (float, float)
+        r_min, r_max [m]: the slot range of the blocks on the crank arm.
+    gravity : float
+        g [m/s²].
+
+    Returns
+    -------
+    CounterweightPlacement
+
+    References
+    ----------
+    [API11E] (M from crank arms and counterweights).
+
+    Examples
+    --------
+    M = 9806.65 N·m, 1000 kg of blocks, massless arms: r = 1 m; 0.8 m at most fits:
+
+    >>> m = MassModel(0, 0, 0, 1000.0, 0.9, 0.0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0)
+    >>> p = counterweight_placement(9806.65, m, (0.3, 0.8))
+    >>> round(p.radius, 6), round(p.mass, 3), p.within_range
+    (1.0, 1111.111, False)
+    """
+    r_min, r_max = radius_range
+    if not (math.isfinite(moment) and moment >= 0):
+        raise TorqueError(f"counterweight placement: the counterbalance moment is {moment!r} N·m; it must be >= 0")
+    if not (0 <= r_min <= r_max and math.isfinite(r_max)):
+        raise TorqueError(f"counterweight placement: slot range [{r_min!r}, {r_max!r}] m is not 0 <= r_min <= r_max")
+    arms = 2.0 * masses.crank_arm_mass * masses.crank_arm_cg
+    target = moment / gravity
+    radius = _magnitude_root(arms, masses.counterweight_phase, target, masses.counterweight_mass)
+    mass = _magnitude_root(arms, masses.counterweight_phase, target, masses.counterweight_radius)
+    if radius is None:
+        note = (f"no counterweight radius gives {moment:.6g} N·m with {masses.counterweight_mass:.6g} kg of blocks: "
+                f"the crank arms alone give {gravity * arms:.6g} N·m")
+        return CounterweightPlacement(None, mass, False, note)
+    within = r_min <= radius <= r_max
+    note = "" if within else (f"the blocks would have to sit at {radius:.4g} m, outside the slots "
+                              f"[{r_min:.4g}, {r_max:.4g}] m; change the number of blocks")
+    return CounterweightPlacement(radius, mass, within, note)
+
+
+def upstroke_mask(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
+    """True at crank angles [rad] on the upstroke: from the bottom dead position through the upstroke travel."""
+    dead = linkage.dead_positions()
+    return ((np.asarray(crank_angle, dtype=float) - dead.crank_angle_bottom) % (2.0 * np.pi)) < dead.upstroke_crank_travel

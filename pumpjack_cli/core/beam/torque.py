@@ -1,0 +1,383 @@
+"""Net gearbox torque of a beam pumping unit from a dynamometer card: the API 11E
+torque-factor method, its decomposition with non-uniform crank speed, the permissible
+load diagram, and the exact (spatial kinetostatic) method beside it.
+
+Sign conventions are those of :mod:`.counterbalance`: theta from 12 o'clock in the
+direction of rotation; T positive when the gearbox drives the crank forward; TF = A psi'
+(ds/dtheta); W positive pulling the horsehead down; B positive for a rear-heavy beam;
+tau the lag of the counterweight resultant behind the crank pin.
+
+API net torque ([API11E]; [Rowlan2004] method 1): T = TF (W - B) - M sin(theta - tau).
+
+Decomposition with non-uniform crank speed ([Takacs2016]): crank speed omega(t) and
+acceleration alpha(t) from the card's time stamps (:func:`crank_rates_from_time`) or from
+the machine's equation of motion (:mod:`pumpjack_cli.core.dynamics.periodic`); then
+
+* rod-load torque TF W,
+* structural-unbalance torque -TF B,
+* counterbalance torque -M sin(theta - tau),
+* articulating-inertia torque (TF / A) I_b psi_tt, with I_b the moment of inertia of the
+  beam group (beam, horsehead, equalizer, and the pitmans lumped at the equalizer pins,
+  as [Takacs2016] defines I_b) about the saddle bearing and psi_tt = psi'' omega^2 +
+  psi' alpha the beam's angular acceleration: the torque that accelerates the beam,
+  reduced to the crank by the virtual-work ratio psi' = TF / A,
+* rotary-inertia torque I_r alpha, with I_r the moment of inertia of crank arms and
+  counterweights about the crank shaft,
+
+and the net torque is their sum. Each term is the gearbox torque that the part needs
+(virtual work: T omega = the power delivered to it), so the decomposition reproduces
+the spatial kinetostatics exactly when the beam group is balanced about the saddle
+bearing and the pitmans are massless (tested). The readable parts of [Takacs2016] here
+are its abstract and symbol list (I_b: "mass moment of inertia of the beam, horsehead,
+equalizer, bearings, and pitmans, referred to the saddle bearing"); its equation
+numbers could not be read, so the terms above are derived, not copied.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import TorqueError
+from .counterbalance import Counterbalance, counterbalance_from_masses
+from .kinetostatics import rational_mechanism
+from .linkage import Linkage
+from .masses import MassModel
+from .spatial import SpatialLinkage
+
+#: Net-torque methods: the API 11E torque-factor method and the spatial kinetostatics.
+TORQUE_METHODS = ("api", "exact")
+
+
+def _finite(name: str, *arrays: np.ndarray) -> None:
+    for array in arrays:
+        if not np.all(np.isfinite(array)):
+            raise TorqueError(f"{name}: input is not finite at every crank angle")
+
+
+def torque_factor(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
+    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]; [Kretzer]).
+
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> lk = Linkage(72, 64, 24, 74.5, 64, 116 - 41)   # C-114D-133-54, inches ([Guo2007] Table 12.1)
+    >>> round(float(torque_factor(lk, np.array([np.pi / 2]))[0]), 2)   # printed: 26.45 in
+    26.45
+    """
+    return linkage.front_arm * linkage.motion(np.asarray(crank_angle, dtype=float)).beam_rate
+
+
+def api_net_torque(crank_angle: np.ndarray, torque_factor: np.ndarray, rod_load: np.ndarray,
+                   balance: Counterbalance) -> np.ndarray:
+    """Net gearbox torque T = TF (W - B) - M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004]).
+
+    Parameters
+    ----------
+    crank_angle : ndarray
+        theta [rad].
+    torque_factor : ndarray
+        TF [m] at those angles.
+    rod_load : ndarray
+        W [N], polished-rod load.
+    balance : Counterbalance
+        B [N], M [N·m], tau [rad].
+
+    Returns
+    -------
+    ndarray
+        T [N·m], + when the gearbox drives the crank forward.
+
+    References
+    ----------
+    [API11E]; [Rowlan2004].
+
+    Examples
+    --------
+    TF = 1 m, W = 50 kN, B = 2 kN, M = 40 kN·m at theta = 90 deg: 48 000 - 40 000 = 8000 N·m.
+
+    >>> api_net_torque(np.array([np.pi / 2]), np.array([1.0]), np.array([50e3]), Counterbalance(2e3, 40e3, 0.0))
+    array([8000.])
+    """
+    theta = np.asarray(crank_angle, dtype=float)
+    _finite("API net torque", theta, torque_factor, rod_load)
+    return torque_factor * (rod_load - balance.structural_unbalance) - balance.moment * np.sin(theta - balance.offset)
+
+
+@dataclass(frozen=True)
+class TorqueComponents:
+    """Gearbox torque terms [N·m] at ``crank_angle`` [rad] ([Takacs2016]); :attr:`net` is their sum."""
+
+    crank_angle: np.ndarray
+    rod_load: np.ndarray
+    structural: np.ndarray
+    counterbalance: np.ndarray
+    articulating_inertia: np.ndarray
+    rotary_inertia: np.ndarray
+
+    @property
+    def net(self) -> np.ndarray:
+        """Net gearbox torque [N·m]."""
+        return self.rod_load + self.structural + self.counterbalance + self.articulating_inertia + self.rotary_inertia
+
+
+def beam_group_inertia(linkage: Linkage, masses: MassModel) -> float:
+    """I_b [kg·m²]: beam, horsehead, equalizer and both pitmans about the saddle bearing.
+
+    I_b = J_b + m_b x_b² + J_h + m_h x_h² + J_eq + m_eq C² + 2 m_p C²: bodies on the beam
+    line at their centres of mass (parallel-axis theorem), the equalizer at D (turning
+    with the beam about its pin line), the pitmans lumped at the equalizer pins, as
+    [Takacs2016] defines I_b. (The pitmans' lower ends move with the crank pins, so the
+    lumping is an approximation; the exact method treats them exactly.)
+
+    >>> m = MassModel(0, 0, 0, 0, 0, 0, 100.0, 1.5, 0, 50.0, 2.0, 0, 1000.0, 0.5, 3000.0, 0, 0, 0)
+    >>> beam_group_inertia(Linkage(3.5, 2.5, 1.0, 3.0, 2.2, 3.0), m)   # 3000 + 250 + 2 + 312.5 + 1250
+    4814.5
+    """
+    c = linkage.rear_arm
+    return (masses.beam_inertia + masses.beam_mass * masses.beam_cg**2
+            + masses.horsehead_inertia + masses.horsehead_mass * masses.horsehead_cg**2
+            + masses.equalizer_inertia + masses.equalizer_mass * c**2 + 2.0 * masses.pitman_mass * c**2)
+
+
+def crank_group_inertia(masses: MassModel) -> float:
+    """I_r [kg·m²]: both crank arms and all counterweights (point masses) about the crank shaft.
+
+    I_r = 2 (J_a + m_a r_a²) + m_cw r_cw² (parallel-axis theorem).
+
+    >>> crank_group_inertia(MassModel(100.0, 0.5, 10.0, 1000.0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0))
+    1070.0
+    """
+    return 2.0 * (masses.crank_arm_inertia + masses.crank_arm_mass * masses.crank_arm_cg**2) + \
+        masses.counterweight_mass * masses.counterweight_radius**2
+
+
+def torque_components(linkage: Linkage, crank_angle: np.ndarray, rod_load: np.ndarray, balance: Counterbalance, *,
+                      beam_inertia: float = 0.0, rotary_inertia: float = 0.0,
+                      omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> TorqueComponents:
+    """The gearbox torque terms of [Takacs2016] at each crank angle, as arrays.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar (TF, psi', psi'').
+    crank_angle : ndarray
+        theta [rad].
+    rod_load : ndarray
+        W [N] at those angles.
+    balance : Counterbalance
+        B [N], M [N·m], tau [rad].
+    beam_inertia : float
+        I_b [kg·m²] about the saddle bearing (:func:`beam_group_inertia`).
+    rotary_inertia : float
+        I_r [kg·m²] about the crank shaft (:func:`crank_group_inertia`).
+    omega, alpha : ndarray or float
+        Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
+
+    Returns
+    -------
+    TorqueComponents
+        rod_load TF W, structural -TF B, counterbalance -M sin(theta - tau),
+        articulating_inertia (TF/A) I_b (psi'' omega² + psi' alpha), rotary_inertia I_r alpha [N·m].
+
+    References
+    ----------
+    [Takacs2016]; [API11E]; virtual work for the reduction of inertia ([Artobolevsky1951]).
+    """
+    theta = np.asarray(crank_angle, dtype=float)
+    w = np.asarray(rod_load, dtype=float)
+    omega = np.broadcast_to(np.asarray(omega, dtype=float), theta.shape)
+    alpha = np.broadcast_to(np.asarray(alpha, dtype=float), theta.shape)
+    _finite("torque components", theta, w, omega, alpha)
+    m = linkage.motion(theta)
+    tf = linkage.front_arm * m.beam_rate
+    beam_acceleration = m.beam_rate2 * omega**2 + m.beam_rate * alpha
+    return TorqueComponents(
+        crank_angle=theta,
+        rod_load=tf * w,
+        structural=-tf * balance.structural_unbalance,
+        counterbalance=-balance.moment * np.sin(theta - balance.offset),
+        articulating_inertia=m.beam_rate * beam_inertia * beam_acceleration,
+        rotary_inertia=rotary_inertia * alpha,
+    )
+
+
+def crank_rates_from_time(linkage: Linkage, time: np.ndarray, crank_angle: np.ndarray,
+                          harmonics: int = 4) -> tuple[np.ndarray, np.ndarray]:
+    """Crank speed omega [1/s] and acceleration alpha [1/s²] from time-stamped crank angles of one cycle.
+
+    The crank angles (in time order, one revolution, as read from a card's positions on
+    their stroke branches) are unwrapped to theta_u, and the time is fitted as a
+    function of angle, t(theta) = c0 + c1 theta + sum_k (a_k cos k theta + b_k sin k theta),
+    k = 1..``harmonics``, by weighted linear least squares: the period is 2 pi c1 and the
+    fit is periodic by construction, whatever the time sampling. A position error ds
+    moves the angle by ds / TF, so each sample is weighted by |TF(theta)| (the angles
+    read near the dead positions carry little information). Then omega = 1/t' and
+    alpha = d omega/dt = -t'' / t'^3 (chain rule). Truncating the series smooths the
+    noise that differentiation amplifies: more harmonics follow faster speed changes and
+    more noise ([Takacs2016] computes theta(t) from the card for the same purpose).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The unit (torque factors for the weights).
+    time : ndarray
+        t [s], increasing.
+    crank_angle : ndarray
+        theta [rad] at those times, advancing with the rotation.
+    harmonics : int
+        Harmonics of the fit; at most (N - 2) / 2 for N samples.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        omega [1/s] and alpha [1/s²] at the samples.
+
+    References
+    ----------
+    [Takacs2016].
+
+    Examples
+    --------
+    A uniform crank at 1 rad/s: omega = 1, alpha = 0.
+
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> t = np.linspace(0.0, 2 * np.pi, 36, endpoint=False)
+    >>> w, a = crank_rates_from_time(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), t, (t + 0.3) % (2 * np.pi))
+    >>> bool(np.allclose(w, 1.0) and np.allclose(a, 0.0, atol=1e-12))
+    True
+    """
+    t = np.asarray(time, dtype=float)
+    theta = np.asarray(crank_angle, dtype=float)
+    _finite("crank rates from time", t, theta)
+    if t.shape != theta.shape or t.ndim != 1:
+        raise TorqueError("crank rates from time: time and crank angle must be 1-D arrays of one length")
+    if not 1 <= harmonics <= (t.size - 2) // 2:
+        raise TorqueError(f"crank rates from time: {harmonics} harmonics need at least {2 * harmonics + 2} "
+                          f"samples, the card has {t.size}")
+    if np.any(np.diff(t) <= 0):
+        raise TorqueError("crank rates from time: time must increase")
+    unwrapped = np.unwrap(theta)
+    if not unwrapped[-1] > unwrapped[0]:
+        raise TorqueError("crank rates from time: the crank angle does not advance with time")
+    weight = np.abs(linkage.motion(theta).beam_rate)
+    k = np.arange(1, harmonics + 1)
+    phase = np.outer(unwrapped, k)
+    basis = np.hstack([np.ones((t.size, 1)), unwrapped[:, None], np.cos(phase), np.sin(phase)])
+    coef = np.linalg.lstsq(basis * weight[:, None], t * weight, rcond=None)[0]
+    a, b = coef[2:2 + harmonics], coef[2 + harmonics:]
+    dt = coef[1] + np.sin(phase) @ (-k * a) + np.cos(phase) @ (k * b)
+    d2t = np.cos(phase) @ (-k * k * a) + np.sin(phase) @ (-k * k * b)
+    if not np.all(dt > 0):
+        raise TorqueError("crank rates from time: the fitted crank stops or turns back; "
+                          "use fewer harmonics or check the card's time stamps")
+    return 1.0 / dt, -d2t / dt**3
+
+
+def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance: Counterbalance,
+                     torque_rating: float) -> tuple[np.ndarray, np.ndarray]:
+    """Permissible load diagram: the polished-rod loads W_min, W_max [N] that keep |T| <= T_r.
+
+    From |TF (W - B) - M sin(theta - tau)| <= T_r: for TF > 0,
+    B + (M sin(theta - tau) - T_r)/TF <= W <= B + (M sin(theta - tau) + T_r)/TF, and the
+    bounds swap where TF < 0 ([Gault], from the definition). Where TF = 0 the load does
+    not reach the gearbox: every W is allowed (W_min = -inf, W_max = +inf) if the
+    counterbalance alone keeps |M sin(theta - tau)| <= T_r, and none (W_min = +inf,
+    W_max = -inf) otherwise. Near TF = 0 the finite bounds grow without limit.
+
+    Parameters
+    ----------
+    crank_angle : ndarray
+        theta [rad].
+    torque_factor : ndarray
+        TF [m].
+    balance : Counterbalance
+        B [N], M [N·m], tau [rad].
+    torque_rating : float
+        T_r [N·m], > 0: the gearbox rating.
+
+    Returns
+    -------
+    (ndarray, ndarray)
+        W_min and W_max [N].
+
+    References
+    ----------
+    [Gault]; [API11E].
+
+    Examples
+    --------
+    TF = 2 m, B = 1 kN, M = 30 kN·m at 90 deg, T_r = 50 kN·m: 1000 + (30 000 -+ 50 000)/2.
+
+    >>> permissible_load(np.array([np.pi / 2]), np.array([2.0]), Counterbalance(1e3, 30e3, 0.0), 50e3)
+    (array([-9000.]), array([41000.]))
+    """
+    theta = np.asarray(crank_angle, dtype=float)
+    tf = np.asarray(torque_factor, dtype=float)
+    _finite("permissible load", theta, tf)
+    if not (np.isfinite(torque_rating) and torque_rating > 0):
+        raise TorqueError(f"permissible load: the gearbox rating is {torque_rating!r} N·m; it must be positive")
+    counter = balance.moment * np.sin(theta - balance.offset)
+    zero = tf == 0.0
+    safe = np.where(zero, 1.0, tf)
+    first = balance.structural_unbalance + (counter - torque_rating) / safe
+    second = balance.structural_unbalance + (counter + torque_rating) / safe
+    low, high = np.where(tf > 0, first, second), np.where(tf > 0, second, first)
+    free = np.abs(counter) <= torque_rating
+    low = np.where(zero, np.where(free, -np.inf, np.inf), low)
+    high = np.where(zero, np.where(free, np.inf, -np.inf), high)
+    return low, high
+
+
+# --- methods ------------------------------------------------------------------------
+
+
+def torque_methods() -> tuple[str, ...]:
+    """Names of the net-torque methods: ``api`` and ``exact``."""
+    return TORQUE_METHODS
+
+
+def exact_net_torque(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray, rod_load: np.ndarray,
+                     omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> np.ndarray:
+    """Net gearbox torque [N·m] of the rational spatial mechanism: the balancing torque M_z
+    of :func:`.kinetostatics.rational_mechanism` with weights and inertia of every link
+    ([Spatial7SK12], [PopovychSenchishak]); omega [1/s], alpha [1/s²] the crank speed and
+    acceleration (0: static)."""
+    theta = np.asarray(crank_angle, dtype=float)
+    load = np.asarray(rod_load, dtype=float)
+    _finite("exact net torque", theta, load, np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float))
+    _, reactions = rational_mechanism(spatial, masses, theta, omega, alpha, load)
+    return reactions.balancing_torque
+
+
+def net_torque(method: str, spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray,
+               rod_load: np.ndarray, omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> np.ndarray:
+    """Net gearbox torque [N·m] by ``method``: ``api`` (static, B, M, tau from the masses by
+    :func:`.counterbalance.counterbalance_from_masses`; omega and alpha unused) or ``exact``
+    (:func:`exact_net_torque`)."""
+    if method not in TORQUE_METHODS:
+        raise TorqueError(f"unknown torque method {method!r}; use one of {', '.join(TORQUE_METHODS)}")
+    if method == "exact":
+        return exact_net_torque(spatial, masses, crank_angle, rod_load, omega, alpha)
+    linkage = spatial.planar
+    return api_net_torque(crank_angle, torque_factor(linkage, crank_angle), np.asarray(rod_load, dtype=float),
+                          counterbalance_from_masses(linkage, masses))
+
+
+@dataclass(frozen=True)
+class MethodComparison:
+    """Net gearbox torque [N·m] by both methods at ``crank_angle`` [rad], and the B, M, tau the API one used."""
+
+    crank_angle: np.ndarray
+    api: np.ndarray
+    exact: np.ndarray
+    balance: Counterbalance
+
+
+def compare_methods(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray, rod_load: np.ndarray,
+                    omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> MethodComparison:
+    """Both methods side by side; their difference is the beam group's weight off level
+    (cos psi), the pitmans' weight shared with the crank pins, and (omega, alpha != 0) inertia."""
+    theta = np.asarray(crank_angle, dtype=float)
+    return MethodComparison(theta, net_torque("api", spatial, masses, theta, rod_load),
+                            net_torque("exact", spatial, masses, theta, rod_load, omega, alpha),
+                            counterbalance_from_masses(spatial.planar, masses))

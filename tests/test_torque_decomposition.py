@@ -1,0 +1,127 @@
+"""Torque components with non-uniform crank speed (Takacs, Kis & Koncz 2016) and the
+crank speed and acceleration from time stamps.
+
+The components are checked against the spatial kinetostatics with inertia (an
+independent model: d'Alembert forces and moments of every link) and the
+articulating-inertia term against the rate of change of the beam group's kinetic
+energy by finite differences.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from pumpjack_cli.config import load_unit
+from pumpjack_cli.core.beam.counterbalance import Counterbalance, counterbalance_from_masses
+from pumpjack_cli.core.beam.torque import (api_net_torque, beam_group_inertia, crank_group_inertia,
+                                           crank_rates_from_time, exact_net_torque, torque_components,
+                                           torque_factor)
+from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.errors import TorqueError
+
+BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
+THETA = crank_grid(720)
+
+
+def load(theta: np.ndarray) -> np.ndarray:
+    """A smooth card-like polished-rod load [N]."""
+    return 50e3 + 15e3 * np.sin(theta) + 5e3 * np.cos(2 * theta)
+
+
+@pytest.mark.parametrize("name", BEAM_UNITS)
+def test_components_reproduce_kinetostatics_with_non_uniform_speed(name):
+    """Beam group balanced about the saddle bearing (horsehead centre moved so that
+    m_b x_b + m_h x_h = m_eq C, hence B = 0 and no beam gravity torque at any beam
+    angle) and massless pitmans: the five components of Takacs et al. add up to the
+    exact balancing torque with inertia, at a crank speed and acceleration that vary
+    along the cycle. 1e-9 relative to the peak (round-off)."""
+    config = load_unit(name)
+    spatial, masses = config.geometry.spatial(name), config.masses.model()
+    lk = spatial.planar
+    balanced_cg = (masses.equalizer_mass * lk.rear_arm - masses.beam_mass * masses.beam_cg) / masses.horsehead_mass
+    m = dataclasses.replace(masses, pitman_mass=0.0, pitman_inertia=0.0, horsehead_cg=balanced_cg)
+    bal = counterbalance_from_masses(lk, m)
+    assert bal.structural_unbalance == pytest.approx(0.0, abs=1e-9)
+    omega = 1.1 * (1.0 + 0.1 * np.sin(2 * THETA))
+    alpha = 0.3 * np.cos(THETA) - 0.2 * np.sin(2 * THETA)
+    parts = torque_components(lk, THETA, load(THETA), bal, beam_inertia=beam_group_inertia(lk, m),
+                              rotary_inertia=crank_group_inertia(m), omega=omega, alpha=alpha)
+    exact = exact_net_torque(spatial, m, THETA, load(THETA), omega, alpha)
+    assert np.max(np.abs(parts.net - exact)) <= 1e-9 * np.max(np.abs(exact))
+    assert np.max(np.abs(parts.articulating_inertia)) > 1e-3 * np.max(np.abs(exact))  # the term matters here
+
+
+def test_components_sum_and_static_limit():
+    """net is the sum of the five arrays; at omega = alpha = 0 the inertia terms vanish
+    and net is the API torque; rod-load, structural and counterbalance terms are the
+    API formula's three terms."""
+    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    bal = Counterbalance(-800.0, 60e3, 0.1)
+    parts = torque_components(lk, THETA, load(THETA), bal, beam_inertia=5e3, rotary_inertia=3e4)
+    tf = torque_factor(lk, THETA)
+    assert np.all(parts.articulating_inertia == 0.0) and np.all(parts.rotary_inertia == 0.0)
+    assert parts.net == pytest.approx(api_net_torque(THETA, tf, load(THETA), bal), rel=1e-13, abs=1e-9)
+    assert parts.rod_load == pytest.approx(tf * load(THETA), rel=1e-15)
+    assert parts.structural == pytest.approx(800.0 * tf, rel=1e-15)
+    assert parts.counterbalance == pytest.approx(-60e3 * np.sin(THETA - 0.1), rel=1e-15, abs=1e-9)
+
+
+def test_articulating_inertia_is_the_rate_of_beam_kinetic_energy():
+    """Along a motion theta(t) = w0 t + 0.1 sin(w0 t), the power of the articulating
+    term, T_a omega, equals d/dt of (1/2) I_b psi_dot^2 computed by central differences
+    of psi(theta(t)) in time. Tolerance 1e-6 relative: the O(h^2) difference error with
+    h = 1e-4 s on the second derivative of psi."""
+    lk = load_unit("7sk12-2.5-5600").geometry.linkage()
+    w0, ib, h = 0.9, 4000.0, 1e-4
+    t = np.linspace(0.0, 2 * np.pi / w0, 50, endpoint=False)
+
+    def theta(time):
+        return w0 * time + 0.1 * np.sin(w0 * time)
+
+    def kinetic(time):
+        psi = lambda x: lk.motion(theta(x)).beam_angle  # noqa: E731
+        psi_dot = (psi(time + h) - psi(time - h)) / (2 * h)
+        return 0.5 * ib * psi_dot**2
+
+    power = (kinetic(t + h) - kinetic(t - h)) / (2 * h)
+    omega = w0 * (1 + 0.1 * np.cos(w0 * t))
+    alpha = -0.1 * w0**2 * np.sin(w0 * t)
+    parts = torque_components(lk, theta(t) % (2 * np.pi), np.zeros_like(t), Counterbalance(0.0, 0.0),
+                              beam_inertia=ib, omega=omega, alpha=alpha)
+    assert parts.articulating_inertia * omega == pytest.approx(power, rel=1e-6, abs=1e-6 * np.max(np.abs(power)))
+
+
+def test_crank_rates_from_time_recover_an_analytic_motion():
+    """theta(t) = W t + 0.05 sin(W t) + 0.02 cos(2 W t + 0.4), sampled unevenly in time:
+    omega and alpha from the analytic derivatives. The fit represents t(theta) by 16
+    harmonics; the series of the inverse function converges geometrically (ratio about
+    the 0.09 speed modulation), so the residual is far below the 1e-7 tolerance."""
+    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    w = 1.1
+    period = 2 * np.pi / w
+    u = np.linspace(0.0, 1.0, 240, endpoint=False)
+    t = period * (u + 0.1 * u * (1 - u))            # uneven, increasing, within one period
+
+    def theta(x):
+        return w * x + 0.05 * np.sin(w * x) + 0.02 * np.cos(2 * w * x + 0.4)
+
+    omega_true = w * (1 + 0.05 * np.cos(w * t) - 0.04 * np.sin(2 * w * t + 0.4))
+    alpha_true = w**2 * (-0.05 * np.sin(w * t) - 0.08 * np.cos(2 * w * t + 0.4))
+    omega, alpha = crank_rates_from_time(lk, t, theta(t) % (2 * np.pi), harmonics=16)
+    assert omega == pytest.approx(omega_true, rel=1e-7)
+    assert alpha == pytest.approx(alpha_true, abs=1e-7 * w**2)
+
+
+@pytest.mark.parametrize("time, angle, harmonics, message", [
+    (np.array([0.0, 1.0, 1.0, 2.0, 3.0, 4.0]), np.linspace(0, 5, 6), 1, "time must increase"),
+    (np.arange(6.0), np.linspace(5, 0, 6), 1, "does not advance"),
+    (np.arange(6.0), np.linspace(0, 5, 6), 3, "3 harmonics need at least 8 samples"),
+    (np.arange(6.0), np.array([0, 1, 2, np.nan, 4, 5.0]), 1, "not finite"),
+])
+def test_crank_rates_from_time_rejects_bad_input(time, angle, harmonics, message):
+    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    with pytest.raises(TorqueError, match=message):
+        crank_rates_from_time(lk, time, angle, harmonics)
