@@ -21,3 +21,7 @@ class GeometryError(PumpjackError, ValueError):
 
 class DynamicsError(PumpjackError, ValueError):
     """A machine whose motion cannot be computed: inertia, motor, well data or a failed solve."""
+
+
+class DownholeError(PumpjackError, ValueError):
+    """A rod string or a dynamometer card the downhole (pump-card) calculation cannot use."""

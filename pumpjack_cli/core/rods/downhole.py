@@ -1,0 +1,271 @@
+"""The pump (downhole) card from a surface dynamometer card, and back.
+
+Datum. Position is displacement UP; load is axial tension. The static tension
+T_s(x) = buoyant weight of the rods below x (:meth:`RodString.static_tension`) is taken
+out first: the wave equation carries the dynamic load F = T - T_s, so
+
+* the dynamic load at the polished rod is surface load - W_rf (buoyant weight of the
+  string in the well fluid, couplings included, section by section);
+* the pump load is T(L) = F(L), the net plunger load: about zero on the downstroke
+  (travelling valve open) and the fluid load on the upstroke;
+* positions carry the surface datum: a string hanging at rest in the fluid with zero
+  pump load has the pump at the polished rod's position, so the pump position is
+  the surface position minus the stretch caused by the dynamic load.
+
+Both methods solve m (w_tt + c w_t) = (E A w_x)_x with Gibbs' damping
+c = pi a nu / (2 L) [Gibbs1963]; ``gibbs`` exactly per harmonic, ``everitt-jennings``
+by finite differences [EverittJennings1992]. The forward transfer (pump to surface)
+marches the reversed string with the tension's sign flipped, the same equations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import DownholeError
+from ..constants import STANDARD_GRAVITY
+from . import everitt_jennings, gibbs
+from .string import RodString
+
+#: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
+#: the string's first mode. No published default was found; see docs/downhole.md.
+DEFAULT_DAMPING_FACTOR = 0.05
+
+#: A card whose load-transfer slope exceeds this multiple of the rods' spring constant
+#: is refused (see :func:`check_card`).
+LOAD_TRANSFER_MARGIN = 2.0
+
+_METHODS = {"gibbs": gibbs.march, "everitt-jennings": everitt_jennings.march}
+
+
+def downhole_methods() -> tuple[str, ...]:
+    """Names accepted by ``method=`` of :func:`pump_card` and :func:`surface_card`.
+
+    >>> downhole_methods()
+    ('gibbs', 'everitt-jennings')
+    """
+    return tuple(_METHODS)
+
+
+@dataclass(frozen=True)
+class DownholeCard:
+    """Surface and pump cards of one string on one time grid; arrays (N,) or (B, N).
+
+    Parameters
+    ----------
+    method : str
+        The method that produced the card.
+    period : float
+        T [s]; samples at t_k = k T / N.
+    damping_factor : float
+        nu [-].
+    damping_coefficient : float
+        c [1/s].
+    buoyant_weight : float
+        W_rf [N], the load datum between the two cards.
+    surface_position, surface_load : numpy.ndarray
+        Polished rod [m] (up positive) and [N].
+    pump_position, pump_load : numpy.ndarray
+        Plunger [m] (surface datum) and net plunger load [N].
+    joint_position, joint_load : numpy.ndarray
+        Shape (..., S + 1, N): displacement [m] and tension T = F + T_s [N] at the
+        section ends, index 0 the polished rod, index S the pump.
+    """
+
+    method: str
+    period: float
+    damping_factor: float
+    damping_coefficient: float
+    buoyant_weight: float
+    surface_position: np.ndarray
+    surface_load: np.ndarray
+    pump_position: np.ndarray
+    pump_load: np.ndarray
+    joint_position: np.ndarray
+    joint_load: np.ndarray
+
+    @property
+    def time(self) -> np.ndarray:
+        """t_k = k T / N [s]."""
+        samples = self.surface_position.shape[-1]
+        return np.arange(samples) * self.period / samples
+
+
+def _march_function(method: str):
+    if method not in _METHODS:
+        raise DownholeError(f"unknown downhole method {method!r}; valid methods: {', '.join(_METHODS)}")
+    return _METHODS[method]
+
+
+def _card_arrays(period: float, position, load, what: str) -> tuple[np.ndarray, np.ndarray]:
+    if not (np.isfinite(period) and period > 0):
+        raise DownholeError(f"card period must be finite and positive, got {period:g} s")
+    position = np.asarray(position, dtype=float)
+    load = np.asarray(load, dtype=float)
+    if position.shape != load.shape or position.ndim not in (1, 2):
+        raise DownholeError(f"{what} position and load must both have shape (N,) or (B, N), "
+                            f"got {position.shape} and {load.shape}")
+    if position.shape[-1] < 8:
+        raise DownholeError(f"{what} has {position.shape[-1]} samples per cycle; at least 8 are needed")
+    for name, array in (("position", position), ("load", load)):
+        if not np.isfinite(array).all():
+            index = np.argwhere(~np.isfinite(array))[0]
+            card = f"{what} {index[0] + 1}" if array.ndim == 2 else what
+            raise DownholeError(f"{card}: {name} is not finite at sample {int(index[-1])}")
+    return position, load
+
+
+def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndarray, *, fluid_density: float,
+           damping_factor: float, method: str, harmonics: int | None, gravity: float,
+           upward: bool) -> DownholeCard:
+    march = _march_function(method)
+    options = {}
+    if harmonics is not None:
+        if method != "gibbs":
+            raise DownholeError(f"harmonics applies to the gibbs method only, not {method!r}")
+        if harmonics < 1:
+            raise DownholeError(f"harmonics must be at least 1, got {harmonics}")
+        options["harmonics"] = harmonics
+    damping = string.damping_coefficient(damping_factor)
+    static = string.static_tension(fluid_density, gravity)
+    if upward:
+        w, f = march(string.reversed(), period, position, -(load - static[-1]), damping, **options)
+        w, f = w[..., ::-1, :], -f[..., ::-1, :]
+    else:
+        w, f = march(string, period, position, load - static[0], damping, **options)
+    tension = f + static[:, None]
+    return DownholeCard(method=method, period=float(period), damping_factor=float(damping_factor),
+                        damping_coefficient=damping, buoyant_weight=float(static[0]),
+                        surface_position=w[..., 0, :], surface_load=tension[..., 0, :],
+                        pump_position=w[..., -1, :], pump_load=tension[..., -1, :],
+                        joint_position=w, joint_load=tension)
+
+
+def pump_card(string: RodString, period: float, position, load, *, fluid_density: float,
+              damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
+              harmonics: int | None = None, gravity: float = STANDARD_GRAVITY, check: bool = True) -> DownholeCard:
+    """Pump card (plunger position and net plunger load) from a surface card.
+
+    Parameters
+    ----------
+    string : RodString
+        The rods, top section first.
+    period : float
+        T [s] of one stroke; the card is sampled at t_k = k T / N, k = 0 .. N-1.
+    position : array_like
+        Polished-rod position [m], up positive, shape (N,) or (B, N) for B cards of the
+        same string and period.
+    load : array_like
+        Polished-rod load [N], same shape.
+    fluid_density : float
+        rho_f [kg/m^3] of the fluid around the rods (buoyancy).
+    damping_factor : float
+        Gibbs' nu [-]; c = pi a nu / (2 L) [Gibbs1963].
+    method : str
+        One of :func:`downhole_methods`.
+    harmonics : int, optional
+        ``gibbs`` only: highest harmonic kept (default all the grid resolves).
+    gravity : float
+        g [m/s^2].
+    check : bool
+        Run :func:`check_card` first (default).
+
+    Returns
+    -------
+    DownholeCard
+        Pump position [m] and load [N] on the same grid, and the section-end loads.
+
+    Raises
+    ------
+    DownholeError
+        Unknown method (the message lists the valid ones; it is a ValueError), a card
+        that is not finite, or one :func:`check_card` refuses.
+
+    References
+    ----------
+    [Gibbs1963], [GibbsNeely1966], [EverittJennings1992].
+    """
+    position, load = _card_arrays(period, position, load, "surface card")
+    _march_function(method)
+    if check:
+        check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
+    return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
+                  method=method, harmonics=harmonics, gravity=gravity, upward=False)
+
+
+def surface_card(string: RodString, period: float, pump_position, pump_load, *, fluid_density: float,
+                 damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
+                 harmonics: int | None = None, gravity: float = STANDARD_GRAVITY) -> DownholeCard:
+    """Surface card from a pump card: the forward transfer, the same equations upward.
+
+    Parameters are those of :func:`pump_card`, with the plunger position [m] and net
+    plunger load [N] as input; no plausibility check is made.
+
+    References
+    ----------
+    [Gibbs1963], [EverittJennings1992].
+    """
+    position, load = _card_arrays(period, pump_position, pump_load, "pump card")
+    return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
+                  method=method, harmonics=harmonics, gravity=gravity, upward=True)
+
+
+def load_transfer_slope(position, load) -> np.ndarray:
+    """Diagonal slope of a card, R / S [N/m]: load range over position range, per card.
+
+    Any card has two points (its minimum and maximum load) whose secant is at least
+    R / S steep, so R / S is a lower bound of the card's steepest load transfer. A
+    quasi-static string transfers load no faster than its spring constant k_r (a stuck
+    plunger gives exactly R / S = k_r); dynamic loads add to R, hence the margin of
+    :func:`check_card`. A measured slope such as the 25 %-75 % secant of the pickup is
+    not used: the rods' inertia near the bottom of the stroke makes it steep on sound
+    cards.
+    """
+    position = np.atleast_2d(position)
+    load = np.atleast_2d(load)
+    stroke = np.ptp(position, axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(stroke > 0, np.ptp(load, axis=-1) / np.where(stroke > 0, stroke, 1.0), np.inf)
+
+
+def check_card(string: RodString, position, load, *, fluid_density: float,
+               gravity: float = STANDARD_GRAVITY) -> None:
+    """Refuse a surface card these rods cannot have produced, with a one-line reason.
+
+    * a minimum load above the rods' weight in air W_r (the polished rod never carries
+      more than the whole string at the bottom of a downstroke);
+    * a maximum load below their buoyant weight W_rf (the upstroke lifts the rods);
+    * a load-transfer slope (:func:`load_transfer_slope`, the card's R / S) above
+      LOAD_TRANSFER_MARGIN times the rods' spring constant k_r = 1 / sum(L_i / (E_i A_i))
+      [API11L]: a position axis in the wrong unit or rod data of the wrong well.
+
+    Raises
+    ------
+    DownholeError
+        Naming the card (for a batch), the quantity and the limit.
+    """
+    position = np.atleast_2d(position)
+    load = np.atleast_2d(load)
+    weight_in_air = string.weight_in_air(gravity)
+    buoyant = string.buoyant_weight(fluid_density, gravity)
+    slope = load_transfer_slope(position, load)
+    limit = LOAD_TRANSFER_MARGIN * string.spring_constant
+    tests = (
+        (load.min(axis=-1) > weight_in_air,
+         lambda i: f"minimum load {load[i].min() / 1e3:.4g} kN is above the rods' weight in air "
+                   f"{weight_in_air / 1e3:.4g} kN: wrong load datum or wrong rod string"),
+        (load.max(axis=-1) < buoyant,
+         lambda i: f"maximum load {load[i].max() / 1e3:.4g} kN is below the rods' buoyant weight "
+                   f"{buoyant / 1e3:.4g} kN: wrong load datum or wrong rod string"),
+        (slope > limit,
+         lambda i: f"load-transfer slope {slope[i] / 1e3:.4g} kN/m is stiffer than {LOAD_TRANSFER_MARGIN:g} "
+                   f"x the rods' spring constant {string.spring_constant / 1e3:.4g} kN/m: "
+                   f"position in the wrong unit or wrong rod string"),
+    )
+    for failed, message in tests:
+        if failed.any():
+            index = int(np.flatnonzero(failed)[0])
+            prefix = f"surface card {index + 1}: " if len(load) > 1 else "surface card: "
+            raise DownholeError(prefix + message(index))
