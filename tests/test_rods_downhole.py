@@ -15,6 +15,7 @@ from pumpjack_cli.core.rods.analysis import card_work
 from pumpjack_cli.core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
     check_card,
+    damping_for_pump_work,
     downhole_methods,
     pump_card,
     surface_card,
@@ -297,3 +298,16 @@ def test_a_batch_names_the_refused_card():
 def test_malformed_cards(period, position, load, message):
     with pytest.raises(DownholeError, match=message):
         pump_card(sk8_string(), period, position, load, fluid_density=800.0)
+
+
+@pytest.mark.parametrize("method, tolerance", [("gibbs", 1e-6), ("everitt-jennings", 5e-3)])
+def test_damping_from_the_energy_balance_recovers_the_damping_used(method, tolerance):
+    # the surface card was made with nu = 0.08 from a pump card whose work is known by
+    # construction; asking which nu gives that pump work must return 0.08
+    string, period, density, position, load, surface = well_cards("sk8-1530m", damping=0.08)
+    nu = damping_for_pump_work(string, period, surface.surface_position, surface.surface_load,
+                               card_work(position, load), fluid_density=density, method=method)
+    assert nu == pytest.approx(0.08, abs=tolerance)
+    with pytest.raises(DownholeError, match="no damping factor explains it"):
+        damping_for_pump_work(string, period, surface.surface_position, surface.surface_load,
+                              2 * card_work(surface.surface_position, surface.surface_load), fluid_density=density)

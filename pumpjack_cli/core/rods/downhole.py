@@ -27,6 +27,7 @@ import numpy as np
 from ...errors import DownholeError
 from ..constants import STANDARD_GRAVITY
 from . import everitt_jennings, gibbs
+from .analysis import card_work
 from .string import RodString
 
 #: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
@@ -210,6 +211,51 @@ def surface_card(string: RodString, period: float, pump_position, pump_load, *, 
     position, load = _card_arrays(period, pump_position, pump_load, "pump card")
     return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
                   method=method, harmonics=harmonics, gravity=gravity, upward=True)
+
+
+def damping_for_pump_work(string: RodString, period: float, position, load, pump_work: float, *,
+                          fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
+                          largest: float = 2.0) -> float:
+    """The damping factor nu at which the pump card does a given work per cycle [-].
+
+    Energy balance of the rods over one cycle: surface card work = pump card work +
+    damping dissipation. When the useful pump work is known (e.g. the hydraulic work per
+    stroke from the production rate and the net lift), the dissipation, hence nu, follows
+    [Gibbs1963] (Gibbs estimated c from polished-rod minus hydraulic power). Solved by
+    Brent's method on nu in [0, largest].
+
+    Parameters
+    ----------
+    string, period, position, load, fluid_density, method, gravity
+        As :func:`pump_card`, for ONE card (shape (N,)).
+    pump_work : float
+        Target work of the pump card per cycle [J].
+    largest : float
+        Upper end of the search [-].
+
+    Raises
+    ------
+    DownholeError
+        If the target is not between the pump work at nu = largest and at nu = 0 (the
+        surface card's work): no damping explains it.
+    """
+    from scipy.optimize import brentq
+
+    position, load = _card_arrays(period, position, load, "surface card")
+    if position.ndim != 1:
+        raise DownholeError("damping_for_pump_work takes one card of shape (N,)")
+
+    def excess(nu: float) -> float:
+        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
+                         method=method, gravity=gravity, check=False)
+        return float(card_work(card.pump_position, card.pump_load)) - pump_work
+
+    undamped, damped = excess(0.0), excess(largest)
+    if not (damped <= 0.0 <= undamped):
+        raise DownholeError(f"pump work {pump_work / 1e3:.4g} kJ per cycle is outside "
+                            f"{(damped + pump_work) / 1e3:.4g}-{(undamped + pump_work) / 1e3:.4g} kJ, the pump "
+                            f"work for damping factors {largest:g}-0: no damping factor explains it")
+    return float(brentq(excess, 0.0, largest, xtol=1e-10))
 
 
 def load_transfer_slope(position, load) -> np.ndarray:
