@@ -157,6 +157,12 @@ def test_goodman_needs_a_grade():
 
 
 @pytest.mark.parametrize("call, message", [
+    (lambda: card_work(np.arange(10.0), np.where(np.arange(10) == 3, np.inf, 1.0)),
+     "card: load is not finite at sample 3"),
+    (lambda: summarise_pump_card(np.ones((2, 10)), np.full((2, 10), np.nan)), "pump card 1: load is not finite"),
+    (lambda: summarise_pump_card(np.ones(10), np.ones(11)), "must both have shape"),
+    (lambda: displacement_rate(np.nan, 5.0, 0.038), "stroke must be finite"),
+    (lambda: intake_pressure(1e4, 0.038, np.nan), "discharge pressure must be finite"),
     (lambda: displacement_rate(1.0, 0.0, 0.038), "period must be finite and positive"),
     (lambda: displacement_rate(1.0, 5.0, -0.038), "plunger diameter must be finite and positive"),
     (lambda: intake_pressure(1e4, np.nan, 1e7), "plunger diameter must be finite and positive"),

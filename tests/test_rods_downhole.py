@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from pumpjack_cli.core.rods.analysis import card_work
 from pumpjack_cli.core.rods.downhole import (
@@ -311,3 +313,32 @@ def test_damping_from_the_energy_balance_recovers_the_damping_used(method, toler
     with pytest.raises(DownholeError, match="no damping factor explains it"):
         damping_for_pump_work(string, period, surface.surface_position, surface.surface_load,
                               2 * card_work(surface.surface_position, surface.surface_load), fluid_density=density)
+
+
+@settings(max_examples=25, deadline=None)
+@given(diameters=st.lists(st.sampled_from([0.016, 0.019, 0.022, 0.025, 0.029]), min_size=1, max_size=4),
+       lengths=st.lists(st.floats(50.0, 900.0), min_size=4, max_size=4),
+       period=st.floats(3.0, 15.0), damping=st.floats(0.0, 0.5), method=st.sampled_from(METHODS),
+       seed=st.integers(0, 2**16))
+def test_any_string_and_band_limited_card_round_trip_and_energy(diameters, lengths, period, damping, method, seed):
+    # invariants for any string and card: pump -> surface -> pump is the identity, and
+    # surface work - pump work is >= 0, = 0 without damping (passivity of the rods)
+    string = rod_string([RodSection(d, length) for d, length in zip(diameters, lengths)])
+    rng = np.random.default_rng(seed)
+    theta = 2 * np.pi * np.arange(128) / 128
+    n = np.arange(1, 13)
+    modes = rng.standard_normal((2, 12)) + 1j * rng.standard_normal((2, 12))
+    position, load = np.real(modes / n**2 @ np.exp(1j * np.outer(n, theta)))
+    load = 1e4 * load
+    up = surface_card(string, period, position, load, fluid_density=900.0, damping_factor=damping, method=method)
+    down = pump_card(string, period, up.surface_position, up.surface_load, fluid_density=900.0,
+                     damping_factor=damping, method=method, check=False)
+    assert down.pump_position == pytest.approx(position, abs=1e-9 * np.ptp(position))
+    assert down.pump_load == pytest.approx(load, abs=1e-9 * np.ptp(load))
+    surface_work = card_work(up.surface_position, up.surface_load)
+    pump_work = card_work(position, load)
+    scale = 1e-9 * (abs(surface_work) + abs(pump_work) + 1.0)
+    if damping == 0.0:
+        assert surface_work == pytest.approx(pump_work, abs=scale)
+    else:
+        assert surface_work - pump_work >= -scale

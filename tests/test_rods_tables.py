@@ -150,6 +150,9 @@ def test_rod_string_validation():
         rod_string([])
     with pytest.raises(DownholeError, match="fluid density"):
         RodString([1.0], [1.0], [1.0], [1.0]).buoyant_weight(-1.0)
+    fibreglass = RodString([1.0, 1.0], [1.0, 1.0], [1.0, 1.0], [1.0, 1.0], material_density=[7800.0, 1900.0])
+    with pytest.raises(DownholeError, match="not below the density of rod section 2, 1900 kg/m.3: the rods would float"):
+        fibreglass.buoyant_weight(2000.0)
 
 
 def test_static_tension_and_reversal():

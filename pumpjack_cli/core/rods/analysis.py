@@ -23,6 +23,36 @@ DOWNSTROKE_BAND = (0.1, 0.4)
 GOODMAN_SLOPE = 0.5625
 
 
+def as_cards(position, load, what: str = "card") -> tuple[np.ndarray, np.ndarray]:
+    """Position and load as float arrays of one shape, (N,) or (B, N), N >= 8, all finite.
+
+    Raises
+    ------
+    DownholeError
+        Naming the card of a batch and the sample that is not finite.
+    """
+    position = np.asarray(position, dtype=float)
+    load = np.asarray(load, dtype=float)
+    if position.shape != load.shape or position.ndim not in (1, 2):
+        raise DownholeError(f"{what} position and load must both have shape (N,) or (B, N), "
+                            f"got {position.shape} and {load.shape}")
+    if position.shape[-1] < 8:
+        raise DownholeError(f"{what} has {position.shape[-1]} samples per cycle; at least 8 are needed")
+    for name, array in (("position", position), ("load", load)):
+        if not np.isfinite(array).all():
+            index = np.argwhere(~np.isfinite(array))[0]
+            card = f"{what} {index[0] + 1}" if array.ndim == 2 else what
+            raise DownholeError(f"{card}: {name} is not finite at sample {int(index[-1])}")
+    return position, load
+
+
+def _finite(name: str, value, unit: str) -> np.ndarray:
+    array = np.asarray(value, dtype=float)
+    if not np.isfinite(array).all():
+        raise DownholeError(f"{name} must be finite, got {array} {unit}")
+    return array
+
+
 def card_work(position, load) -> np.ndarray:
     """Work of one cycle, the loop integral of load d(position) [J], per card.
 
@@ -43,8 +73,7 @@ def card_work(position, load) -> np.ndarray:
     >>> round(float(card_work(1 - np.cos(theta), 1 + np.sin(theta))), 12) == round(np.pi, 12)
     True
     """
-    position = np.asarray(position, dtype=float)
-    load = np.asarray(load, dtype=float)
+    position, load = as_cards(position, load)
     samples = position.shape[-1]
     p = np.fft.rfft(position, axis=-1)[..., 1:]
     f = np.fft.rfft(load, axis=-1)[..., 1:]
@@ -121,10 +150,9 @@ def summarise_pump_card(pump_position, pump_load) -> PumpCardSummary:
     DownholeError
         A card with no stroke, or too few samples to find a load level.
     """
-    single = np.ndim(pump_position) == 1
-    position = np.atleast_2d(np.asarray(pump_position, dtype=float))
-    load = np.atleast_2d(np.asarray(pump_load, dtype=float))
-    p, f, top = _from_bottom(position, load)
+    position, load = as_cards(pump_position, pump_load, "pump card")
+    single = position.ndim == 1
+    p, f, top = _from_bottom(np.atleast_2d(position), np.atleast_2d(load))
     low, stroke = p[:, 0], np.ptp(p, axis=-1)
     if not (stroke > 0).all():
         index = int(np.flatnonzero(~(stroke > 0))[0])
@@ -172,7 +200,7 @@ def displacement_rate(stroke, period: float, plunger_diameter: float) -> np.ndar
     """
     if not (np.isfinite(period) and period > 0):
         raise DownholeError(f"period must be finite and positive, got {period:g} s")
-    return plunger_area(plunger_diameter) * np.asarray(stroke, dtype=float) / period
+    return plunger_area(plunger_diameter) * _finite("stroke", stroke, "m") / period
 
 
 def intake_pressure(fluid_load, plunger_diameter: float, discharge_pressure: float) -> np.ndarray:
@@ -189,7 +217,8 @@ def intake_pressure(fluid_load, plunger_diameter: float, discharge_pressure: flo
     >>> round(float(intake_pressure(13958.3, 0.038, 12.5e6)) / 1e6, 3)
     0.192
     """
-    return discharge_pressure - np.asarray(fluid_load, dtype=float) / plunger_area(plunger_diameter)
+    area = plunger_area(plunger_diameter)
+    return _finite("discharge pressure", discharge_pressure, "Pa") - _finite("fluid load", fluid_load, "N") / area
 
 
 @dataclass(frozen=True)
@@ -224,9 +253,14 @@ def taper_loads(string: RodString, joint_load) -> TaperLoads:
     joint_load : array_like
         Tension at the section ends [N], shape (..., S + 1, N), as
         :attr:`DownholeCard.joint_load`.
+
+    Returns
+    -------
+    TaperLoads
+        Loads [N] and stresses [Pa], shape (..., S).
     """
-    load = np.asarray(joint_load, dtype=float)
-    if load.shape[-2] != len(string.length) + 1:
+    load = _finite("joint load", joint_load, "N")
+    if load.ndim < 2 or load.shape[-2] != len(string.length) + 1:
         raise DownholeError(f"joint loads have {load.shape[-2]} section ends for {len(string.length)} tapers")
     high, low = load.max(axis=-1), load.min(axis=-1)
     top_max, top_min, bottom_max, bottom_min = high[..., :-1], low[..., :-1], high[..., 1:], low[..., 1:]
@@ -238,12 +272,25 @@ def taper_loads(string: RodString, joint_load) -> TaperLoads:
 def goodman_allowable_stress(tensile_strength, minimum_stress, service_factor: float = 1.0) -> np.ndarray:
     """Modified Goodman allowable maximum stress S_A = (T/4 + 0.5625 S_min) SF [Pa] [API11BR].
 
+    Parameters
+    ----------
+    tensile_strength : array_like
+        Minimum tensile strength T of the grade [Pa].
+    minimum_stress : array_like
+        S_min [Pa] over the cycle.
+    service_factor : float
+        SF [-].
+
     Examples
     --------
     Grade D (115 000 psi = 792.9 MPa) with S_min = 40 MPa: 198.2 + 22.5 = 220.7 MPa.
 
     >>> round(float(goodman_allowable_stress(792.9e6, 40e6)) / 1e6, 1)
     220.7
+
+    References
+    ----------
+    [API11BR].
     """
     return (np.asarray(tensile_strength) / 4.0 + GOODMAN_SLOPE * np.asarray(minimum_stress)) * service_factor
 
@@ -255,10 +302,28 @@ def goodman_loading(string: RodString, loads: TaperLoads, service_factor: float 
     of API RP 11BR, Delta S_A = S_A - S_min [API11BR]; 1.0 is the Goodman line. Infinite
     where the allowable range is not positive.
 
+    Parameters
+    ----------
+    string : RodString
+        The tapers, with their minimum tensile strengths T_i [Pa].
+    loads : TaperLoads
+        From :func:`taper_loads`; stresses [Pa].
+    service_factor : float
+        SF [-], 1 for non-corrosive fluid, below 1 for corrosive service.
+
+    Returns
+    -------
+    numpy.ndarray
+        Loading [-] per taper, shape (..., S).
+
     Raises
     ------
     DownholeError
         A taper without a tensile strength (no grade given).
+
+    References
+    ----------
+    [API11BR].
     """
     strength = string.tensile_strength
     if np.isnan(strength).any():

@@ -27,7 +27,7 @@ import numpy as np
 from ...errors import DownholeError
 from ..constants import STANDARD_GRAVITY
 from . import everitt_jennings, gibbs
-from .analysis import card_work
+from .analysis import as_cards, card_work
 from .string import RodString
 
 #: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
@@ -103,19 +103,7 @@ def _march_function(method: str):
 def _card_arrays(period: float, position, load, what: str) -> tuple[np.ndarray, np.ndarray]:
     if not (np.isfinite(period) and period > 0):
         raise DownholeError(f"card period must be finite and positive, got {period:g} s")
-    position = np.asarray(position, dtype=float)
-    load = np.asarray(load, dtype=float)
-    if position.shape != load.shape or position.ndim not in (1, 2):
-        raise DownholeError(f"{what} position and load must both have shape (N,) or (B, N), "
-                            f"got {position.shape} and {load.shape}")
-    if position.shape[-1] < 8:
-        raise DownholeError(f"{what} has {position.shape[-1]} samples per cycle; at least 8 are needed")
-    for name, array in (("position", position), ("load", load)):
-        if not np.isfinite(array).all():
-            index = np.argwhere(~np.isfinite(array))[0]
-            card = f"{what} {index[0] + 1}" if array.ndim == 2 else what
-            raise DownholeError(f"{card}: {name} is not finite at sample {int(index[-1])}")
-    return position, load
+    return as_cards(position, load, what)
 
 
 def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndarray, *, fluid_density: float,
@@ -132,7 +120,7 @@ def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndar
     damping = string.damping_coefficient(damping_factor)
     static = string.static_tension(fluid_density, gravity)
     if upward:
-        w, f = march(string.reversed(), period, position, -(load - static[-1]), damping, **options)
+        w, f = march(string.reversed(), period, position, -load, damping, **options)   # T_s(L) = 0
         w, f = w[..., ::-1, :], -f[..., ::-1, :]
     else:
         w, f = march(string, period, position, load - static[0], damping, **options)
@@ -292,8 +280,7 @@ def check_card(string: RodString, position, load, *, fluid_density: float,
     DownholeError
         Naming the card (for a batch), the quantity and the limit.
     """
-    position = np.atleast_2d(position)
-    load = np.atleast_2d(load)
+    position, load = (np.atleast_2d(array) for array in as_cards(position, load, "surface card"))
     weight_in_air = string.weight_in_air(gravity)
     buoyant = string.buoyant_weight(fluid_density, gravity)
     slope = load_transfer_slope(position, load)

@@ -148,6 +148,10 @@ class RodString:
         """k_r = 1 / sum(L_i / (E_i A_i)) [N/m], the string as one spring [API11L].
 
         RP 11L writes 1/k_r = sum(E_r,i L_i) with its elastic constants E_r = 1/(E A).
+
+        References
+        ----------
+        [API11L] (A11).
         """
         return float(1.0 / np.sum(self.length / (self.youngs_modulus * self.area)))
 
@@ -169,9 +173,18 @@ class RodString:
         >>> s = RodString([1000.0], [2.85e-4], [2.1e11], [2.43])
         >>> round(float(s.buoyant_weight_per_length(999.0, 1.0)[0] / 2.43), 3)
         0.872
+
+        References
+        ----------
+        [API11L].
         """
         if not (np.isfinite(fluid_density) and fluid_density >= 0):
             raise DownholeError(f"fluid density must be finite and not negative, got {fluid_density:g} kg/m^3")
+        floating = fluid_density >= self.material_density
+        if floating.any():
+            index = int(np.flatnonzero(floating)[0])
+            raise DownholeError(f"fluid density {fluid_density:g} kg/m^3 is not below the density of rod section "
+                                f"{index + 1}, {self.material_density[index]:g} kg/m^3: the rods would float")
         return gravity * self.mass_per_length * (1.0 - fluid_density / self.material_density)
 
     def buoyant_weight(self, fluid_density: float, gravity: float = STANDARD_GRAVITY) -> float:
@@ -201,6 +214,10 @@ class RodString:
         >>> s = RodString([1000.0], [1.0], [5000.0**2], [1.0])
         >>> round(s.damping_coefficient(0.1), 6)
         0.785398
+
+        References
+        ----------
+        [Gibbs1963].
         """
         if not (np.isfinite(damping_factor) and damping_factor >= 0):
             raise DownholeError(f"damping factor must be finite and not negative, got {damping_factor:g}")

@@ -141,6 +141,10 @@ def steel_rod(diameter: float) -> RodSize:
     >>> rod = steel_rod(0.022)
     >>> rod.name, round(rod.mass_per_length, 3), round(rod.youngs_modulus * rod.area / 1e6, 1)
     ('7/8 in', 3.31, 82.2)
+
+    References
+    ----------
+    [API11L] (Table 4.1), [NIST811].
     """
     return _lookup(STEEL_RODS, diameter, "API steel sucker rod")
 
@@ -154,6 +158,10 @@ def sinker_bar(diameter: float) -> RodSize:
 
     >>> round(sinker_bar(0.0381).mass_per_length, 2)
     8.89
+
+    References
+    ----------
+    [API11B], [Shigley2011].
     """
     return _lookup(SINKER_BARS, diameter, "API sinker bar")
 
@@ -180,6 +188,10 @@ def tensile_strength(grade: str) -> float:
 
     >>> round(tensile_strength("D") / 1e6, 1)   # 115 000 psi
     792.9
+
+    References
+    ----------
+    [PetroWikiRods], [API11B].
     """
     key = str(grade).strip().upper()
     if key not in _GRADES_PSI:
@@ -282,6 +294,10 @@ def rod_string(sections: Sequence[RodSection]) -> RodString:
     >>> s = rod_string([RodSection(0.025, 351.9), RodSection(0.022, 397.8), RodSection(0.019, 780.3)])
     >>> s.names, round(s.total_length, 1)
     (('1 in', '7/8 in', '3/4 in'), 1530.0)
+
+    References
+    ----------
+    [API11L], [API11B], [PetroWikiRods].
     """
     if len(sections) == 0:
         raise DownholeError("a rod string needs at least one section")
