@@ -29,3 +29,7 @@ class DesignationError(PumpjackError, ValueError):
 
 class TorqueError(PumpjackError, ValueError):
     """Gearbox-torque, counterbalance or loading input that cannot give a result."""
+
+
+class DownholeError(PumpjackError, ValueError):
+    """A rod string or a dynamometer card the downhole (pump-card) calculation cannot use."""

@@ -4,6 +4,15 @@ The string hangs from the polished rod (x = 0) down to the pump (x = L); section
 has length L_i, metal area A_i, Young's modulus E_i and a mass per unit length m_i
 that includes the couplings (so the stress wave speed is a_i = sqrt(E_i A_i / m_i),
 not sqrt(E/rho) of bare steel).
+
+Gravity and buoyancy enter only through the static tension. Each section is a solid
+of density rho_s,i (steel unless told otherwise) whose volume is m_i / rho_s,i, so its
+weight in a fluid of density rho_f is the buoyant weight per length
+
+    q_i = g m_i (1 - rho_f / rho_s,i)                                   [API11L]
+
+(RP 11L writes the same as Wrf = Wr (1 - 0.128 G) for steel). The static tension
+T_s(x) is the buoyant weight of the rods below x; the wave equation carries the rest.
 """
 
 from __future__ import annotations
@@ -12,7 +21,26 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ...errors import DownholeError
 from ..constants import STANDARD_GRAVITY
+
+#: Density of carbon steel [kg/m^3]: unit weight 76.5 kN/m^3 [Shigley2011] (Table A-5)
+#: divided by g_n. RP 11L's buoyancy factor 1 - 0.128 G [API11L] implies 7 805 kg/m^3.
+STEEL_DENSITY = 7800.0
+
+#: Young's modulus of carbon steel [Pa], 207 GPa (30.0 Mpsi) [Shigley2011] (Table A-5).
+#: With STEEL_DENSITY it gives sqrt(E/rho) = 5 150 m/s = 16 900 ft/s, the "about
+#: 17 000 ft/s" theoretical value of [API11L] (A10).
+STEEL_YOUNGS_MODULUS = 207e9
+
+
+def _sections(name: str, values, count: int | None = None) -> np.ndarray:
+    array = np.atleast_1d(np.asarray(values, dtype=float))
+    if array.ndim != 1 or array.size == 0:
+        raise DownholeError(f"rod string {name} must be one value per section, got shape {array.shape}")
+    if count is not None and array.size != count:
+        raise DownholeError(f"rod string {name} has {array.size} values for {count} sections")
+    return array
 
 
 @dataclass(frozen=True)
@@ -29,12 +57,53 @@ class RodString:
         E_i [Pa].
     mass_per_length : numpy.ndarray
         m_i [kg/m], rod with its couplings.
+    material_density : numpy.ndarray, optional
+        rho_s,i [kg/m^3] of the solid that displaces the fluid; default steel,
+        :data:`STEEL_DENSITY`.
+    tensile_strength : numpy.ndarray, optional
+        Minimum tensile strength T_i [Pa] of the rod grade (for the Goodman loading);
+        NaN where unknown, the default.
+    names : tuple of str, optional
+        A label per section (e.g. ``"7/8 in D"``), for reports.
+
+    Raises
+    ------
+    DownholeError
+        If an array is not one finite value per section, or a length, area, modulus,
+        mass or density is not positive.
     """
 
     length: np.ndarray
     area: np.ndarray
     youngs_modulus: np.ndarray
     mass_per_length: np.ndarray
+    material_density: np.ndarray | None = None
+    tensile_strength: np.ndarray | None = None
+    names: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        length = _sections("length", self.length)
+        count = length.size
+        fields = {"length": length}
+        for name in ("area", "youngs_modulus", "mass_per_length"):
+            fields[name] = _sections(name, getattr(self, name), count)
+        density = STEEL_DENSITY if self.material_density is None else self.material_density
+        fields["material_density"] = _sections("material_density", np.broadcast_to(density, count), count)
+        strength = np.nan if self.tensile_strength is None else self.tensile_strength
+        fields["tensile_strength"] = _sections("tensile_strength", np.broadcast_to(strength, count), count)
+        for name, array in fields.items():
+            if name == "tensile_strength":
+                bad = ~(np.isnan(array) | (np.isfinite(array) & (array > 0)))
+            else:
+                bad = ~(np.isfinite(array) & (array > 0))
+            if bad.any():
+                index = int(np.flatnonzero(bad)[0])
+                raise DownholeError(f"rod string {name} of section {index + 1} must be finite and positive, "
+                                    f"got {array[index]:g}")
+            object.__setattr__(self, name, array)
+        if self.names and len(self.names) != count:
+            raise DownholeError(f"rod string has {len(self.names)} names for {count} sections")
+        object.__setattr__(self, "names", tuple(str(name) for name in self.names))
 
     @property
     def total_length(self) -> float:
@@ -54,3 +123,108 @@ class RodString:
     def weight_in_air(self, gravity: float = STANDARD_GRAVITY) -> float:
         """W_r = g sum m_i L_i [N]."""
         return gravity * self.mass
+
+    @property
+    def depth(self) -> np.ndarray:
+        """x of the section ends [m], S + 1 values from 0 (polished rod) to L (pump)."""
+        return np.concatenate(([0.0], np.cumsum(self.length)))
+
+    @property
+    def travel_time(self) -> float:
+        """One-way travel time of a stress wave, polished rod to pump, sum L_i / a_i [s]."""
+        return float(np.sum(self.length / self.wave_speed))
+
+    @property
+    def mean_wave_speed(self) -> float:
+        """Travel-time average wave speed a = L / sum(L_i / a_i) [m/s].
+
+        The uniform rod of this speed and the same length has the same travel time, so
+        the same quarter-wave natural frequency pi a / (2 L) as the tapered string.
+        """
+        return self.total_length / self.travel_time
+
+    @property
+    def spring_constant(self) -> float:
+        """k_r = 1 / sum(L_i / (E_i A_i)) [N/m], the string as one spring [API11L].
+
+        RP 11L writes 1/k_r = sum(E_r,i L_i) with its elastic constants E_r = 1/(E A).
+
+        References
+        ----------
+        [API11L] (A11).
+        """
+        return float(1.0 / np.sum(self.length / (self.youngs_modulus * self.area)))
+
+    def buoyant_weight_per_length(self, fluid_density: float, gravity: float = STANDARD_GRAVITY) -> np.ndarray:
+        """q_i = g m_i (1 - rho_f / rho_s,i) [N/m] per section [API11L].
+
+        Parameters
+        ----------
+        fluid_density : float
+            rho_f [kg/m^3] of the well fluid around the rods.
+        gravity : float
+            g [m/s^2].
+
+        Examples
+        --------
+        RP 11L's buoyancy factor for water (G = 1) is 1 - 0.128 = 0.872; steel rods in
+        water of 999 kg/m^3 (60 degF):
+
+        >>> s = RodString([1000.0], [2.85e-4], [2.1e11], [2.43])
+        >>> round(float(s.buoyant_weight_per_length(999.0, 1.0)[0] / 2.43), 3)
+        0.872
+
+        References
+        ----------
+        [API11L].
+        """
+        if not (np.isfinite(fluid_density) and fluid_density >= 0):
+            raise DownholeError(f"fluid density must be finite and not negative, got {fluid_density:g} kg/m^3")
+        floating = fluid_density >= self.material_density
+        if floating.any():
+            index = int(np.flatnonzero(floating)[0])
+            raise DownholeError(f"fluid density {fluid_density:g} kg/m^3 is not below the density of rod section "
+                                f"{index + 1}, {self.material_density[index]:g} kg/m^3: the rods would float")
+        return gravity * self.mass_per_length * (1.0 - fluid_density / self.material_density)
+
+    def buoyant_weight(self, fluid_density: float, gravity: float = STANDARD_GRAVITY) -> float:
+        """W_rf = sum q_i L_i [N], weight of the whole string in the well fluid."""
+        return float(np.sum(self.buoyant_weight_per_length(fluid_density, gravity) * self.length))
+
+    def static_tension(self, fluid_density: float, gravity: float = STANDARD_GRAVITY) -> np.ndarray:
+        """T_s at the section ends [N], S + 1 values: buoyant weight of the rods below.
+
+        T_s(0) is the buoyant weight of the string, T_s(L) = 0 (the datum of the pump load).
+        """
+        below = (self.buoyant_weight_per_length(fluid_density, gravity) * self.length)[::-1].cumsum()[::-1]
+        return np.concatenate((below, [0.0]))
+
+    def damping_coefficient(self, damping_factor: float) -> float:
+        """Gibbs' viscous damping coefficient c = pi a nu / (2 L) [1/s] [Gibbs1963].
+
+        nu is dimensionless; a is :attr:`mean_wave_speed` and L :attr:`total_length`,
+        so pi a / (2 L) is the first natural frequency of the string fixed at the
+        polished rod and free at the pump, and nu / 2 the fraction of critical damping
+        of that mode. The damping force per unit length is c m_i du/dt in every section.
+
+        Examples
+        --------
+        Uniform rod, a = 5000 m/s, L = 1000 m, nu = 0.1: c = pi 5000 0.1 / 2000.
+
+        >>> s = RodString([1000.0], [1.0], [5000.0**2], [1.0])
+        >>> round(s.damping_coefficient(0.1), 6)
+        0.785398
+
+        References
+        ----------
+        [Gibbs1963].
+        """
+        if not (np.isfinite(damping_factor) and damping_factor >= 0):
+            raise DownholeError(f"damping factor must be finite and not negative, got {damping_factor:g}")
+        return float(np.pi * self.mean_wave_speed * damping_factor / (2.0 * self.total_length))
+
+    def reversed(self) -> RodString:
+        """The same string listed from the pump up (for marching from the pump)."""
+        return RodString(self.length[::-1], self.area[::-1], self.youngs_modulus[::-1],
+                         self.mass_per_length[::-1], self.material_density[::-1],
+                         self.tensile_strength[::-1], self.names[::-1])

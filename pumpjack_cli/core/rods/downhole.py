@@ -1,0 +1,304 @@
+"""The pump (downhole) card from a surface dynamometer card, and back.
+
+Datum. Position is displacement UP; load is axial tension. The static tension
+T_s(x) = buoyant weight of the rods below x (:meth:`RodString.static_tension`) is taken
+out first: the wave equation carries the dynamic load F = T - T_s, so
+
+* the dynamic load at the polished rod is surface load - W_rf (buoyant weight of the
+  string in the well fluid, couplings included, section by section);
+* the pump load is T(L) = F(L), the net plunger load: about zero on the downstroke
+  (travelling valve open) and the fluid load on the upstroke;
+* positions carry the surface datum: a string hanging at rest in the fluid with zero
+  pump load has the pump at the polished rod's position, so the pump position is
+  the surface position minus the stretch caused by the dynamic load.
+
+Both methods solve m (w_tt + c w_t) = (E A w_x)_x with Gibbs' damping
+c = pi a nu / (2 L) [Gibbs1963]; ``gibbs`` exactly per harmonic, ``everitt-jennings``
+by finite differences [EverittJennings1992]. The forward transfer (pump to surface)
+marches the reversed string with the tension's sign flipped, the same equations.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import DownholeError
+from ..constants import STANDARD_GRAVITY
+from . import everitt_jennings, gibbs
+from .analysis import as_cards, card_work
+from .string import RodString
+
+#: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
+#: the string's first mode. No published default was found; see docs/downhole.md.
+DEFAULT_DAMPING_FACTOR = 0.05
+
+#: A card whose load-transfer slope exceeds this multiple of the rods' spring constant
+#: is refused (see :func:`check_card`).
+LOAD_TRANSFER_MARGIN = 2.0
+
+_METHODS = {"gibbs": gibbs.march, "everitt-jennings": everitt_jennings.march}
+
+
+def downhole_methods() -> tuple[str, ...]:
+    """Names accepted by ``method=`` of :func:`pump_card` and :func:`surface_card`.
+
+    >>> downhole_methods()
+    ('gibbs', 'everitt-jennings')
+    """
+    return tuple(_METHODS)
+
+
+@dataclass(frozen=True)
+class DownholeCard:
+    """Surface and pump cards of one string on one time grid; arrays (N,) or (B, N).
+
+    Parameters
+    ----------
+    method : str
+        The method that produced the card.
+    period : float
+        T [s]; samples at t_k = k T / N.
+    damping_factor : float
+        nu [-].
+    damping_coefficient : float
+        c [1/s].
+    buoyant_weight : float
+        W_rf [N], the load datum between the two cards.
+    surface_position, surface_load : numpy.ndarray
+        Polished rod [m] (up positive) and [N].
+    pump_position, pump_load : numpy.ndarray
+        Plunger [m] (surface datum) and net plunger load [N].
+    joint_position, joint_load : numpy.ndarray
+        Shape (..., S + 1, N): displacement [m] and tension T = F + T_s [N] at the
+        section ends, index 0 the polished rod, index S the pump.
+    """
+
+    method: str
+    period: float
+    damping_factor: float
+    damping_coefficient: float
+    buoyant_weight: float
+    surface_position: np.ndarray
+    surface_load: np.ndarray
+    pump_position: np.ndarray
+    pump_load: np.ndarray
+    joint_position: np.ndarray
+    joint_load: np.ndarray
+
+    @property
+    def time(self) -> np.ndarray:
+        """t_k = k T / N [s]."""
+        samples = self.surface_position.shape[-1]
+        return np.arange(samples) * self.period / samples
+
+
+def _march_function(method: str):
+    if method not in _METHODS:
+        raise DownholeError(f"unknown downhole method {method!r}; valid methods: {', '.join(_METHODS)}")
+    return _METHODS[method]
+
+
+def _card_arrays(period: float, position, load, what: str) -> tuple[np.ndarray, np.ndarray]:
+    if not (np.isfinite(period) and period > 0):
+        raise DownholeError(f"card period must be finite and positive, got {period:g} s")
+    return as_cards(position, load, what)
+
+
+def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndarray, *, fluid_density: float,
+           damping_factor: float, method: str, harmonics: int | None, gravity: float,
+           upward: bool) -> DownholeCard:
+    march = _march_function(method)
+    options = {}
+    if harmonics is not None:
+        if method != "gibbs":
+            raise DownholeError(f"harmonics applies to the gibbs method only, not {method!r}")
+        if harmonics < 1:
+            raise DownholeError(f"harmonics must be at least 1, got {harmonics}")
+        options["harmonics"] = harmonics
+    damping = string.damping_coefficient(damping_factor)
+    static = string.static_tension(fluid_density, gravity)
+    if upward:
+        w, f = march(string.reversed(), period, position, -load, damping, **options)   # T_s(L) = 0
+        w, f = w[..., ::-1, :], -f[..., ::-1, :]
+    else:
+        w, f = march(string, period, position, load - static[0], damping, **options)
+    tension = f + static[:, None]
+    return DownholeCard(method=method, period=float(period), damping_factor=float(damping_factor),
+                        damping_coefficient=damping, buoyant_weight=float(static[0]),
+                        surface_position=w[..., 0, :], surface_load=tension[..., 0, :],
+                        pump_position=w[..., -1, :], pump_load=tension[..., -1, :],
+                        joint_position=w, joint_load=tension)
+
+
+def pump_card(string: RodString, period: float, position, load, *, fluid_density: float,
+              damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
+              harmonics: int | None = None, gravity: float = STANDARD_GRAVITY, check: bool = True) -> DownholeCard:
+    """Pump card (plunger position and net plunger load) from a surface card.
+
+    Parameters
+    ----------
+    string : RodString
+        The rods, top section first.
+    period : float
+        T [s] of one stroke; the card is sampled at t_k = k T / N, k = 0 .. N-1.
+    position : array_like
+        Polished-rod position [m], up positive, shape (N,) or (B, N) for B cards of the
+        same string and period.
+    load : array_like
+        Polished-rod load [N], same shape.
+    fluid_density : float
+        rho_f [kg/m^3] of the fluid around the rods (buoyancy).
+    damping_factor : float
+        Gibbs' nu [-]; c = pi a nu / (2 L) [Gibbs1963].
+    method : str
+        One of :func:`downhole_methods`.
+    harmonics : int, optional
+        ``gibbs`` only: highest harmonic kept (default all the grid resolves).
+    gravity : float
+        g [m/s^2].
+    check : bool
+        Run :func:`check_card` first (default).
+
+    Returns
+    -------
+    DownholeCard
+        Pump position [m] and load [N] on the same grid, and the section-end loads.
+
+    Raises
+    ------
+    DownholeError
+        Unknown method (the message lists the valid ones; it is a ValueError), a card
+        that is not finite, or one :func:`check_card` refuses.
+
+    References
+    ----------
+    [Gibbs1963], [GibbsNeely1966], [EverittJennings1992].
+    """
+    position, load = _card_arrays(period, position, load, "surface card")
+    _march_function(method)
+    if check:
+        check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
+    return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
+                  method=method, harmonics=harmonics, gravity=gravity, upward=False)
+
+
+def surface_card(string: RodString, period: float, pump_position, pump_load, *, fluid_density: float,
+                 damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
+                 harmonics: int | None = None, gravity: float = STANDARD_GRAVITY) -> DownholeCard:
+    """Surface card from a pump card: the forward transfer, the same equations upward.
+
+    Parameters are those of :func:`pump_card`, with the plunger position [m] and net
+    plunger load [N] as input; no plausibility check is made.
+
+    References
+    ----------
+    [Gibbs1963], [EverittJennings1992].
+    """
+    position, load = _card_arrays(period, pump_position, pump_load, "pump card")
+    return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
+                  method=method, harmonics=harmonics, gravity=gravity, upward=True)
+
+
+def damping_for_pump_work(string: RodString, period: float, position, load, pump_work: float, *,
+                          fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
+                          largest: float = 2.0) -> float:
+    """The damping factor nu at which the pump card does a given work per cycle [-].
+
+    Energy balance of the rods over one cycle: surface card work = pump card work +
+    damping dissipation. When the useful pump work is known (e.g. the hydraulic work per
+    stroke from the production rate and the net lift), the dissipation, hence nu, follows
+    [Gibbs1963] (Gibbs estimated c from polished-rod minus hydraulic power). Solved by
+    Brent's method on nu in [0, largest].
+
+    Parameters
+    ----------
+    string, period, position, load, fluid_density, method, gravity
+        As :func:`pump_card`, for ONE card (shape (N,)).
+    pump_work : float
+        Target work of the pump card per cycle [J].
+    largest : float
+        Upper end of the search [-].
+
+    Raises
+    ------
+    DownholeError
+        If the target is not between the pump work at nu = largest and at nu = 0 (the
+        surface card's work): no damping explains it.
+    """
+    from scipy.optimize import brentq
+
+    position, load = _card_arrays(period, position, load, "surface card")
+    if position.ndim != 1:
+        raise DownholeError("damping_for_pump_work takes one card of shape (N,)")
+
+    def excess(nu: float) -> float:
+        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
+                         method=method, gravity=gravity, check=False)
+        return float(card_work(card.pump_position, card.pump_load)) - pump_work
+
+    undamped, damped = excess(0.0), excess(largest)
+    if not (damped <= 0.0 <= undamped):
+        raise DownholeError(f"pump work {pump_work / 1e3:.4g} kJ per cycle is outside "
+                            f"{(damped + pump_work) / 1e3:.4g}-{(undamped + pump_work) / 1e3:.4g} kJ, the pump "
+                            f"work for damping factors {largest:g}-0: no damping factor explains it")
+    return float(brentq(excess, 0.0, largest, xtol=1e-10))
+
+
+def load_transfer_slope(position, load) -> np.ndarray:
+    """Diagonal slope of a card, R / S [N/m]: load range over position range, per card.
+
+    Any card has two points (its minimum and maximum load) whose secant is at least
+    R / S steep, so R / S is a lower bound of the card's steepest load transfer. A
+    quasi-static string transfers load no faster than its spring constant k_r (a stuck
+    plunger gives exactly R / S = k_r); dynamic loads add to R, hence the margin of
+    :func:`check_card`. A measured slope such as the 25 %-75 % secant of the pickup is
+    not used: the rods' inertia near the bottom of the stroke makes it steep on sound
+    cards.
+    """
+    position = np.atleast_2d(position)
+    load = np.atleast_2d(load)
+    stroke = np.ptp(position, axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(stroke > 0, np.ptp(load, axis=-1) / np.where(stroke > 0, stroke, 1.0), np.inf)
+
+
+def check_card(string: RodString, position, load, *, fluid_density: float,
+               gravity: float = STANDARD_GRAVITY) -> None:
+    """Refuse a surface card these rods cannot have produced, with a one-line reason.
+
+    * a minimum load above the rods' weight in air W_r (the polished rod never carries
+      more than the whole string at the bottom of a downstroke);
+    * a maximum load below their buoyant weight W_rf (the upstroke lifts the rods);
+    * a load-transfer slope (:func:`load_transfer_slope`, the card's R / S) above
+      LOAD_TRANSFER_MARGIN times the rods' spring constant k_r = 1 / sum(L_i / (E_i A_i))
+      [API11L]: a position axis in the wrong unit or rod data of the wrong well.
+
+    Raises
+    ------
+    DownholeError
+        Naming the card (for a batch), the quantity and the limit.
+    """
+    position, load = (np.atleast_2d(array) for array in as_cards(position, load, "surface card"))
+    weight_in_air = string.weight_in_air(gravity)
+    buoyant = string.buoyant_weight(fluid_density, gravity)
+    slope = load_transfer_slope(position, load)
+    limit = LOAD_TRANSFER_MARGIN * string.spring_constant
+    tests = (
+        (load.min(axis=-1) > weight_in_air,
+         lambda i: f"minimum load {load[i].min() / 1e3:.4g} kN is above the rods' weight in air "
+                   f"{weight_in_air / 1e3:.4g} kN: wrong load datum or wrong rod string"),
+        (load.max(axis=-1) < buoyant,
+         lambda i: f"maximum load {load[i].max() / 1e3:.4g} kN is below the rods' buoyant weight "
+                   f"{buoyant / 1e3:.4g} kN: wrong load datum or wrong rod string"),
+        (slope > limit,
+         lambda i: f"load-transfer slope {slope[i] / 1e3:.4g} kN/m is stiffer than {LOAD_TRANSFER_MARGIN:g} "
+                   f"x the rods' spring constant {string.spring_constant / 1e3:.4g} kN/m: "
+                   f"position in the wrong unit or wrong rod string"),
+    )
+    for failed, message in tests:
+        if failed.any():
+            index = int(np.flatnonzero(failed)[0])
+            prefix = f"surface card {index + 1}: " if len(load) > 1 else "surface card: "
+            raise DownholeError(prefix + message(index))

@@ -1,0 +1,80 @@
+"""Gibbs' frequency-domain solution of the damped wave equation, marched through the tapers.
+
+Displacement w(x, t) is positive UP and x is measured down the string; the dynamic
+tension is F = -E A dw/dx. In every section
+
+    m w_tt = E A w_xx - c m w_t,      a^2 = E A / m                        [Gibbs1963]
+
+For the harmonic e^{i omega t} the amplitude obeys W'' = beta^2 W with
+beta^2 = (-omega^2 + i omega c) / a^2, so over a section of length l
+
+    W(l) = cosh(beta l) W(0) - sinh(beta l) / (E A beta) F(0)
+    F(l) = -E A beta sinh(beta l) W(0) + cosh(beta l) F(0)
+
+(determinant 1; every entry is even in beta, so the branch of the square root does not
+matter). Displacement and force are continuous at each joint, so the sections chain as
+a product of these matrices [GibbsNeely1966]. The surface card enters as the Fourier
+series of its position and dynamic load; the result is exact for the periodic steady
+state of the trigonometric interpolant of the samples.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .string import RodString
+
+
+def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffness: float,
+                    damping: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic."""
+    beta = np.sqrt((-(omega**2) + 1j * omega * damping).astype(complex)) / wave_speed
+    z = beta * length
+    with np.errstate(invalid="ignore", divide="ignore"):
+        sinhc = np.where(z == 0, 1.0, np.sinh(z) / np.where(z == 0, 1.0, z))
+    return np.cosh(z), length * sinhc / stiffness, stiffness * z * np.sinh(z) / length
+
+
+def march(string: RodString, period: float, position: np.ndarray, load: np.ndarray, damping: float,
+          harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Displacement and dynamic tension at every section end from those at the top.
+
+    Parameters
+    ----------
+    string : RodString
+        Sections in marching order (the top one first).
+    period : float
+        T [s] of the card.
+    position : numpy.ndarray
+        w(0, t_k) [m], shape (..., N), uniform grid t_k = k T / N, up positive.
+    load : numpy.ndarray
+        Dynamic tension F(0, t_k) [N], same shape.
+    damping : float
+        c [1/s].
+    harmonics : int, optional
+        Highest harmonic kept; default (N - 1) // 2, every harmonic the grid resolves
+        (the Nyquist term of an even N is dropped: its sine part is not sampled).
+
+    Returns
+    -------
+    position, load : numpy.ndarray
+        Shape (..., S + 1, N): index 0 the top, index S the bottom of the last section.
+
+    References
+    ----------
+    [Gibbs1963], [GibbsNeely1966].
+    """
+    samples = position.shape[-1]
+    highest = (samples - 1) // 2 if harmonics is None else min(int(harmonics), (samples - 1) // 2)
+    omega = 2.0 * np.pi * np.arange(highest + 1) / period
+    w = np.fft.rfft(position, axis=-1)[..., : highest + 1]
+    f = np.fft.rfft(load, axis=-1)[..., : highest + 1]
+    ends_w, ends_f = [w], [f]
+    stiffness = string.youngs_modulus * string.area
+    for length, speed, ea in zip(string.length, string.wave_speed, stiffness):
+        cosh, compliance, rigidity = _section_matrix(omega, length, speed, ea, damping)
+        w, f = cosh * w - compliance * f, cosh * f - rigidity * w
+        ends_w.append(w)
+        ends_f.append(f)
+    return (np.fft.irfft(np.stack(ends_w, axis=-2), n=samples, axis=-1),
+            np.fft.irfft(np.stack(ends_f, axis=-2), n=samples, axis=-1))
