@@ -11,12 +11,14 @@ from __future__ import annotations
 
 import importlib
 import sys
+import warnings
 
 import typer
 from typer.core import TyperGroup
 
 from . import __version__
 from .errors import PumpjackError
+from .render import drop_stdout
 
 #: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
 #: The summary is the first line of the function's docstring (a test keeps them equal).
@@ -94,13 +96,19 @@ def _fail(message: str) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the CLI; return the exit code (console-script entry point)."""
+    """Run the CLI; return the exit code (console-script entry point).
+
+    Floating-point warnings are not printed: a result that is not finite is refused by
+    the renderer with one line naming it.
+    """
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
     command = typer.main.get_command(app)
     try:
-        code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)
     except (PumpjackError, typer.TyperException) as exc:
         if debug:
             raise
@@ -108,8 +116,14 @@ def main(argv: list[str] | None = None) -> int:
         return _fail(" ".join(message.split()))
     except BrokenPipeError:
         # The reader of a pipe (`| head`) went away: stop quietly, as cat does.
-        sys.stderr.close()
+        drop_stdout()
         return 1
+    except MemoryError:
+        if debug:
+            raise
+        return _fail("not enough memory for this computation: use fewer --steps or a smaller input")
+    except KeyboardInterrupt:
+        return 130
     return code if isinstance(code, int) else 0
 
 

@@ -11,7 +11,9 @@ from typing import Annotated
 
 import typer
 
-from .render import emit
+from .errors import PumpjackError
+from .quantities import parse_quantity
+from .render import Outputs
 from .results import Result
 
 
@@ -61,7 +63,22 @@ RotationOption = Annotated[Rotation, typer.Option(
     "motion from the machine's equation of motion under this card (as `pumpjack dynamics --card`)")]
 
 
-def output(result: Result, shown: tuple[str, ...], fmt: Format | None, units: UnitSystem, out: Path | None,
-           plot: Path | None) -> None:
-    """Hand a result to the renderer, with the columns ``shown`` in the terminal table."""
-    emit(result.showing(shown), fmt.value if fmt else None, units.value, out, plot)
+class Output:
+    """The output options of a command, checked before it computes anything."""
+
+    def __init__(self, fmt: Format | None, units: UnitSystem, out: Path | None, plot: Path | None):
+        self.targets = Outputs(fmt.value if fmt else None, units.value, out, plot)
+
+    def emit(self, result: Result, shown: tuple[str, ...]) -> None:
+        """Hand a result to the renderer, with the columns ``shown`` in the terminal table."""
+        self.targets.emit(result.showing(shown))
+
+
+def quantity(text: str | None, dimension: str, option: str) -> float | None:
+    """An option's value with its unit (``--mass "3000 kg"``) in SI; a bare number is refused."""
+    if text is None:
+        return None
+    try:
+        return parse_quantity(text, dimension, require_unit=True)
+    except ValueError as exc:
+        raise PumpjackError(f"{option}: {exc}") from None

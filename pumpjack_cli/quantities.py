@@ -69,23 +69,35 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "psi": POUND_FORCE / INCH**2},
 }
 
+#: A unit to suggest when one is missing, per dimension.
+_EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
+                  "rotational_speed": "rpm", "angle": "deg", "power": "kW", "density": "kg/m3",
+                  "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
+                  "pressure": "MPa"}
+
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 
 def _normalise_unit(text: str) -> str:
-    """Fold the spellings of a unit: case, multiplication dots, superscripts."""
-    text = text.lower().replace(" ", "")
+    """Fold the spellings of a unit: case, multiplication dots or spaces, superscripts.
+
+    A space between two symbols multiplies them (``"N m"`` is N*m), so ``"m m"`` is m*m,
+    an area, never mm.
+    """
+    text = re.sub(r"\s*([·⋅×.*/^])\s*", r"\1", text.strip().lower())
+    text = re.sub(r"\s+", "*", text)
     for dot in ("·", "⋅", "×", "."):
         text = text.replace(dot, "*")
     return text.replace("²", "2").replace("³", "3").replace("^", "").replace("°", "deg")
 
 
-def parse_quantity(value: object, dimension: str) -> float:
+def parse_quantity(value: object, dimension: str, require_unit: bool = False) -> float:
     """Convert a config value of the given dimension to an SI float.
 
-    Plain numbers are taken as SI. Strings carry a unit from :data:`INPUT_UNITS`;
-    a string without a unit is taken as SI. A decimal comma is rejected, never
-    guessed (``"3,5 m"`` could be 3.5 m or 35 m).
+    Plain numbers are taken as SI, unless ``require_unit`` (command-line options whose
+    name does not carry the unit). Strings carry a unit from :data:`INPUT_UNITS`; a
+    string without a unit is taken as SI likewise. A decimal comma is rejected, never
+    guessed (``"3,5 m"`` could be 3.5 m or 35 m); so are infinite and NaN values.
 
     >>> parse_quantity("3500 mm", "length")
     3.5
@@ -93,10 +105,21 @@ def parse_quantity(value: object, dimension: str) -> float:
     3.4925
     >>> round(parse_quantity("1460 rpm", "rotational_speed"), 4)   # 1460 x 2 pi / 60 = 152.89084...
     152.8908
+    >>> parse_quantity("12 N m", "torque")
+    12.0
+    >>> parse_quantity("0.1", "angle", require_unit=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: '0.1' has no unit: write it with one, e.g. '0.1 deg'
+
     """
     if isinstance(value, bool):
         raise ValueError("expected a number or a string with a unit, got a boolean")
     if isinstance(value, (int, float)):
+        if require_unit:
+            raise ValueError(f"{value!r} has no unit: write it with one, e.g. '{value} {_EXAMPLE_UNITS[dimension]}'")
+        if not math.isfinite(value):
+            raise ValueError(f"{value!r} is not a finite number")
         return float(value)
     if not isinstance(value, str):
         raise ValueError(f"expected a number or a string with a unit, got {type(value).__name__}")
@@ -106,7 +129,11 @@ def parse_quantity(value: object, dimension: str) -> float:
     if not match:
         raise ValueError(f"{value!r} is not a number with a unit")
     number, unit = float(match.group(1)), _normalise_unit(match.group(2))
+    if not math.isfinite(number):
+        raise ValueError(f"{value!r} is not a finite number")
     if not unit:
+        if require_unit:
+            raise ValueError(f"{value!r} has no unit: write it with one, e.g. '{value.strip()} {_EXAMPLE_UNITS[dimension]}'")
         return number
     units = INPUT_UNITS[dimension]
     if unit not in units:

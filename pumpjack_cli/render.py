@@ -22,6 +22,7 @@ import json
 import math
 import os
 import shutil
+import stat
 import sys
 import tempfile
 import textwrap
@@ -30,6 +31,7 @@ from typing import Any, TextIO
 
 from .errors import PumpjackError
 from .quantities import output_unit
+from .text_input import describe_os_error
 from .results import TEXT, Column, Result
 
 FORMATS = ("table", "csv", "json")
@@ -40,6 +42,8 @@ CSV_BLOCK = 4096
 PARALLEL_ROWS = 100_000
 #: Width of a table written to a file.
 FILE_TABLE_WIDTH = 160
+#: Output paths written in place, never replaced by a rename (devices, /dev/stdout, /proc/self/fd/N).
+SPECIAL_FILES = ("/dev/", "/proc/")
 
 
 def display_name(name: str, quantity: str, system: str) -> str:
@@ -248,8 +252,9 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
     stream.write("\n".join(lines) + "\n")
 
 
-def write_plot(result: Result, system: str, path: Path) -> None:
-    """Each panel against the first column, dashed curves for approximations."""
+def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
+    """Each panel against the first column, dashed curves for approximations, to a binary
+    stream in ``file_format`` (png, svg or pdf)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -274,37 +279,86 @@ def write_plot(result: Result, system: str, path: Path) -> None:
     np.atleast_1d(axes)[-1].set_xlabel(f"{x_col.name} [{x_unit.label}]")
     fig.suptitle(result.title)
     fig.tight_layout()
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, format=path.suffix.lstrip(".").lower())
+    fig.savefig(stream, format=file_format)
     plt.close(fig)
 
 
-class atomic_path:
-    """Context manager yielding a temporary path beside ``path``; renamed onto it on success."""
+class Target:
+    """One output file, checked before anything is computed, written at the end.
 
-    def __init__(self, path: Path):
-        self.path = path
+    A regular file (or a new one) is written to a temporary file beside it and renamed
+    onto it only when everything has been written; anything else (a device, a FIFO,
+    ``/dev/stdout``) is written in place, never replaced.
+    """
 
-    def __enter__(self) -> Path:
-        directory = self.path.parent if str(self.path.parent) else Path(".")
+    def __init__(self, path: Path, option: str):
+        self.path, self.option = path, option
+        self.tmp: Path | None = None
+        try:
+            info = os.stat(path)
+        except FileNotFoundError:
+            info = None
+        except OSError as exc:
+            raise PumpjackError(f"{option} {path}: {describe_os_error(exc)}") from None
+        if info is not None and stat.S_ISDIR(info.st_mode):
+            raise PumpjackError(f"{option} {path}: is a directory")
+        real = os.path.realpath(path)
+        self.in_place = (info is not None and not stat.S_ISREG(info.st_mode)) or real.startswith(SPECIAL_FILES) \
+            or str(path).startswith(SPECIAL_FILES)
+        self.mode = stat.S_IMODE(info.st_mode) if info is not None and not self.in_place else None
+        if self.in_place:
+            if info is not None and not os.access(path, os.W_OK):
+                raise PumpjackError(f"{option} {path}: not writable")
+            return
+        self.path = Path(real)  # through a symbolic link: replace the file it points to, keep the link
+        directory = self.path.parent
         if not directory.is_dir():
-            raise PumpjackError(f"{self.path}: directory {directory} does not exist")
-        fd, name = tempfile.mkstemp(prefix=f".{self.path.name}.", dir=directory)
-        os.close(fd)
-        self.tmp = Path(name)
-        return self.tmp
+            raise PumpjackError(f"{option} {path}: directory {path.parent} does not exist")
+        if not os.access(directory, os.W_OK | os.X_OK):
+            raise PumpjackError(f"{option} {path}: directory {path.parent} is not writable")
 
-    def __exit__(self, exc_type, exc, tb) -> None:
-        if exc_type is None:
+    def open(self, binary: bool = False):
+        """A stream to write to: the temporary file, or the target itself when written in place."""
+        try:
+            if self.in_place:
+                return open(self.path, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
+            fd, name = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.path.suffix, dir=self.path.parent)
+            self.tmp = Path(name)
+            return os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
+        except OSError as exc:
+            raise PumpjackError(f"{self.option} {self.path}: cannot write: {describe_os_error(exc)}") from None
+
+    def commit(self) -> None:
+        """Move the written temporary file onto the target, with the target's mode (or the usual one)."""
+        if self.tmp is None:
+            return
+        if self.mode is None:
             umask = os.umask(0)
             os.umask(umask)
-            os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp makes 0600; give the usual mode
-            os.replace(self.tmp, self.path)
-        else:
+        os.chmod(self.tmp, self.mode if self.mode is not None else 0o666 & ~umask)
+        os.replace(self.tmp, self.path)
+        self.tmp = None
+
+    def discard(self) -> None:
+        if self.tmp is not None:
             self.tmp.unlink(missing_ok=True)
+            self.tmp = None
 
 
 _WRITERS = {"csv": write_csv, "json": write_json, "table": write_table}
+
+
+def drop_stdout() -> None:
+    """Point standard output at /dev/null, so that the text still buffered for a pipe that
+    closed (or a full disk) is not written again, and complained about, at exit."""
+    if sys.stdout is None:
+        return
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
 
 
 def choose_format(fmt: str | None, output: Path | None) -> str:
@@ -313,22 +367,56 @@ def choose_format(fmt: str | None, output: Path | None) -> str:
         return fmt
     if output is not None:
         return {".json": "json", ".csv": "csv", ".txt": "table"}.get(output.suffix.lower(), "csv")
-    return "table" if sys.stdout.isatty() else "csv"
+    return "table" if sys.stdout is not None and sys.stdout.isatty() else "csv"
 
 
-def emit(result: Result, fmt: str | None, system: str, output: Path | None, plot: Path | None) -> None:
-    """Write the result to stdout or ``output`` (atomically) and optionally a plot."""
-    check_finite(result)
-    if plot is not None and plot.suffix.lower() not in PLOT_SUFFIXES:
-        raise PumpjackError(f"--plot {plot}: use a file ending in {', '.join(PLOT_SUFFIXES)}")
-    fmt = choose_format(fmt, output)
-    if output is None:
-        _WRITERS[fmt](result, system, sys.stdout)
-    else:
-        with atomic_path(output) as tmp, open(tmp, "w", encoding="utf-8", newline="") as stream:
-            if fmt == "table":
-                write_table(result, system, stream, width=FILE_TABLE_WIDTH)
+class Outputs:
+    """Where a result goes, checked when a command starts (before anything is computed):
+    stdout or an ``--output`` file in a format, and an optional ``--plot`` file.
+
+    :meth:`emit` writes the plot and the output to temporary files (or stdout) and moves
+    them into place only when both are complete, so a failure leaves every pre-existing
+    file as it was and no temporary file behind.
+    """
+
+    def __init__(self, fmt: str | None, system: str, output: Path | None, plot: Path | None):
+        if plot is not None and plot.suffix.lower() not in PLOT_SUFFIXES:
+            raise PumpjackError(f"--plot {plot}: use a file ending in {', '.join(PLOT_SUFFIXES)}")
+        if output is not None and plot is not None and os.path.abspath(output) == os.path.abspath(plot):
+            raise PumpjackError(f"--output and --plot name the same file {output}")
+        if output is None and sys.stdout is None:
+            raise PumpjackError("standard output is closed: give --output FILE")
+        self.system = system
+        self.format = choose_format(fmt, output)
+        self.output = None if output is None else Target(output, "--output")
+        self.plot = None if plot is None else Target(plot, "--plot")
+
+    def emit(self, result: Result) -> None:
+        """Write the result (and its plot); one line on failure, nothing half-written."""
+        check_finite(result)
+        targets = [t for t in (self.plot, self.output) if t is not None]
+        try:
+            if self.plot is not None:
+                with self.plot.open(binary=True) as stream:
+                    draw_plot(result, self.system, stream, self.plot.path.suffix.lstrip(".").lower())
+            if self.output is None:
+                _WRITERS[self.format](result, self.system, sys.stdout)
+                sys.stdout.flush()
             else:
-                _WRITERS[fmt](result, system, stream)
-    if plot is not None:
-        write_plot(result, system, plot)
+                with self.output.open() as stream:
+                    if self.format == "table":
+                        write_table(result, self.system, stream, width=FILE_TABLE_WIDTH)
+                    else:
+                        _WRITERS[self.format](result, self.system, stream)
+            for target in targets:
+                target.commit()
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            if self.output is None and exc.filename is None:
+                drop_stdout()
+                raise PumpjackError(f"cannot write standard output: {describe_os_error(exc)}") from None
+            raise PumpjackError(f"cannot write {exc.filename or 'the output'}: {describe_os_error(exc)}") from None
+        finally:
+            for target in targets:
+                target.discard()

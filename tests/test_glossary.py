@@ -28,7 +28,7 @@ RUNS = [
     ("dynamics", "sk8-3.5-4000", "--steps", "8", "--card", SK8_CARD),
     ("inertia-error", "unb-600a", "--steps", "8"),
     ("inertia-error", "unb-600a", "--steps", "8", "--support-friction"),
-    ("inertia-error", "sk8-3.5-4000", "--steps", "8", "--mass", "100"),
+    ("inertia-error", "sk8-3.5-4000", "--steps", "8", "--mass", "100 kg"),
 ]
 
 

@@ -62,7 +62,7 @@ def test_slider_summary_reproduces_seed_equations(run_cli):
 
 
 def test_slider_json_equals_library(run_cli):
-    doc = _json(run_cli, UNB, "--steps", "24", "--rpm", "50", "--mass", "300")
+    doc = _json(run_cli, UNB, "--steps", "24", "--rpm", "50", "--mass", "300 kg")
     omega = parse_quantity("50 rpm", "rotational_speed")  # the CLI's conversion of --rpm
     c = slider_inertia_laws(SliderCrank(R, L2), omega, crank_grid(24))
     series, summary = doc["series"], doc["summary"]
@@ -123,7 +123,7 @@ def test_beam_unit_peak_error_agrees_with_kinematics_command(run_cli):
 
 
 def test_beam_unit_with_mass_gives_forces(run_cli):
-    doc = _json(run_cli, "sk8-3.5-4000", "--mass", "5000", "--steps", "6")
+    doc = _json(run_cli, "sk8-3.5-4000", "--mass", "5000 kg", "--steps", "6")
     assert doc["series"]["inertia_force_n"] == pytest.approx([-5000 * a for a in doc["series"]["acceleration_m_s2"]], rel=1e-15)
     assert doc["summary"]["peak_inertia_force_n"] == pytest.approx(5000 * doc["summary"]["peak_acceleration_m_s2"], rel=1e-15)
 
@@ -185,8 +185,8 @@ def test_bad_unit_file_exits_2_with_one_line(run_cli, tmp_path, old, new, messag
 
 
 @pytest.mark.parametrize("args, message", [
-    ((UNB, "--mass", "-5"), "--mass must be positive"),
-    ((UNB, "--mass", "0"), "--mass must be positive"),
+    ((UNB, "--mass", "-5 kg"), "--mass must be positive"),
+    ((UNB, "--mass", "0 kg"), "--mass must be positive"),
     ((UNB, "--rpm", "0"), "'--spm' / '--rpm'"),
     (("c-114d-133-54",), "give the speed with --spm"),
     (("sk8-3.5-4000", "--support-friction"), "--support-friction needs a slider-crank unit"),
@@ -212,5 +212,5 @@ def test_support_friction_needs_a_stepped_slider(run_cli, tmp_path):
 def test_real_console_script(run_script):
     done = run_script("inertia-error", UNB, "--steps", "4", "-f", "csv")
     assert done.returncode == 0 and done.stdout.startswith("crank_angle_deg,")
-    done = run_script("inertia-error", UNB, "--mass", "-1")
+    done = run_script("inertia-error", UNB, "--mass", "-1 kg")
     assert done.returncode == 2 and done.stderr == "pumpjack: error: --mass must be positive, got -1.0 kg\n"

@@ -10,24 +10,19 @@ from ..core.dynamics.coefficients import CardLoad, Machine, mean_rod_speeds
 from ..core.dynamics.drive import drive_inertia, motor_characteristic
 from ..core.well import WellLoad, well_load
 from ..errors import PumpjackError
-from ..quantities import parse_quantity
 from .inputs import require
 
 
-def mass_model(unit, counterweight_count: int | None = None, counterweight_radius: str | None = None) -> MassModel:
-    """The unit's masses, with the number of counterweight blocks or their radius replaced if given."""
+def mass_model(unit, counterweight_count: int | None = None, counterweight_radius: float | None = None) -> MassModel:
+    """The unit's masses, with the number of counterweight blocks or their radius [m] replaced if given."""
     require(unit, "masses", "this analysis needs the link masses")
     counterweights = unit.masses.counterweights
     if counterweight_count is not None:
         counterweights = counterweights.model_copy(update={"count": counterweight_count})
     if counterweight_radius is not None:
-        try:
-            radius = parse_quantity(counterweight_radius, "length")
-        except ValueError as exc:
-            raise PumpjackError(f"--counterweight-radius: {exc}") from None
-        if not 0 <= radius <= 5:
-            raise PumpjackError(f"--counterweight-radius: {radius} m is outside 0..5 m")
-        counterweights = counterweights.model_copy(update={"radius": radius})
+        if not 0 <= counterweight_radius <= 5:
+            raise PumpjackError(f"--counterweight-radius: {counterweight_radius} m is outside 0..5 m")
+        counterweights = counterweights.model_copy(update={"radius": counterweight_radius})
     return unit.masses.model_copy(update={"counterweights": counterweights}).model()
 
 

@@ -9,7 +9,6 @@ from pydantic import ValidationError
 from ..core.beam.reactions import joint_reactions
 from ..core.sampling import largest_magnitude, signed_extremes
 from ..errors import PumpjackError
-from ..quantities import parse_quantity
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, card_run
 from .inputs import require
@@ -53,7 +52,7 @@ def _run_columns(run: CardRun) -> list[Column]:
 
 def reactions(unit, card: Path, card_units: str, spm: float | None, steps: int, rotation: str, *,
               weights: bool = True, inertia: bool = True, counterweight_count: int | None = None,
-              counterweight_radius: str | None = None) -> Result:
+              counterweight_radius: float | None = None) -> Result:
     """The rational mechanism's reactions, bearing moments and balancing torque under a card."""
     masses = mass_model(unit, counterweight_count, counterweight_radius)
     spatial = unit.geometry.spatial(unit.name)
@@ -91,25 +90,17 @@ def reactions(unit, card: Path, card_units: str, spm: float | None, steps: int, 
     return Result(title, tuple(summary), tuple(columns), panels)
 
 
-def deviations(unit, given: dict[str, str | None]):
-    """The unit's [deviations] with the values given on the command line (text with units) replacing them."""
-    update = {}
-    for field, text in given.items():
-        if text is None:
-            continue
-        try:
-            update[field] = parse_quantity(text, DEVIATIONS[field])
-        except ValueError as exc:
-            raise PumpjackError(f"--{field.replace('_', '-')}: {exc}") from None
+def deviations(unit, given: dict[str, float]):
+    """The unit's [deviations] with the values given on the command line (SI) replacing them."""
     try:
-        return type(unit.deviations).model_validate(unit.deviations.model_dump() | update)
+        return type(unit.deviations).model_validate(unit.deviations.model_dump() | given)
     except ValidationError as exc:
         first = exc.errors()[0]
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
 
 
 def compare_redundancy(unit, card: Path, card_units: str, spm: float | None, steps: int, rotation: str,
-                       given_deviations: dict[str, str | None]) -> Result:
+                       given_deviations: dict[str, float]) -> Result:
     """The real mechanism (revolute pins, elastic pitmans, errors) beside the rational one under a card."""
     require(unit, "pitman_section", "the real mechanism needs the pitman's stiffness")
     errors = deviations(unit, given_deviations)

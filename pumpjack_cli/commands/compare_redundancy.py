@@ -7,10 +7,11 @@ from typing import Annotated
 
 import typer
 
+from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
 from ..options import (CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, output)
+                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "balancing_torque_real")
 
@@ -41,8 +42,10 @@ def compare_redundancy(
     """Real mechanism (redundant constraints, elastic pitmans, errors) against the rational one.
 
     Reactions, joint moments and balancing torque of both from a dynamometer card."""
-    given = {"crank_phase": crank_phase, "crank_radius": crank_radius, "pitman_length": pitman_length,
+    sink = Output(fmt, units, out, plot)
+    texts = {"crank_phase": crank_phase, "crank_radius": crank_radius, "pitman_length": pitman_length,
              "crank_pin_tilt_radial": crank_pin_tilt_radial, "crank_pin_tilt_tangential": crank_pin_tilt_tangential,
              "equalizer_pin_roll": equalizer_pin_roll, "equalizer_pin_yaw": equalizer_pin_yaw}
-    result = run(load_unit(unit), card, card_units.value, spm, steps, rotation.value, given)
-    output(result, SHOWN, fmt, units, out, plot)
+    given = {field: quantity(text, DEVIATIONS[field], "--" + field.replace("_", "-"))
+             for field, text in texts.items() if text is not None}
+    sink.emit(run(load_unit(unit), card, card_units.value, spm, steps, rotation.value, given), SHOWN)

@@ -10,7 +10,7 @@ import typer
 from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
-from ..options import CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from ..options import CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -34,4 +34,5 @@ def dynamics(
 
     The periodic motion under the motor's characteristic, the well (or a dynamometer
     card) and the weights."""
-    output(run(load_unit(unit), card, card_units.value, rtol, steps), SHOWN, fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot)
+    sink.emit(run(load_unit(unit), card, card_units.value, rtol, steps), SHOWN)

@@ -8,7 +8,7 @@ import typer
 
 from ..analysis.inertia import inertia_error as run
 from ..config import load_any_unit
-from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity
 
 SHOWN_LAWS = ("crank_angle", "time", "position", "velocity", "acceleration", "inertia_force")
 SHOWN_SUPPORT = ("crank_angle", "travel", "outer_edge_reaction", "inner_edge_reaction", "guide_friction",
@@ -22,9 +22,9 @@ def inertia_error(
         help="crank speed, revolutions (double strokes) per minute [default: slider-crank: from its file; "
              "beam unit: from motor and drive]",
     )] = None,
-    mass: Annotated[float | None, typer.Option(
-        help="reciprocating (suspended) mass in kg for the inertia forces [default: slider-crank: from its file; "
-             "beam unit: none, accelerations only]",
+    mass: Annotated[str | None, typer.Option(
+        help="reciprocating (suspended) mass with its unit, e.g. '3000 kg' or '6600 lb', for the inertia forces "
+             "[default: slider-crank: from its file; beam unit: none, accelerations only]",
     )] = None,
     support_friction: Annotated[bool, typer.Option(
         "--support-friction",
@@ -39,7 +39,7 @@ def inertia_error(
     """Error of the approximate inertia-force laws against the exact motion.
 
     Errors at the peak and over the cycle, for slider-crank and beam pumping units."""
-    result = run(load_any_unit(unit), spm, mass, support_friction, steps)
+    sink = Output(fmt, units, out, plot)
+    result = run(load_any_unit(unit), spm, quantity(mass, "mass", "--mass"), support_friction, steps)
     names = {c.name for c in result.columns}
-    shown = tuple(name for name in (SHOWN_SUPPORT if support_friction else SHOWN_LAWS) if name in names)
-    output(result, shown, fmt, units, out, plot)
+    sink.emit(result, tuple(name for name in (SHOWN_SUPPORT if support_friction else SHOWN_LAWS) if name in names))

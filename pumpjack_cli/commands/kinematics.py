@@ -8,7 +8,7 @@ import typer
 
 from ..analysis.kinematics import kinematics as run
 from ..config import load_unit
-from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, output
+from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 
 SHOWN = ("crank_angle", "time", "position", "velocity", "acceleration", "torque_factor")
 
@@ -25,4 +25,5 @@ def kinematics(
     """Exact kinematics of the polished rod, beam and pitman for uniform crank rotation.
 
     The elementary and refined textbook approximations are printed beside it."""
-    output(run(load_unit(unit), spm, steps), SHOWN, fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot)
+    sink.emit(run(load_unit(unit), spm, steps), SHOWN)

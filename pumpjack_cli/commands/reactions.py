@@ -9,7 +9,7 @@ import typer
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
 from ..options import (CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, output)
+                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque")
 
@@ -34,7 +34,8 @@ def reactions(
 
     The spatial mechanism without redundant constraints (spherical pins), with weights
     and d'Alembert inertia."""
+    sink = Output(fmt, units, out, plot)
+    radius = quantity(counterweight_radius, "length", "--counterweight-radius")
     result = run(load_unit(unit), card, card_units.value, spm, steps, rotation.value, weights=not no_weights,
-                 inertia=not no_inertia, counterweight_count=counterweight_count,
-                 counterweight_radius=counterweight_radius)
-    output(result, SHOWN, fmt, units, out, plot)
+                 inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
+    sink.emit(result, SHOWN)

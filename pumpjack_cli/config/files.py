@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib
 import json
+import os
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
@@ -18,10 +19,15 @@ from pathlib import Path
 from typing import Any, Callable
 
 from ..errors import ConfigError
+from ..text_input import read_text
 from .geometry_names import linkage_of, slider_crank_of
 
 BUNDLED_PACKAGE = "pumpjack_cli.configs"
 SUFFIXES = (".toml", ".yaml", ".yml", ".json")
+#: Largest unit file read [bytes]; the bundled ones are 2-5 kB.
+MAX_BYTES = 1 << 20
+#: Deepest nesting of tables and lists in a unit file (the schema needs 4).
+MAX_DEPTH = 8
 
 
 @dataclass(frozen=True)
@@ -49,26 +55,78 @@ UNIT_KINDS: dict[str, Kind] = {
 DEFAULT_KIND = "beam-pump"
 
 
+def _unique_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object that refuses a key given twice (json keeps the last one silently)."""
+    seen: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in seen:
+            raise ConfigError(f"key {key!r} is given twice")
+        seen[key] = value
+    return seen
+
+
+def _yaml_loader():
+    """A safe YAML loader that refuses duplicate keys and aliases (a small file with
+    nested aliases can expand beyond any memory)."""
+    import yaml
+
+    class Loader(yaml.SafeLoader):
+        def compose_node(self, parent, index):
+            if self.check_event(yaml.AliasEvent):
+                mark = self.peek_event().start_mark
+                raise yaml.YAMLError(f"aliases (*name) are not accepted, at line {mark.line + 1}")
+            return super().compose_node(parent, index)
+
+        def construct_mapping(self, node, deep=False):
+            keys = [self.construct_object(key, deep=deep) for key, _ in node.value]
+            for i, key in enumerate(keys):
+                if key in keys[:i]:
+                    line = node.value[i][0].start_mark.line + 1
+                    raise yaml.YAMLError(f"key {key!r} is given twice, at line {line}")
+            return super().construct_mapping(node, deep=deep)
+
+    return Loader
+
+
+def _depth(value: Any) -> int:
+    if isinstance(value, dict):
+        return 1 + max(map(_depth, value.values()), default=0)
+    if isinstance(value, list):
+        return 1 + max(map(_depth, value), default=0)
+    return 0
+
+
 def _parse_text(path: Path, text: str) -> Any:
     suffix = path.suffix.lower()
+    formats = {".toml": "TOML", ".json": "JSON", ".yaml": "YAML", ".yml": "YAML"}
+    if suffix not in formats:
+        raise ConfigError(f"{path}: unknown file type {suffix!r}; use one of {', '.join(SUFFIXES)}")
+    name = formats[suffix]
     try:
-        if suffix == ".toml":
-            return tomllib.loads(text)
-        if suffix == ".json":
-            return json.loads(text)
-        if suffix in (".yaml", ".yml"):
+        if name == "TOML":
+            data = tomllib.loads(text)
+        elif name == "JSON":
+            data = json.loads(text, object_pairs_hook=_unique_pairs)
+        else:
             import yaml
 
-            return yaml.safe_load(text)
+            try:
+                data = yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
+            except yaml.YAMLError as exc:
+                mark = getattr(exc, "problem_mark", None)
+                where = f" at line {mark.line + 1}" if mark is not None else ""
+                raise ConfigError(f"{path}: not valid YAML: {getattr(exc, 'problem', None) or exc}{where}") from None
     except tomllib.TOMLDecodeError as exc:
         raise ConfigError(f"{path}: not valid TOML: {exc}") from None
     except json.JSONDecodeError as exc:
         raise ConfigError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno}") from None
-    except Exception as exc:  # yaml.YAMLError; yaml is imported lazily
-        mark = getattr(exc, "problem_mark", None)
-        where = f" at line {mark.line + 1}" if mark is not None else ""
-        raise ConfigError(f"{path}: not valid YAML: {getattr(exc, 'problem', exc)}{where}") from None
-    raise ConfigError(f"{path}: unknown file type {suffix!r}; use one of {', '.join(SUFFIXES)}")
+    except ConfigError as exc:
+        raise ConfigError(f"{path}: not valid {name}: {exc}") from None
+    except RecursionError:
+        raise ConfigError(f"{path}: not valid {name}: nested too deep") from None
+    if _depth(data) > MAX_DEPTH:
+        raise ConfigError(f"{path}: nested {_depth(data)} levels deep; a unit file has at most {MAX_DEPTH}")
+    return data
 
 
 def format_validation_error(source: str, error) -> str:
@@ -87,6 +145,8 @@ def _kind(data: Any, source: str) -> Kind:
     if not isinstance(data, dict):
         raise ConfigError(f"{source}: expected a table of sections at the top level")
     kind = data.get("kind", DEFAULT_KIND)
+    if not isinstance(kind, str):
+        raise ConfigError(f"{source}: kind: must be text, one of {', '.join(UNIT_KINDS)}; got {kind!r}")
     if kind not in UNIT_KINDS:
         raise ConfigError(f"{source}: kind: unknown machine kind {kind!r}; use one of {', '.join(UNIT_KINDS)}")
     return UNIT_KINDS[kind]
@@ -104,11 +164,7 @@ def parse_unit(data: Any, source: str):
 
 
 def _read(path: Path) -> Any:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ConfigError(f"{path}: cannot read: {exc.strerror}") from None
-    return _parse_text(path, text)
+    return _parse_text(path, read_text(path, MAX_BYTES, "unit file", ConfigError))
 
 
 def read_unit_file(path: Path):
@@ -141,9 +197,7 @@ def unit_listing() -> list[dict[str, Any]]:
 def load_any_unit(spec: str):
     """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
     path = Path(spec)
-    if path.suffix.lower() in SUFFIXES or path.exists():
-        if not path.exists():
-            raise ConfigError(f"{spec}: no such file")
+    if path.suffix.lower() in SUFFIXES or os.path.lexists(spec) or os.sep in spec:
         return read_unit_file(path)
     units = bundled_units()
     key = spec.lower().replace(",", ".")
