@@ -1,169 +1,589 @@
-"""Reading dynamometer-card files (CSV) onto the crank-angle axis of a unit.
+"""Reading dynamometer-card files (delimited text) onto the crank-angle axis of a unit.
 
-Accepted columns (any order, names case-insensitive, ``#`` lines are comments):
+Layouts (any column order; see ``docs/cards.md`` for the whole contract):
 
-* ``crank_angle`` and ``load`` — crank angle in this package's convention (from 12
-  o'clock in the direction of rotation);
-* ``position`` and ``load`` — polished-rod position, in the order measured;
-* ``time``, ``position`` and ``load`` — the same with a time stamp, which must increase.
+* ``crank_angle`` and ``load``: load already on this package's crank angle;
+* ``position`` and ``load``: polished-rod position in the order measured; the branch
+  of each point (up or down) comes from its neighbours, the orientation of the loop
+  from the sign of its work (a pumping unit does positive work on the rods);
+* ``time``, ``position`` and ``load``: the time stamps are the speed: a uniform crank
+  rotation theta = theta_0 + omega t is fitted to the positions through the unit's
+  exact kinematics, and the fitted angles are used.
 
-Units come from the header, as a suffix or in brackets: ``position_in``,
-``load_lbf``, ``load [kN]``, ``crank_angle (deg)``, ``time_s``; columns without a
-unit take those of ``default_units`` (``si``: m, N, s, deg; ``field``: in, lbf, s, deg).
-Also accepted as names: angle/theta, displacement/pos, force/prl, t.
-
-A card of positions is shifted so that its lowest point is the bottom of the stroke
-and scaled to the unit's exact stroke; a card whose stroke differs from the unit's by
-more than :data:`STROKE_ERROR` is rejected, by more than :data:`STROKE_WARNING`
-warned about.
+Headers name the columns in any case, with units as a suffix (``load_lbf``), in
+brackets (``Load [kN]``) or after a comma (``Load, kN``); index columns (``index``,
+``sample``, ``n``, ``#``, ``point``) are ignored, other names can be mapped with
+``columns``. Delimiters: comma, semicolon or tab; decimal commas in semicolon or tab
+files. UTF-8 with or without a byte-order mark; LF, CRLF or CR line ends. Everything
+else is refused with a :class:`~pumpjack_cli.errors.CardError` of one line naming the
+file (``<stdin>`` for ``-``), the line and the column.
 """
 
 from __future__ import annotations
 
-import csv
+import dataclasses
 import math
+import os
 import re
+import stat
+import sys
+from collections.abc import Mapping
 from dataclasses import dataclass
+from itertools import repeat
 from pathlib import Path
+from typing import IO
 
 import numpy as np
 
-from .core.beam.card import Card, card_from_angles, crank_angle_from_position, upstroke_points
-from .core.beam.geometry import Linkage, dead_positions
-from .errors import PumpjackError
-from .units import INPUT_UNITS
+from .core.beam.card import (Card, card_from_angles, crank_angle_from_position, fit_uniform_rotation, largest_gap,
+                             loop_work, upstroke_points)
+from .core.beam.geometry import CLOCKWISE, Linkage
+from .errors import CardError
+from .units import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
 
+__all__ = ["CardError", "CardReading", "check_speed", "parse_card_columns", "read_card"]
+
+#: Relative stroke mismatch refused, and warned about (the card is scaled to the unit's stroke).
 STROKE_ERROR = 0.05
 STROKE_WARNING = 0.02
+#: RMS position residual of the time fit, relative to the stroke, refused and warned about.
+FIT_ERROR = 0.10
+FIT_WARNING = 0.02
+#: The other rotation direction "fits clearly better" when its residual is below half
+#: of the unit's and the unit's is above this fraction of the stroke.
+ROTATION_EVIDENCE = 0.002
+#: --spm and the card's time stamps may differ by this fraction; the card's speed wins.
+SPEED_TOLERANCE = 0.02
+#: A loop whose work is below this fraction of (stroke range x load range) has no
+#: clear orientation and is read as listed.
+WORK_TOLERANCE = 1e-3
+#: The largest crank rotation without a sample that still counts as a whole cycle [rad]
+#: (or two mean sample spacings, if larger).
+MAX_GAP = math.radians(30.0)
 MIN_POINTS = 8
+MAX_POINTS = 100_000
+MAX_COLUMNS = 64
+MAX_BYTES = 10_000_000
+STDIN = "-"
+STDIN_NAME = "<stdin>"
 
+#: Units of each column's dimension: lower-case spelling -> factor to SI.
+_UNITS = {
+    "angle": {"deg": math.pi / 180.0, "degree": math.pi / 180.0, "degrees": math.pi / 180.0, "°": math.pi / 180.0,
+              "rad": 1.0},
+    "time": {"s": 1.0, "sec": 1.0, "ms": 1e-3, "min": 60.0},
+    "length": {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "in": INCH, "ft": FOOT},
+    "force": {"n": 1.0, "kn": 1e3, "lb": POUND_FORCE, "lbs": POUND_FORCE, "lbf": POUND_FORCE,
+              "klb": 1e3 * POUND_FORCE, "klbs": 1e3 * POUND_FORCE, "kip": 1e3 * POUND_FORCE,
+              "kips": 1e3 * POUND_FORCE, "klbf": 1e3 * POUND_FORCE, "kgf": KILOGRAM_FORCE, "tf": 1e3 * KILOGRAM_FORCE},
+}
 #: Column kinds: accepted names and dimension.
-_COLUMNS = {
+_KINDS = {
     "crank_angle": (("crank_angle", "angle", "theta"), "angle"),
     "time": (("time", "t"), "time"),
     "position": (("position", "displacement", "pos"), "length"),
     "load": (("load", "force", "prl", "polished_rod_load"), "force"),
 }
-_TIME_UNITS = {"s": 1.0, "min": 60.0}
+_KIND_OF_NAME = {name: kind for kind, (names, _) in _KINDS.items() for name in names}
+#: Index or sample-number columns, ignored ('#' is read as 'no').
+_INDEX_NAMES = {"index", "idx", "i", "n", "no", "nr", "num", "number", "sample", "sample_no", "sample_number",
+                "point", "point_no", "point_number", "pt"}
 _DEFAULT_UNITS = {
     "si": {"angle": "deg", "time": "s", "length": "m", "force": "n"},
     "field": {"angle": "deg", "time": "s", "length": "in", "force": "lbf"},
 }
 _LAYOUTS = ({"crank_angle", "load"}, {"position", "load"}, {"time", "position", "load"})
-
-
-class CardError(PumpjackError):
-    """A card file that cannot be read or does not fit the unit."""
+_LAYOUT_TEXT = "a card has crank_angle and load, position and load, or time, position and load"
+_KNOWN_TEXT = ("known: crank_angle/angle/theta, time/t, position/displacement/pos, load/force/prl/polished_rod_load, "
+               "index columns (index, sample, n, #, point); map others with --card-columns position=...,load=...[,time=...]")
+_DELIMITERS = ("\t", ";", ",")
+_DELIMITER_NAMES = {"\t": "tab", ";": "semicolon", ",": "comma"}
+_UNIT_AT_END = re.compile(r"^(.*?)\s*(?:[\[(]\s*([^\[\]()]*?)\s*[\])]|,\s*([^,]+?))\s*$")
+_ROTATION_NAMES = {CLOCKWISE: "clockwise", -CLOCKWISE: "counterclockwise"}
 
 
 @dataclass(frozen=True)
 class CardReading:
-    """A card on the crank-angle axis plus what the reader noticed."""
+    """A card on the crank-angle axis, the samples it came from, and what the reader noticed.
+
+    ``load`` [N], ``crank_angle`` [rad] (fitted or mapped, in [0, 2 pi)), ``position``
+    [m] and ``time`` [s] are per sample, in SI, in cycle order (reversed when the file
+    was), a repeated closing sample dropped; ``position`` as read (not shifted or
+    scaled), None on a crank-angle card; ``time`` None without time stamps. ``speed``
+    is the fitted crank speed omega [rad/s] (the card's pumping speed), ``fit_rms`` the
+    RMS position residual of that fit [m] and ``fit_rms_relative`` the same over the
+    unit's stroke [-]; all three None without time stamps. ``reversed`` is True when
+    the rows were read in reverse (one warning says so).
+    """
 
     card: Card
     source: str
     warnings: tuple[str, ...]
+    load: np.ndarray
+    crank_angle: np.ndarray
+    position: np.ndarray | None = None
+    time: np.ndarray | None = None
+    speed: float | None = None
+    fit_rms: float | None = None
+    fit_rms_relative: float | None = None
+    reversed: bool = False
+
+    @property
+    def strokes_per_minute(self) -> float | None:
+        """The card's pumping speed [1/min], None without time stamps."""
+        return None if self.speed is None else self.speed * 30.0 / math.pi
 
 
-def _factors(dimension: str) -> dict[str, float]:
-    return _TIME_UNITS if dimension == "time" else INPUT_UNITS[dimension]
+@dataclass(frozen=True)
+class _Column:
+    values: np.ndarray
+    unit: str
+    factor: float
 
 
-def _parse_header(cell: str, source: str, default_units: str) -> tuple[str, float]:
-    """Column kind and factor to SI from one header cell."""
-    text = cell.strip().lower()
-    bracket = re.match(r"^(.*?)\s*[\[(]\s*(.+?)\s*[\])]$", text)
-    name, unit = (bracket.group(1), bracket.group(2)) if bracket else (text, None)
-    name = name.replace(" ", "_").replace("-", "_")
-    for kind, (names, dimension) in _COLUMNS.items():
-        factors = _factors(dimension)
-        candidates = [(name, unit)]
-        if unit is None and "_" in name:
-            stem, suffix = name.rsplit("_", 1)
-            candidates.insert(0, (stem, suffix))
-        for stem, suffix in candidates:
-            if stem not in names:
-                continue
-            if suffix is None:
-                return kind, factors[_DEFAULT_UNITS[default_units][dimension]]
-            key = suffix.replace("·", "*").replace(".", "*")
-            if key not in factors:
-                raise CardError(
-                    f"{source}: header: column {cell.strip()!r} has unit {suffix!r}, "
-                    f"not a unit of {dimension} ({', '.join(factors)})"
-                )
-            return kind, factors[key]
-    raise CardError(
-        f"{source}: header: unknown column {cell.strip()!r}; use crank_angle and load, position and load, "
-        f"or time, position and load"
-    )
+@dataclass(frozen=True)
+class _Table:
+    columns: dict[str, _Column]
+    lines: np.ndarray
 
 
-def _read_rows(path: Path, default_units: str) -> dict[str, np.ndarray]:
-    source = str(path)
+def _show(text: str, limit: int = 40) -> str:
+    """repr of a cell or name for a message, cut to ``limit`` characters."""
+    return repr(text if len(text) <= limit else text[:limit] + "...")
+
+
+def _display(path: Path | str) -> str:
+    """The file's name for messages, on one line."""
+    name = str(path)
+    return name if name.isprintable() else ascii(name)[1:-1]
+
+
+def _read_source(path: Path | str, stream: IO | None) -> tuple[str, bytes | str]:
+    """Name for messages and the raw content, read with a bounded size and never blocking on a FIFO."""
+    if str(path) == STDIN:
+        source = STDIN_NAME
+        stream = sys.stdin if stream is None else stream
+        if stream.isatty():
+            raise CardError(f"{source}: is a terminal; pipe or redirect a card file into --card -")
+        try:
+            data = getattr(stream, "buffer", stream).read(MAX_BYTES + 1)
+        except OSError as exc:
+            raise CardError(f"{source}: cannot read: {exc.strerror or exc}") from None
+    else:
+        source = _display(path)
+        try:
+            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        except OSError as exc:
+            raise CardError(f"{source}: cannot read: {exc.strerror}") from None
+        except ValueError:
+            raise CardError(f"{source}: cannot read: the name holds a NUL character") from None
+        with open(fd, "rb") as file:
+            mode, size = os.fstat(fd).st_mode, os.fstat(fd).st_size
+            if not stat.S_ISREG(mode):
+                kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
+                        else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+                raise CardError(f"{source}: is {kind}, not a card file")
+            if size > MAX_BYTES:
+                raise CardError(f"{source}: {size} bytes; a card file has at most {MAX_BYTES} bytes")
+            data = file.read(MAX_BYTES + 1)
+    if len(data) > MAX_BYTES:
+        raise CardError(f"{source}: more than {MAX_BYTES} bytes; a card file has at most {MAX_BYTES} bytes")
+    return source, data
+
+
+def _line_count(text: str) -> int:
+    return text.replace("\r\n", "\n").replace("\r", "\n").count("\n") + 1
+
+
+def _decode(data: bytes | str, source: str) -> str:
+    """UTF-8 text with LF line ends and no byte-order mark."""
+    if isinstance(data, bytes):
+        if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+            raise CardError(f"{source}: UTF-16 or UTF-32 text (byte-order mark); save the card as UTF-8")
+        try:
+            data = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            line = _line_count(data[:exc.start].decode("utf-8"))
+            raise CardError(f"{source}: line {line}: byte 0x{data[exc.start]:02x} is not UTF-8; "
+                            f"save the card as UTF-8 text") from None
+    text = data.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
+    nul = text.find("\0")
+    if nul >= 0:
+        raise CardError(f"{source}: line {text.count(chr(10), 0, nul) + 1}: a NUL character: binary data, not a text card")
+    return text
+
+
+def _is_content(line: str) -> bool:
+    """Neither blank nor a comment; '#' directly followed by a delimiter is the index column '#'."""
+    text = line.strip()
+    return bool(text) and (not text.startswith("#") or text[1:2] in _DELIMITERS)
+
+
+def _split_unit(cell: str) -> tuple[str, str | None]:
+    """Name and the unit written in brackets or after a comma, if any."""
+    text = cell.strip().strip('"').strip()
+    found = _UNIT_AT_END.match(text)
+    if found and found.group(1):
+        return found.group(1), found.group(2) if found.group(2) is not None else found.group(3)
+    return text, None
+
+
+def _name_key(name: str) -> str:
+    return re.sub(r"[\s.\-]+", "_", name.strip().lower().replace("#", " no ")).strip("_")
+
+
+def _unit(unit: str | None, kind: str, default_units: str, where: str) -> tuple[str, float]:
+    """Unit label and factor to SI of a column of ``kind``; ``where`` names it in a message."""
+    dimension = _KINDS[kind][1]
+    key = _DEFAULT_UNITS[default_units][dimension] if unit is None else unit.strip().lower().rstrip(".")
+    if key not in _UNITS[dimension]:
+        raise CardError(f"{where} has unit {unit!r}, not a unit of {dimension} ({', '.join(_UNITS[dimension])})")
+    return (key if unit is None else unit.strip()), _UNITS[dimension][key]
+
+
+def _named_column(cell: str, default_units: str, line: str, column: int) -> tuple[str, str, float] | None:
+    """Kind, unit and factor of a header cell named by the reader's rules; None for an index column.
+
+    ``line`` is the message prefix naming the file and line, ``column`` counts from 1.
+    """
+    name, unit = _split_unit(cell)
+    key = _name_key(name)
+    candidates = [(key, unit)]
+    if unit is None and "_" in key:
+        candidates.insert(0, tuple(key.rsplit("_", 1)))
+    for stem, suffix in candidates:
+        if stem in _KIND_OF_NAME:
+            where = f"{line}: column {column} {_show(cell.strip())}"
+            return (_KIND_OF_NAME[stem], *_unit(suffix, _KIND_OF_NAME[stem], default_units, where))
+    if key in _INDEX_NAMES:
+        return None
+    raise CardError(f"{line}: unknown column {_show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
+
+
+def _mapped_column(cell: str, kind: str, default_units: str, where: str) -> tuple[str, str, float]:
+    """Kind, unit and factor of a header cell named by the user: a unit in brackets, after a comma, or as a known suffix."""
+    name, unit = _split_unit(cell)
+    if unit is None and "_" in (key := _name_key(name)):
+        suffix = key.rsplit("_", 1)[1]
+        unit = suffix if suffix in _UNITS[_KINDS[kind][1]] else None
+    return (kind, *_unit(unit, kind, default_units, where))
+
+
+def _checked_columns(columns: Mapping[str, str]) -> dict[str, str]:
+    """A column mapping kind -> header text, validated."""
+    mapping = {}
+    for kind, header in columns.items():
+        key = str(kind).strip().lower()
+        if key not in _KINDS:
+            raise CardError(f"--card-columns: unknown column kind {_show(str(kind))}; use {', '.join(_KINDS)}")
+        if key in mapping:
+            raise CardError(f"--card-columns: {key} given twice")
+        if not isinstance(header, str) or not header.strip():
+            raise CardError(f"--card-columns: {key} needs a header name")
+        mapping[key] = header.strip().strip('"').strip()
+    if set(mapping) not in _LAYOUTS:
+        raise CardError(f"--card-columns: {', '.join(mapping) or 'nothing'} given; {_LAYOUT_TEXT}")
+    return mapping
+
+
+def parse_card_columns(text: str) -> dict[str, str]:
+    """The mapping of ``--card-columns position=Pos (in),load=PRL[,time=Time]``.
+
+    Pairs ``kind=header`` separated by commas; kinds position, load, time or
+    crank_angle; headers as written in the file (case and surrounding spaces
+    ignored; a header holding a comma or '=' cannot be mapped).
+
+    >>> parse_card_columns("position=Pos (in), load=PRL, time=Time")
+    {'position': 'Pos (in)', 'load': 'PRL', 'time': 'Time'}
+    """
+    pairs = {}
+    for part in text.split(","):
+        kind, equals, header = part.partition("=")
+        if not equals:
+            raise CardError(f"--card-columns: {_show(part.strip())} is not kind=header "
+                            f"(e.g. position=Pos (in),load=PRL,time=Time)")
+        if kind.strip().lower() in pairs:
+            raise CardError(f"--card-columns: {kind.strip().lower()} given twice")
+        pairs[kind.strip().lower()] = header
+    return _checked_columns(pairs)
+
+
+def _header(cells: list[str], line: int, source: str, default_units: str,
+            mapping: dict[str, str] | None) -> dict[str, tuple[int, str, float]]:
+    """Used columns: kind -> (column index, unit label, factor to SI)."""
+    found: dict[str, list[tuple[int, str, float]]] = {}
+    if mapping is None:
+        for j, cell in enumerate(cells):
+            named = _named_column(cell, default_units, f"{source}: line {line}", j + 1)
+            if named is not None:
+                found.setdefault(named[0], []).append((j, *named[1:]))
+    else:
+        folded = [cell.strip().strip('"').strip().casefold() for cell in cells]
+        for kind, header in mapping.items():
+            matches = [j for j, cell in enumerate(folded) if cell == header.casefold()]
+            if len(matches) != 1:
+                where = "no column" if not matches else f"{len(matches)} columns ({', '.join(str(j + 1) for j in matches)})"
+                raise CardError(f"{source}: line {line}: --card-columns {kind}={header!r}: {where} of that name; "
+                                f"the header has {', '.join(_show(c.strip()) for c in cells[:12])}")
+            j = matches[0]
+            found[kind] = [(j, *_mapped_column(cells[j], kind, default_units,
+                                                f"{source}: line {line}: column {j + 1} {_show(cells[j].strip())}")[1:])]
+    kinds = [kind for kind, where in found.items() for _ in where]
+    if len(set(kinds)) != len(kinds) or set(kinds) not in _LAYOUTS:
+        raise CardError(f"{source}: line {line}: columns {', '.join(kinds) or 'none'}; {_LAYOUT_TEXT}")
+    return {kind: where[0] for kind, where in found.items()}
+
+
+def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.ndarray:
+    """One column's cells as finite floats, or a one-line error at the first culprit."""
     try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise CardError(f"{source}: cannot read: {exc.strerror}") from None
-    rows = [(number, row) for number, row in enumerate(csv.reader(text.splitlines()), start=1)
-            if row and not row[0].lstrip().startswith("#")]
-    if not rows:
+        values = np.fromiter(map(float, cells), dtype=float, count=len(cells))
+    except ValueError:
+        i = next(i for i, cell in enumerate(cells) if not _is_float(cell))
+        what = "is empty" if not cells[i].strip() else f"{_show(cells[i].strip())} is not a number"
+        raise CardError(f"{source}: line {lines[i]}: {kind} {what}") from None
+    bad = ~np.isfinite(values)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise CardError(f"{source}: line {lines[i]}: {kind} is {cells[i].strip()[:40]}, not a finite number")
+    return values
+
+
+def _is_float(cell: str) -> bool:
+    try:
+        float(cell)
+    except ValueError:
+        return False
+    return True
+
+
+def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] | None) -> _Table:
+    """The used columns of a card's text, in SI, with the line number of each row."""
+    lines = text.split("\n")
+    kept = [i for i, line in enumerate(lines) if _is_content(line)]
+    if not kept:
         raise CardError(f"{source}: empty card")
-    header_line, header = rows[0]
-    kinds = [_parse_header(cell, source, default_units) for cell in header]
-    names = [kind for kind, _ in kinds]
-    if len(set(names)) != len(names) or set(names) not in _LAYOUTS:
-        raise CardError(
-            f"{source}: line {header_line}: columns {', '.join(names)}; a card has crank_angle and load, "
-            f"position and load, or time, position and load"
-        )
-    values = np.empty((len(rows) - 1, len(names)))
-    for i, (number, row) in enumerate(rows[1:]):
-        if len(row) != len(names):
-            raise CardError(f"{source}: line {number}: {len(row)} values, the header has {len(names)}")
-        for j, cell in enumerate(row):
-            try:
-                value = float(cell)
-            except ValueError:
-                raise CardError(f"{source}: line {number}: {names[j]} {cell.strip()!r} is not a number") from None
-            if not math.isfinite(value):
-                raise CardError(f"{source}: line {number}: {names[j]} is {cell.strip()}, not a finite number")
-            values[i, j] = value * kinds[j][1]
-    if values.shape[0] < MIN_POINTS:
-        raise CardError(f"{source}: {values.shape[0]} points; a card needs at least {MIN_POINTS}")
-    columns = {name: values[:, j] for j, name in enumerate(names)}
-    if "time" in columns:
-        steps = np.diff(columns["time"])
-        if np.any(steps <= 0):
-            line = rows[1 + int(np.argmax(steps <= 0)) + 1][0]
-            raise CardError(f"{source}: line {line}: time does not increase")
-    return columns
+    header_line = kept[0] + 1
+    header = lines[kept[0]]
+    delimiter = next((d for d in _DELIMITERS if d in header), None)
+    if delimiter is None:
+        raise CardError(f"{source}: line {header_line}: no comma, semicolon or tab in the header {_show(header.strip())}; "
+                        f"a card has named columns, e.g. position_in,load_lbf")
+    cells = header.split(delimiter)
+    if len(cells) > MAX_COLUMNS:
+        raise CardError(f"{source}: line {header_line}: {len(cells)} columns; a card file has at most {MAX_COLUMNS}")
+    if all(_is_float(cell) for cell in cells):
+        raise CardError(f"{source}: line {header_line}: numbers where the header should be; "
+                        f"the first line names the columns, e.g. position_in,load_lbf")
+    used = _header(cells, header_line, source, default_units, mapping)
+    rows = [lines[i] for i in kept[1:]]
+    numbers = np.array(kept[1:], dtype=int) + 1
+    if len(rows) > MAX_POINTS:
+        raise CardError(f"{source}: {len(rows)} points; a card has at most {MAX_POINTS}")
+    widths = np.fromiter(map(str.count, rows, repeat(delimiter)), dtype=int, count=len(rows)) + 1
+    wrong = widths != len(cells)
+    if wrong.any():
+        i = int(np.argmax(wrong))
+        hint = (f"; a decimal comma or thousands separator in a comma-separated file?"
+                if delimiter == "," and widths[i] > len(cells) else "")
+        raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {len(cells)}{hint}")
+    flat = delimiter.join(rows).split(delimiter)
+    if '"' in text:
+        flat = [cell.strip().strip('"') for cell in flat]
+    columns = {kind: flat[j::len(cells)] for kind, (j, _, _) in used.items()}
+    if delimiter != ",":
+        columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
+    values = {kind: _Column(_numbers(columns[kind], kind, numbers, source) * factor, unit, factor)
+              for kind, (_, unit, factor) in used.items()}
+    if len(rows) < MIN_POINTS:
+        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
+    return _Table(values, numbers)
 
 
-def read_card(path: Path, linkage: Linkage, default_units: str = "si") -> CardReading:
-    """Read a card file and put it on the crank-angle axis of ``linkage``."""
-    source = str(path)
-    columns = _read_rows(path, default_units)
-    load = columns["load"]
-    if "crank_angle" in columns:
-        return CardReading(card_from_angles(columns["crank_angle"], load), source, ())
-    position = columns["position"]
+def _decimal_commas(columns: dict[str, list[str]], used: dict[str, tuple[int, str, float]], numbers: np.ndarray,
+                    source: str, delimiter: str) -> dict[str, list[str]]:
+    """Cells with decimal points, from decimal commas when the file has commas and no points."""
+    joined = "\n".join("\n".join(cells) for cells in columns.values())
+    if "," not in joined:
+        return columns
+    if "." in joined:
+        comma = next((kind, i) for kind, cells in columns.items() for i, cell in enumerate(cells) if "," in cell)
+        point = next((kind, i) for kind, cells in columns.items() for i, cell in enumerate(cells) if "." in cell)
+        (k1, i1), (k2, i2) = comma, point
+        raise CardError(f"{source}: line {numbers[i1]}: {k1} {_show(columns[k1][i1].strip())} (column {used[k1][0] + 1}) "
+                        f"has a comma but line {numbers[i2]}: {k2} {_show(columns[k2][i2].strip())} a point; "
+                        f"cannot tell the decimal mark in this {delimiter}-separated file (thousands separators?)")
+    return {kind: [cell.replace(",", ".") for cell in cells] for kind, cells in columns.items()}
+
+
+def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
+              columns: Mapping[str, str] | None = None, stream: IO | None = None) -> CardReading:
+    """Read a card file and put it on the crank-angle axis of ``linkage``.
+
+    Parameters
+    ----------
+    path : pathlib.Path or str
+        The card file; ``"-"`` reads ``stream`` (standard input by default), named
+        ``<stdin>`` in messages.
+    linkage : Linkage
+        The unit the card was measured on.
+    default_units : str
+        Units of columns whose header names none: ``"si"`` (m, N, s, deg) or
+        ``"field"`` (in, lbf, s, deg).
+    columns : mapping, optional
+        Kind -> header text (:func:`parse_card_columns`); the mapped columns are
+        used and every other column is ignored.
+    stream : file object, optional
+        Text or binary stream read when ``path`` is ``"-"``.
+
+    Returns
+    -------
+    CardReading
+        The card on the crank-angle axis and the samples, speed and fit behind it.
+
+    References
+    ----------
+    [Takacs2016], [Gibbs1963] (see :mod:`pumpjack_cli.core.beam.card`).
+    """
+    if default_units not in _DEFAULT_UNITS:
+        raise CardError(f"card units {default_units!r}: use {' or '.join(_DEFAULT_UNITS)}")
+    mapping = None if columns is None else _checked_columns(columns)
+    source, data = _read_source(path, stream)
+    table = _parse(_decode(data, source), source, default_units, mapping)
+    load = table.columns["load"].values
+    if "crank_angle" in table.columns:
+        theta = table.columns["crank_angle"].values % (2.0 * math.pi)
+        if np.all(theta == theta[0]):
+            raise CardError(f"{source}: every crank angle is {math.degrees(theta[0]):.6g} deg; a card covers a whole cycle")
+        _check_coverage(theta, source, "crank angles")
+        return CardReading(card_from_angles(theta, load), source, (), load, theta)
+    return _position_reading(table, linkage, source)
+
+
+def _check_coverage(theta: np.ndarray, source: str, what: str) -> None:
+    gap = largest_gap(theta)
+    if gap > max(MAX_GAP, 4.0 * math.pi / theta.size):
+        raise CardError(f"{source}: the {what} leave {math.degrees(gap):.0f} deg of the crank's revolution without "
+                        f"a sample; a card covers a whole cycle")
+
+
+def _time_order(time: np.ndarray, lines: np.ndarray, column: _Column, source: str) -> bool:
+    """True if the rows are in reverse time order; refuse repeated or unordered time stamps."""
+    steps = np.diff(time)
+    if np.any(steps == 0):
+        i = int(np.argmax(steps == 0)) + 1
+        raise CardError(f"{source}: line {lines[i]}: time {time[i] / column.factor:.6g} {column.unit} repeats "
+                        f"line {lines[i - 1]}; duplicated time stamps")
+    if np.all(steps < 0):
+        return True
+    if np.any(steps < 0):
+        raise CardError(f"{source}: line {lines[int(np.argmax(steps < 0)) + 1]}: time does not increase")
+    return False
+
+
+def _position_reading(table: _Table, linkage: Linkage, source: str) -> CardReading:
+    """A position card (with or without time stamps) on the crank-angle axis."""
+    columns, lines = table.columns, table.lines
+    time = columns["time"].values if "time" in columns else None
+    position, load = columns["position"].values, columns["load"].values
+    warnings = []
+    backwards = time is not None and _time_order(time, lines, columns["time"], source)
+    if backwards:
+        warnings.append(f"{source}: rows listed in reverse time order; read in time order")
     if np.allclose(position[0], position[-1]) and np.allclose(load[0], load[-1]):
-        position, load = position[:-1], load[:-1]  # a closed card repeats its first point
+        position, load, lines = position[:-1], load[:-1], lines[:-1]  # a closed card repeats its first point
+        time = None if time is None else time[:-1]
+    if backwards:
+        position, load, time, lines = position[::-1], load[::-1], time[::-1], lines[::-1]
+    unit, factor = columns["position"].unit, columns["position"].factor
     steps = np.diff(position)
+    if np.all(steps == 0):
+        raise CardError(f"{source}: the polished rod does not move (every position is {position[0] / factor:.6g} {unit}); "
+                        f"a card covers a whole cycle")
     if np.all(steps >= 0) or np.all(steps <= 0):
         raise CardError(f"{source}: the polished rod moves only {'up' if steps.sum() > 0 else 'down'}; "
                         f"a card covers a whole cycle")
-    upstroke = upstroke_points(position)
-    dead = dead_positions(linkage)
-    stroke = linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
+    stroke = linkage.dead_positions().stroke
     card_stroke = float(position.max() - position.min())
     mismatch = card_stroke / stroke - 1.0
-    message = (f"{source}: card stroke {card_stroke:.4g} m differs from the unit's exact stroke "
-               f"{stroke:.4g} m by {100 * mismatch:+.1f} %")
+    message = (f"{source}: card stroke {card_stroke / factor:.4g} {unit} differs from the unit's exact stroke "
+               f"{stroke / factor:.4g} {unit} by {100 * mismatch:+.1f} %")
     if abs(mismatch) > STROKE_ERROR:
         raise CardError(f"{message}; wrong unit, crank hole or position units?")
-    warnings = (f"{message}; positions scaled to the unit's stroke",) if abs(mismatch) > STROKE_WARNING else ()
+    if abs(mismatch) > STROKE_WARNING:
+        warnings.append(f"{message}; positions scaled to the unit's stroke")
+    work = loop_work(position, load)
+    if work < -WORK_TOLERANCE * card_stroke * float(np.ptp(load)):
+        if time is not None:
+            raise CardError(f"{source}: in time order the rods do {-work:.4g} J of work on the unit per cycle; a pumping "
+                            f"unit does positive work: rows reversed against their time stamps, or a sign inverted?")
+        backwards = True
+        position, load, lines = position[::-1], load[::-1], lines[::-1]
+        warnings.append(f"{source}: listed in reverse (the rods would do {-work:.4g} J of work on the unit per cycle; "
+                        f"a pumping unit lifts them on the high load); read in reverse order")
     scaled = (position - position.min()) * (stroke / card_stroke)
-    theta = crank_angle_from_position(linkage, scaled, upstroke)
-    return CardReading(card_from_angles(theta, load), source, warnings)
+    if time is None:
+        theta = crank_angle_from_position(linkage, scaled, upstroke_points(scaled))
+        return CardReading(card_from_angles(theta, load), source, tuple(warnings), load, theta, position,
+                           reversed=backwards)
+    fit = fit_uniform_rotation(linkage, time, scaled)
+    other = fit_uniform_rotation(dataclasses.replace(linkage, rotation=-linkage.rotation), time, scaled)
+    relative = fit.rms / stroke
+    own_name, other_name = _ROTATION_NAMES[linkage.rotation], _ROTATION_NAMES[-linkage.rotation]
+    residual = (f"RMS position error {fit.rms / factor:.3g} {unit}, {100 * relative:.2g} % of the stroke "
+                f"({other_name}: {100 * other.rms / stroke:.2g} %)")
+    if relative > FIT_ERROR:
+        raise CardError(f"{source}: the time stamps do not fit this unit turning at a steady speed ({residual}); "
+                        f"wrong columns or a card from another unit?")
+    if other.rms < 0.5 * fit.rms and relative > ROTATION_EVIDENCE:
+        warnings.append(f"{source}: the time stamps fit {other_name} rotation better than the unit's {own_name} "
+                        f"({residual}); check the unit's rotation")
+    elif relative > FIT_WARNING:
+        warnings.append(f"{source}: the time stamps fit a steady crank speed only roughly ({residual}); "
+                        f"the fitted crank angles are used")
+    theta = fit.crank_angle % (2.0 * math.pi)
+    _check_coverage(theta, source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
+    return CardReading(card_from_angles(theta, load), source, tuple(warnings), load, theta, position, time,
+                       fit.speed, fit.rms, relative, backwards)
+
+
+def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
+    """The crank speed to use [rad/s]: the card's, checked against an ``--spm`` given too.
+
+    Parameters
+    ----------
+    card_speed : float or None
+        Crank speed fitted to the card's time stamps [rad/s] (``CardReading.speed``).
+    spm_option : float or None
+        Crank speed given on the command line [rad/s] (``--spm`` converted).
+    source : str
+        The card's name for the message.
+
+    Returns
+    -------
+    float or None
+        ``card_speed`` when there is one (the time stamps are the measurement),
+        otherwise ``spm_option``.
+
+    Raises
+    ------
+    CardError
+        When both are given and differ by more than :data:`SPEED_TOLERANCE` (2 %);
+        the message prints both in strokes per minute.
+
+    >>> check_speed(0.6283, 0.63)            # 6.00 and 6.02 strokes/min: the card wins
+    0.6283
+    >>> check_speed(None, 0.63)
+    0.63
+    """
+    for name, value in (("card speed", card_speed), ("--spm", spm_option)):
+        if value is not None and not (math.isfinite(value) and value > 0):
+            raise CardError(f"{name} {value!r}: not a positive speed")
+    if card_speed is None or spm_option is None:
+        return spm_option if card_speed is None else card_speed
+    mismatch = spm_option / card_speed - 1.0
+    if abs(mismatch) > SPEED_TOLERANCE:
+        raise CardError(f"--spm {spm_option * 30.0 / math.pi:.4g} disagrees with the time stamps of {source} "
+                        f"({card_speed * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; "
+                        f"drop --spm or check the card")
+    return card_speed

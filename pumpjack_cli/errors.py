@@ -21,3 +21,7 @@ class GeometryError(PumpjackError, ValueError):
 
 class DynamicsError(PumpjackError, ValueError):
     """A machine whose motion cannot be computed: inertia, motor, well data or a failed solve."""
+
+
+class CardError(PumpjackError, ValueError):
+    """A dynamometer card that cannot be read, contradicts itself or does not fit the unit."""
