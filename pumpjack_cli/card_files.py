@@ -35,8 +35,8 @@ from typing import IO
 
 import numpy as np
 
-from .core.beam.card import (Card, card_from_angles, crank_angle_from_position, fit_uniform_rotation, largest_gap,
-                             loop_work, upstroke_points)
+from .core.beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_position, fit_rotation,
+                             largest_gap, loop_work, upstroke_points)
 from .core.beam.geometry import CLOCKWISE, Linkage
 from .errors import CardError
 from .units import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
@@ -49,8 +49,11 @@ STROKE_WARNING = 0.02
 #: RMS position residual of the time fit, relative to the stroke, refused and warned about.
 FIT_ERROR = 0.10
 FIT_WARNING = 0.02
-#: The other rotation direction "fits clearly better" when its residual is below half
-#: of the unit's and the unit's is above this fraction of the stroke.
+#: Harmonics of the crank-speed variation fitted to time stamps (when the card has at
+#: least four samples per parameter, else uniform rotation).
+HARMONICS = 2
+#: The other rotation direction "fits clearly better" when its uniform-rotation
+#: residual is below half of the unit's and the unit's is above this fraction of the stroke.
 ROTATION_EVIDENCE = 0.002
 #: --spm and the card's time stamps may differ by this fraction; the card's speed wins.
 SPEED_TOLERANCE = 0.02
@@ -85,7 +88,7 @@ _KINDS = {
     "load": (("load", "force", "prl", "polished_rod_load"), "force"),
 }
 _KIND_OF_NAME = {name: kind for kind, (names, _) in _KINDS.items() for name in names}
-#: Index or sample-number columns, ignored ('#' is read as 'no').
+#: Index or sample-number columns, ignored ('#' is read as 'no'); so are unnamed columns.
 _INDEX_NAMES = {"index", "idx", "i", "n", "no", "nr", "num", "number", "sample", "sample_no", "sample_number",
                 "point", "point_no", "point_number", "pt"}
 _DEFAULT_UNITS = {
@@ -110,10 +113,11 @@ class CardReading:
     [m] and ``time`` [s] are per sample, in SI, in cycle order (reversed when the file
     was), a repeated closing sample dropped; ``position`` as read (not shifted or
     scaled), None on a crank-angle card; ``time`` None without time stamps. ``speed``
-    is the fitted crank speed omega [rad/s] (the card's pumping speed), ``fit_rms`` the
-    RMS position residual of that fit [m] and ``fit_rms_relative`` the same over the
-    unit's stroke [-]; all three None without time stamps. ``reversed`` is True when
-    the rows were read in reverse (one warning says so).
+    is the mean crank speed omega [rad/s] fitted to the time stamps (the card's pumping
+    speed), ``crank_speed`` [rad/s] the fitted speed at each sample, ``fit_rms`` the RMS
+    position residual of that fit [m] and ``fit_rms_relative`` the same over the unit's
+    stroke [-]; all four None without time stamps. ``reversed`` is True when the rows
+    were read in reverse (one warning says so).
     """
 
     card: Card
@@ -124,6 +128,7 @@ class CardReading:
     position: np.ndarray | None = None
     time: np.ndarray | None = None
     speed: float | None = None
+    crank_speed: np.ndarray | None = None
     fit_rms: float | None = None
     fit_rms_relative: float | None = None
     reversed: bool = False
@@ -177,18 +182,29 @@ def _read_source(path: Path | str, stream: IO | None) -> tuple[str, bytes | str]
             raise CardError(f"{source}: cannot read: {exc.strerror}") from None
         except ValueError:
             raise CardError(f"{source}: cannot read: the name holds a NUL character") from None
-        with open(fd, "rb") as file:
-            mode, size = os.fstat(fd).st_mode, os.fstat(fd).st_size
-            if not stat.S_ISREG(mode):
-                kind = ("a directory" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
-                        else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
-                raise CardError(f"{source}: is {kind}, not a card file")
-            if size > MAX_BYTES:
-                raise CardError(f"{source}: {size} bytes; a card file has at most {MAX_BYTES} bytes")
-            data = file.read(MAX_BYTES + 1)
+        try:
+            data = _read_regular(fd, source)
+        finally:
+            os.close(fd)
     if len(data) > MAX_BYTES:
         raise CardError(f"{source}: more than {MAX_BYTES} bytes; a card file has at most {MAX_BYTES} bytes")
     return source, data
+
+
+def _read_regular(fd: int, source: str) -> bytes:
+    """At most MAX_BYTES + 1 bytes of an open file, refused unless it is a regular file."""
+    info = os.fstat(fd)
+    if not stat.S_ISREG(info.st_mode):
+        kind = ("a directory" if stat.S_ISDIR(info.st_mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(info.st_mode)
+                else "a device" if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode) else "not a regular file")
+        raise CardError(f"{source}: is {kind}, not a card file")
+    if info.st_size > MAX_BYTES:
+        raise CardError(f"{source}: {info.st_size} bytes; a card file has at most {MAX_BYTES} bytes")
+    try:
+        with open(fd, "rb", closefd=False) as file:
+            return file.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise CardError(f"{source}: cannot read: {exc.strerror}") from None
 
 
 def _line_count(text: str) -> int:
@@ -242,7 +258,7 @@ def _unit(unit: str | None, kind: str, default_units: str, where: str) -> tuple[
 
 
 def _named_column(cell: str, default_units: str, line: str, column: int) -> tuple[str, str, float] | None:
-    """Kind, unit and factor of a header cell named by the reader's rules; None for an index column.
+    """Kind, unit and factor of a header cell named by the reader's rules; None for an index or unnamed column.
 
     ``line`` is the message prefix naming the file and line, ``column`` counts from 1.
     """
@@ -255,7 +271,7 @@ def _named_column(cell: str, default_units: str, line: str, column: int) -> tupl
         if stem in _KIND_OF_NAME:
             where = f"{line}: column {column} {_show(cell.strip())}"
             return (_KIND_OF_NAME[stem], *_unit(suffix, _KIND_OF_NAME[stem], default_units, where))
-    if key in _INDEX_NAMES:
+    if key in _INDEX_NAMES or not key:
         return None
     raise CardError(f"{line}: unknown column {_show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
 
@@ -526,25 +542,37 @@ def _position_reading(table: _Table, linkage: Linkage, source: str) -> CardReadi
         theta = crank_angle_from_position(linkage, scaled, upstroke_points(scaled))
         return CardReading(card_from_angles(theta, load), source, tuple(warnings), load, theta, position,
                            reversed=backwards)
-    fit = fit_uniform_rotation(linkage, time, scaled)
-    other = fit_uniform_rotation(dataclasses.replace(linkage, rotation=-linkage.rotation), time, scaled)
-    relative = fit.rms / stroke
-    own_name, other_name = _ROTATION_NAMES[linkage.rotation], _ROTATION_NAMES[-linkage.rotation]
-    residual = (f"RMS position error {fit.rms / factor:.3g} {unit}, {100 * relative:.2g} % of the stroke "
-                f"({other_name}: {100 * other.rms / stroke:.2g} %)")
-    if relative > FIT_ERROR:
-        raise CardError(f"{source}: the time stamps do not fit this unit turning at a steady speed ({residual}); "
-                        f"wrong columns or a card from another unit?")
-    if other.rms < 0.5 * fit.rms and relative > ROTATION_EVIDENCE:
-        warnings.append(f"{source}: the time stamps fit {other_name} rotation better than the unit's {own_name} "
-                        f"({residual}); check the unit's rotation")
-    elif relative > FIT_WARNING:
-        warnings.append(f"{source}: the time stamps fit a steady crank speed only roughly ({residual}); "
-                        f"the fitted crank angles are used")
+    fit, notes = _rotation(linkage, time, scaled, columns["position"], source)
     theta = fit.crank_angle % (2.0 * math.pi)
     _check_coverage(theta, source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
-    return CardReading(card_from_angles(theta, load), source, tuple(warnings), load, theta, position, time,
-                       fit.speed, fit.rms, relative, backwards)
+    return CardReading(card_from_angles(theta, load), source, tuple(warnings + notes), load, theta, position, time,
+                       fit.speed, fit.crank_speed, fit.rms, fit.rms / stroke, backwards)
+
+
+def _rotation(linkage: Linkage, time: np.ndarray, scaled: np.ndarray, column: _Column,
+              source: str) -> tuple[RotationFit, list[str]]:
+    """The time fit and its warnings; the other rotation direction is tried only when the uniform fit is not near exact."""
+    fit = fit_rotation(linkage, time, scaled, HARMONICS if time.size >= 4 * (2 + 2 * HARMONICS) else 0)
+    stroke = linkage.dead_positions().stroke
+    relative = fit.rms / stroke
+    residual = f"RMS position error {fit.rms / column.factor:.3g} {column.unit}, {100 * relative:.2g} % of the stroke"
+    if relative > FIT_ERROR:
+        raise CardError(f"{source}: the time stamps do not fit this unit's motion ({residual}); "
+                        f"wrong columns or a card from another unit?")
+    if np.min(fit.crank_speed) <= 0.0:
+        raise CardError(f"{source}: the crank angles fitted to the time stamps turn backwards at times "
+                        f"(crank speed {np.min(fit.crank_speed):.3g} rad/s); wrong columns or a card from another unit?")
+    if fit.uniform_rms > ROTATION_EVIDENCE * stroke:
+        other = fit_rotation(dataclasses.replace(linkage, rotation=-linkage.rotation), time, scaled)
+        if other.uniform_rms < 0.5 * fit.uniform_rms:
+            own_name, other_name = _ROTATION_NAMES[linkage.rotation], _ROTATION_NAMES[-linkage.rotation]
+            return fit, [f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
+                         f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
+                         f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation"]
+    if relative > FIT_WARNING:
+        return fit, [f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
+                     f"the fitted crank angles are used"]
+    return fit, []
 
 
 def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
