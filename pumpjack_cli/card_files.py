@@ -245,7 +245,8 @@ def _split_unit(cell: str) -> tuple[str, str | None]:
 
 
 def _name_key(name: str) -> str:
-    return re.sub(r"[\s.\-]+", "_", name.strip().lower().replace("#", " no ")).strip("_")
+    """The name with spaces, dots and dashes as underscores and '#' as 'no'; case kept."""
+    return re.sub(r"[\s.\-]+", "_", name.strip().replace("#", " no ")).strip("_")
 
 
 def _unit(unit: str | None, kind: str, default_units: str, where: str) -> tuple[str, float]:
@@ -268,10 +269,10 @@ def _named_column(cell: str, default_units: str, line: str, column: int) -> tupl
     if unit is None and "_" in key:
         candidates.insert(0, tuple(key.rsplit("_", 1)))
     for stem, suffix in candidates:
-        if stem in _KIND_OF_NAME:
+        if stem.lower() in _KIND_OF_NAME:
             where = f"{line}: column {column} {_show(cell.strip())}"
-            return (_KIND_OF_NAME[stem], *_unit(suffix, _KIND_OF_NAME[stem], default_units, where))
-    if key in _INDEX_NAMES or not key:
+            return (_KIND_OF_NAME[stem.lower()], *_unit(suffix, _KIND_OF_NAME[stem.lower()], default_units, where))
+    if key.lower() in _INDEX_NAMES or not key:
         return None
     raise CardError(f"{line}: unknown column {_show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
 
@@ -281,7 +282,7 @@ def _mapped_column(cell: str, kind: str, default_units: str, where: str) -> tupl
     name, unit = _split_unit(cell)
     if unit is None and "_" in (key := _name_key(name)):
         suffix = key.rsplit("_", 1)[1]
-        unit = suffix if suffix in _UNITS[_KINDS[kind][1]] else None
+        unit = suffix if suffix.lower() in _UNITS[_KINDS[kind][1]] else None
     return (kind, *_unit(unit, kind, default_units, where))
 
 
@@ -396,6 +397,8 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
     numbers = np.array(kept[1:], dtype=int) + 1
     if len(rows) > MAX_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card has at most {MAX_POINTS}")
+    if len(rows) < MIN_POINTS:
+        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
     widths = np.fromiter(map(str.count, rows, repeat(delimiter)), dtype=int, count=len(rows)) + 1
     wrong = widths != len(cells)
     if wrong.any():
@@ -411,8 +414,6 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
         columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
     values = {kind: _Column(_numbers(columns[kind], kind, numbers, source) * factor, unit, factor)
               for kind, (_, unit, factor) in used.items()}
-    if len(rows) < MIN_POINTS:
-        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
     return _Table(values, numbers)
 
 

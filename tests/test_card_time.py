@@ -84,17 +84,17 @@ def test_fitted_angles_are_those_the_sample_was_made_at():
 
 def test_time_fit_and_position_map_agree():
     """Two independent routes onto the crank-angle axis (time fit; branch inversion of positions).
-    The branch map puts the lowest sample (0.15 mm above the bottom) at the bottom dead position,
-    which moves it by sqrt(2 * 0.15 mm / s'') = 0.8 deg (s'' = A psi'' = 1.5 m/rad^2 there);
-    5 deg or more from the dead positions, 10 um of position rounding at ds/dtheta >= 0.1 m/rad
-    bound the difference by 0.06 deg."""
+    The branch map shifts the card so that its lowest sample (0.15 mm above the bottom) sits at the
+    bottom dead position, which moves that sample by sqrt(2 * 0.15 mm / s'') = 0.69 deg
+    (s'' = A psi'' = 2.09 m/rad^2 there); 5 deg or more from the dead positions, where
+    |ds/dtheta| >= 0.086 m/rad, the same 0.15 mm shift moves an angle by at most 0.1 deg."""
     timed = read_card(SAMPLE, SK8)
     untimed = read_text(text_of("position_m,load_kN", POSITION, LOAD_KN))
     difference = circular(timed.crank_angle, untimed.crank_angle)
     dead = SK8.dead_positions()
     away = np.all([circular(timed.crank_angle, d) > np.radians(5) for d in (dead.crank_angle_bottom, dead.crank_angle_top)],
                   axis=0)
-    assert np.max(difference) < np.radians(0.8) and np.max(difference[away]) < np.radians(0.06)
+    assert np.max(difference) < np.radians(0.75) and np.max(difference[away]) < np.radians(0.1)
 
 
 def test_periodic_speed_variation_is_recovered():
