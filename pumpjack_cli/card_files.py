@@ -397,8 +397,6 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
     numbers = np.array(kept[1:], dtype=int) + 1
     if len(rows) > MAX_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card has at most {MAX_POINTS}")
-    if len(rows) < MIN_POINTS:
-        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
     widths = np.fromiter(map(str.count, rows, repeat(delimiter)), dtype=int, count=len(rows)) + 1
     wrong = widths != len(cells)
     if wrong.any():
@@ -406,7 +404,7 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
         hint = (f"; a decimal comma or thousands separator in a comma-separated file?"
                 if delimiter == "," and widths[i] > len(cells) else "")
         raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {len(cells)}{hint}")
-    flat = delimiter.join(rows).split(delimiter)
+    flat = delimiter.join(rows).split(delimiter) if rows else []
     if '"' in text:
         flat = [cell.strip().strip('"') for cell in flat]
     columns = {kind: flat[j::len(cells)] for kind, (j, _, _) in used.items()}
@@ -414,6 +412,8 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
         columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
     values = {kind: _Column(_numbers(columns[kind], kind, numbers, source) * factor, unit, factor)
               for kind, (_, unit, factor) in used.items()}
+    if len(rows) < MIN_POINTS:
+        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
     return _Table(values, numbers)
 
 
