@@ -460,7 +460,7 @@ def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
 
     References
     ----------
-    [Takacs2016], [Gibbs1963] (see :mod:`pumpjack_cli.core.beam.card`).
+    [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
     """
     if default_units not in _DEFAULT_UNITS:
         raise CardError(f"card units {default_units!r}: use {' or '.join(_DEFAULT_UNITS)}")

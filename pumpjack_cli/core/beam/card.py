@@ -19,9 +19,11 @@ kinematics of :mod:`.linkage` (no approximation):
   iteratively; here it is a least-squares fit of a few parameters.
 
 Orientation: over a steady pumping cycle the unit does positive work on the rods,
-W = closed integral of F ds > 0 (the card's area, the polished-rod work per stroke of
-[Gibbs1963]): the rods go up on the high load and down on the low load. The sign of
-:func:`loop_work` in the order listed tells a card stored in reverse.
+W = closed integral of F ds > 0: the rods, the fluid and the well return to their
+state after a cycle, so W equals the hydraulic work done on the fluid plus the
+friction and damping losses, each >= 0 (energy balance, docs/cards.md). The rods go
+up on the high load and down on the low load, and the sign of :func:`loop_work` in
+the order listed tells a card stored in reverse.
 """
 
 from __future__ import annotations
@@ -133,8 +135,7 @@ def loop_work(position: np.ndarray, load: np.ndarray) -> float:
     W = closed integral of F ds, by the trapezoidal rule over the polygon of the points
     closed from the last back to the first: the signed area of the card in the
     position-load plane. Positive when the rods rise on the high load and fall on the
-    low load, as a pumping unit drives them ([Gibbs1963]: the card area is the
-    polished-rod work per stroke).
+    low load, as a pumping unit drives them (energy balance over a steady cycle).
 
     Parameters
     ----------
@@ -150,7 +151,8 @@ def loop_work(position: np.ndarray, load: np.ndarray) -> float:
 
     References
     ----------
-    [Gibbs1963]
+    [Takacs2016] (torque analysis from the polished-rod card); the trapezoidal rule is
+    a hand derivation.
 
     A rectangle 1 m by 1 N, up at 2 N and down at 1 N (hand calculation: 2 - 1 = 1 J):
 
