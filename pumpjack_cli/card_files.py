@@ -1,22 +1,13 @@
 """Reading dynamometer-card files (delimited text) onto the crank-angle axis of a unit.
 
-Layouts (any column order; see ``docs/cards.md`` for the whole contract):
-
-* ``crank_angle`` and ``load``: load already on this package's crank angle;
-* ``position`` and ``load``: polished-rod position in the order measured; the branch
-  of each point (up or down) comes from its neighbours, the orientation of the loop
-  from the sign of its work (a pumping unit does positive work on the rods);
-* ``time``, ``position`` and ``load``: the time stamps are the speed: a uniform crank
-  rotation theta = theta_0 + omega t is fitted to the positions through the unit's
-  exact kinematics, and the fitted angles are used.
-
-Headers name the columns in any case, with units as a suffix (``load_lbf``), in
-brackets (``Load [kN]``) or after a comma (``Load, kN``); index columns (``index``,
-``sample``, ``n``, ``#``, ``point``) are ignored, other names can be mapped with
-``columns``. Delimiters: comma, semicolon or tab; decimal commas in semicolon or tab
-files. UTF-8 with or without a byte-order mark; LF, CRLF or CR line ends. Everything
-else is refused with a :class:`~pumpjack_cli.errors.CardError` of one line naming the
-file (``<stdin>`` for ``-``), the line and the column.
+Three layouts: ``crank_angle, load``; ``position, load`` (each point on the branch of
+its direction of travel, the loop's orientation from the sign of its work);
+``time, position, load`` (the time stamps are the speed: the crank rotation is fitted
+to the positions through the unit's exact kinematics). Units, delimiters, decimal
+commas, encodings, index columns, column mapping, limits and every refusal are
+specified in ``docs/cards.md``; every refusal is a one-line
+:class:`~pumpjack_cli.errors.CardError` naming the file (``<stdin>`` for ``-``), the
+line and the column.
 """
 
 from __future__ import annotations
@@ -27,7 +18,7 @@ import os
 import re
 import stat
 import sys
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from itertools import repeat
 from pathlib import Path
@@ -103,6 +94,8 @@ _DELIMITERS = ("\t", ";", ",")
 _DELIMITER_NAMES = {"\t": "tab", ";": "semicolon", ",": "comma"}
 _UNIT_AT_END = re.compile(r"^(.*?)\s*(?:[\[(]\s*([^\[\]()]*?)\s*[\])]|,\s*([^,]+?))\s*$")
 _ROTATION_NAMES = {CLOCKWISE: "clockwise", -CLOCKWISE: "counterclockwise"}
+_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a device"),
+               (stat.S_ISBLK, "a device"))
 
 
 @dataclass(frozen=True)
@@ -195,8 +188,7 @@ def _read_regular(fd: int, source: str) -> bytes:
     """At most MAX_BYTES + 1 bytes of an open file, refused unless it is a regular file."""
     info = os.fstat(fd)
     if not stat.S_ISREG(info.st_mode):
-        kind = ("a directory" if stat.S_ISDIR(info.st_mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(info.st_mode)
-                else "a device" if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode) else "not a regular file")
+        kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
         raise CardError(f"{source}: is {kind}, not a card file")
     if info.st_size > MAX_BYTES:
         raise CardError(f"{source}: {info.st_size} bytes; a card file has at most {MAX_BYTES} bytes")
@@ -258,38 +250,34 @@ def _unit(unit: str | None, kind: str, default_units: str, where: str) -> tuple[
     return (key if unit is None else unit.strip()), _UNITS[dimension][key]
 
 
-def _named_column(cell: str, default_units: str, line: str, column: int) -> tuple[str, str, float] | None:
-    """Kind, unit and factor of a header cell named by the reader's rules; None for an index or unnamed column.
+def _column(cell: str, default_units: str, prefix: str, column: int,
+            kind: str | None = None) -> tuple[str, str, float] | None:
+    """Kind, unit label and factor to SI of header cell number ``column`` (from 1).
 
-    ``line`` is the message prefix naming the file and line, ``column`` counts from 1.
+    Without ``kind`` the cell is named by the reader's rules (None for an index or
+    unnamed column); with it (a mapped column) only its unit is looked for, in brackets,
+    after a comma or as a suffix that is a unit of its dimension.
     """
     name, unit = _split_unit(cell)
     key = _name_key(name)
-    candidates = [(key, unit)]
-    if unit is None and "_" in key:
-        candidates.insert(0, tuple(key.rsplit("_", 1)))
-    for stem, suffix in candidates:
-        if stem.lower() in _KIND_OF_NAME:
-            where = f"{line}: column {column} {_show(cell.strip())}"
-            return (_KIND_OF_NAME[stem.lower()], *_unit(suffix, _KIND_OF_NAME[stem.lower()], default_units, where))
-    if key.lower() in _INDEX_NAMES or not key:
+    stem, _, suffix = key.rpartition("_")
+    if kind is not None:
+        unit = suffix if unit is None and stem and suffix.lower() in _UNITS[_KINDS[kind][1]] else unit
+    elif unit is None and stem.lower() in _KIND_OF_NAME:
+        kind, unit = _KIND_OF_NAME[stem.lower()], suffix
+    elif key.lower() in _KIND_OF_NAME:
+        kind = _KIND_OF_NAME[key.lower()]
+    elif key.lower() in _INDEX_NAMES or not key:
         return None
-    raise CardError(f"{line}: unknown column {_show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
+    else:
+        raise CardError(f"{prefix}: unknown column {_show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
+    return (kind, *_unit(unit, kind, default_units, f"{prefix}: column {column} {_show(cell.strip())}"))
 
 
-def _mapped_column(cell: str, kind: str, default_units: str, where: str) -> tuple[str, str, float]:
-    """Kind, unit and factor of a header cell named by the user: a unit in brackets, after a comma, or as a known suffix."""
-    name, unit = _split_unit(cell)
-    if unit is None and "_" in (key := _name_key(name)):
-        suffix = key.rsplit("_", 1)[1]
-        unit = suffix if suffix.lower() in _UNITS[_KINDS[kind][1]] else None
-    return (kind, *_unit(unit, kind, default_units, where))
-
-
-def _checked_columns(columns: Mapping[str, str]) -> dict[str, str]:
+def _checked_columns(pairs: Iterable[tuple[str, str]]) -> dict[str, str]:
     """A column mapping kind -> header text, validated."""
     mapping = {}
-    for kind, header in columns.items():
+    for kind, header in pairs:
         key = str(kind).strip().lower()
         if key not in _KINDS:
             raise CardError(f"--card-columns: unknown column kind {_show(str(kind))}; use {', '.join(_KINDS)}")
@@ -313,25 +301,22 @@ def parse_card_columns(text: str) -> dict[str, str]:
     >>> parse_card_columns("position=Pos (in), load=PRL, time=Time")
     {'position': 'Pos (in)', 'load': 'PRL', 'time': 'Time'}
     """
-    pairs = {}
-    for part in text.split(","):
-        kind, equals, header = part.partition("=")
+    pairs = [part.partition("=") for part in text.split(",")]
+    for kind, equals, _ in pairs:
         if not equals:
-            raise CardError(f"--card-columns: {_show(part.strip())} is not kind=header "
+            raise CardError(f"--card-columns: {_show(kind.strip())} is not kind=header "
                             f"(e.g. position=Pos (in),load=PRL,time=Time)")
-        if kind.strip().lower() in pairs:
-            raise CardError(f"--card-columns: {kind.strip().lower()} given twice")
-        pairs[kind.strip().lower()] = header
-    return _checked_columns(pairs)
+    return _checked_columns((kind, header) for kind, _, header in pairs)
 
 
 def _header(cells: list[str], line: int, source: str, default_units: str,
             mapping: dict[str, str] | None) -> dict[str, tuple[int, str, float]]:
     """Used columns: kind -> (column index, unit label, factor to SI)."""
     found: dict[str, list[tuple[int, str, float]]] = {}
+    prefix = f"{source}: line {line}"
     if mapping is None:
         for j, cell in enumerate(cells):
-            named = _named_column(cell, default_units, f"{source}: line {line}", j + 1)
+            named = _column(cell, default_units, prefix, j + 1)
             if named is not None:
                 found.setdefault(named[0], []).append((j, *named[1:]))
     else:
@@ -340,14 +325,12 @@ def _header(cells: list[str], line: int, source: str, default_units: str,
             matches = [j for j, cell in enumerate(folded) if cell == header.casefold()]
             if len(matches) != 1:
                 where = "no column" if not matches else f"{len(matches)} columns ({', '.join(str(j + 1) for j in matches)})"
-                raise CardError(f"{source}: line {line}: --card-columns {kind}={header!r}: {where} of that name; "
+                raise CardError(f"{prefix}: --card-columns {kind}={header!r}: {where} of that name; "
                                 f"the header has {', '.join(_show(c.strip()) for c in cells[:12])}")
-            j = matches[0]
-            found[kind] = [(j, *_mapped_column(cells[j], kind, default_units,
-                                                f"{source}: line {line}: column {j + 1} {_show(cells[j].strip())}")[1:])]
+            found[kind] = [(matches[0], *_column(cells[matches[0]], default_units, prefix, matches[0] + 1, kind)[1:])]
     kinds = [kind for kind, where in found.items() for _ in where]
     if len(set(kinds)) != len(kinds) or set(kinds) not in _LAYOUTS:
-        raise CardError(f"{source}: line {line}: columns {', '.join(kinds) or 'none'}; {_LAYOUT_TEXT}")
+        raise CardError(f"{prefix}: columns {', '.join(kinds) or 'none'}; {_LAYOUT_TEXT}")
     return {kind: where[0] for kind, where in found.items()}
 
 
@@ -464,7 +447,7 @@ def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
     """
     if default_units not in _DEFAULT_UNITS:
         raise CardError(f"card units {default_units!r}: use {' or '.join(_DEFAULT_UNITS)}")
-    mapping = None if columns is None else _checked_columns(columns)
+    mapping = None if columns is None else _checked_columns(columns.items())
     source, data = _read_source(path, stream)
     table = _parse(_decode(data, source), source, default_units, mapping)
     load = table.columns["load"].values
