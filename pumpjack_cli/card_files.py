@@ -56,6 +56,8 @@ WORK_TOLERANCE = 1e-3
 MAX_GAP = math.radians(30.0)
 MIN_POINTS = 8
 MAX_POINTS = 100_000
+#: Lines of any kind (points, comments, blanks), counted before the text is split.
+MAX_LINES = 2 * MAX_POINTS
 MAX_COLUMNS = 64
 MAX_BYTES = 10_000_000
 STDIN = "-"
@@ -359,6 +361,8 @@ def _is_float(cell: str) -> bool:
 
 def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] | None) -> _Table:
     """The used columns of a card's text, in SI, with the line number of each row."""
+    if text.count("\n") >= MAX_LINES:
+        raise CardError(f"{source}: more than {MAX_LINES} lines; a card file has at most {MAX_LINES}")
     lines = text.split("\n")
     kept = [i for i, line in enumerate(lines) if _is_content(line)]
     if not kept:
@@ -369,10 +373,11 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
     if delimiter is None:
         raise CardError(f"{source}: line {header_line}: no comma, semicolon or tab in the header {_show(header.strip())}; "
                         f"a card has named columns, e.g. position_in,load_lbf")
+    if header.count(delimiter) >= MAX_COLUMNS:
+        raise CardError(f"{source}: line {header_line}: {header.count(delimiter) + 1} columns; "
+                        f"a card file has at most {MAX_COLUMNS}")
     cells = header.split(delimiter)
-    if len(cells) > MAX_COLUMNS:
-        raise CardError(f"{source}: line {header_line}: {len(cells)} columns; a card file has at most {MAX_COLUMNS}")
-    if all(_is_float(cell) for cell in cells):
+    if all(_is_float(cell.replace(",", ".")) for cell in cells):
         raise CardError(f"{source}: line {header_line}: numbers where the header should be; "
                         f"the first line names the columns, e.g. position_in,load_lbf")
     used = _header(cells, header_line, source, default_units, mapping)

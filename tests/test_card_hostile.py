@@ -115,6 +115,7 @@ CASES += [
     ("header-only", card(rows=[]), "0 points; a card needs at least 8"),
     ("seven-points", card(rows=ROWS[:7]), "7 points; a card needs at least 8"),
     ("no-header", "\n".join(ROWS) + "\n", "line 1: numbers where the header should be"),
+    ("no-header-decimal-commas", "0,0;0,1;52,3\n0,1;0,2;52,4\n", "line 1: numbers where the header should be"),
     ("no-delimiter", "time position load\n1 2 3\n", "line 1: no comma, semicolon or tab in the header"),
     ("too-many-columns", ",".join(["index"] * 65) + "\n", "line 1: 65 columns; a card file has at most 64"),
     ("angles-all-equal", numeric_card("crank_angle_deg,load_n", [np.full(20, 90.0), np.linspace(4e4, 5e4, 20)]),
@@ -241,6 +242,13 @@ def test_stdin_is_read_with_a_bounded_size(monkeypatch):
         read_card("-", SK8, stream=stream)
     check(error, "<stdin>", "more than 1000 bytes")
     assert stream.tell() == 1001
+
+
+def test_lines_limit_is_checked_before_splitting():
+    """2.5 million lines of 4 bytes (under 10 MB) are refused from a count, not split into lists."""
+    with pytest.raises(CardError) as error:
+        read_card("-", SK8, stream=io.BytesIO(b"position,load\n" + b"1,2\n" * 2_499_000))
+    check(error, "<stdin>", f"more than {card_files.MAX_LINES} lines")
 
 
 def test_points_limit(monkeypatch):
