@@ -33,3 +33,7 @@ class TorqueError(PumpjackError, ValueError):
 
 class DownholeError(PumpjackError, ValueError):
     """A rod string or a dynamometer card the downhole (pump-card) calculation cannot use."""
+
+
+class CardError(PumpjackError, ValueError):
+    """A dynamometer card that cannot be read, contradicts itself or does not fit the unit."""
