@@ -14,10 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
 import re
-import stat
-import sys
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from itertools import repeat
@@ -31,6 +28,7 @@ from .core.beam.card import (Card, RotationFit, card_from_angles, crank_angle_fr
 from .core.beam.geometry import CLOCKWISE, Linkage
 from .errors import CardError
 from .quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
+from .text_input import STDIN, display_name, read_text
 
 __all__ = ["CardError", "CardReading", "check_speed", "parse_card_columns", "read_card"]
 
@@ -60,8 +58,6 @@ MAX_POINTS = 100_000
 MAX_LINES = 2 * MAX_POINTS
 MAX_COLUMNS = 64
 MAX_BYTES = 10_000_000
-STDIN = "-"
-STDIN_NAME = "<stdin>"
 
 #: Units of each column's dimension: lower-case spelling -> factor to SI.
 _UNITS = {
@@ -96,8 +92,6 @@ _DELIMITERS = ("\t", ";", ",")
 _DELIMITER_NAMES = {"\t": "tab", ";": "semicolon", ",": "comma"}
 _UNIT_AT_END = re.compile(r"^(.*?)\s*(?:[\[(]\s*([^\[\]()]*?)\s*[\])]|,\s*([^,]+?))\s*$")
 _ROTATION_NAMES = {CLOCKWISE: "clockwise", -CLOCKWISE: "counterclockwise"}
-_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a device"),
-               (stat.S_ISBLK, "a device"))
 
 
 @dataclass(frozen=True)
@@ -150,77 +144,6 @@ class _Table:
 def _show(text: str, limit: int = 40) -> str:
     """repr of a cell or name for a message, cut to ``limit`` characters."""
     return repr(text if len(text) <= limit else text[:limit] + "...")
-
-
-def _display(path: Path | str) -> str:
-    """The file's name for messages, on one line."""
-    name = str(path)
-    return name if name.isprintable() else ascii(name)[1:-1]
-
-
-def _read_source(path: Path | str, stream: IO | None) -> tuple[str, bytes | str]:
-    """Name for messages and the raw content, read with a bounded size and never blocking on a FIFO."""
-    if str(path) == STDIN:
-        source = STDIN_NAME
-        stream = sys.stdin if stream is None else stream
-        if stream.isatty():
-            raise CardError(f"{source}: is a terminal; pipe or redirect a card file into --card -")
-        try:
-            data = getattr(stream, "buffer", stream).read(MAX_BYTES + 1)
-        except OSError as exc:
-            raise CardError(f"{source}: cannot read: {exc.strerror or exc}") from None
-    else:
-        source = _display(path)
-        try:
-            fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-        except OSError as exc:
-            raise CardError(f"{source}: cannot read: {exc.strerror}") from None
-        except ValueError:
-            raise CardError(f"{source}: cannot read: the name holds a NUL character") from None
-        try:
-            data = _read_regular(fd, source)
-        finally:
-            os.close(fd)
-    if len(data) > MAX_BYTES:
-        raise CardError(f"{source}: more than {MAX_BYTES} bytes; a card file has at most {MAX_BYTES} bytes")
-    return source, data
-
-
-def _read_regular(fd: int, source: str) -> bytes:
-    """At most MAX_BYTES + 1 bytes of an open file, refused unless it is a regular file."""
-    info = os.fstat(fd)
-    if not stat.S_ISREG(info.st_mode):
-        kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
-        raise CardError(f"{source}: is {kind}, not a card file")
-    if info.st_size > MAX_BYTES:
-        raise CardError(f"{source}: {info.st_size} bytes; a card file has at most {MAX_BYTES} bytes")
-    try:
-        with open(fd, "rb", closefd=False) as file:
-            return file.read(MAX_BYTES + 1)
-    except OSError as exc:
-        raise CardError(f"{source}: cannot read: {exc.strerror}") from None
-
-
-def _line_count(text: str) -> int:
-    return text.replace("\r\n", "\n").replace("\r", "\n").count("\n") + 1
-
-
-def _decode(data: bytes | str, source: str) -> str:
-    """UTF-8 text with LF line ends and no byte-order mark."""
-    if isinstance(data, bytes):
-        if data.startswith((b"\xff\xfe", b"\xfe\xff")):
-            raise CardError(f"{source}: UTF-16 or UTF-32 text (byte-order mark); save the card as UTF-8")
-        try:
-            data = data.decode("utf-8")
-        except UnicodeDecodeError as exc:
-            line = _line_count(data[:exc.start].decode("utf-8"))
-            raise CardError(f"{source}: line {line}: byte 0x{data[exc.start]:02x} is not UTF-8; "
-                            f"save the card as UTF-8 text") from None
-    text = data.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
-    nul = text.find("\0")
-    if nul >= 0:
-        raise CardError(f"{source}: line {text.count(chr(10), 0, nul) + 1}: a NUL character: binary data, not a text card")
-    return text
 
 
 def _is_content(line: str) -> bool:
@@ -453,8 +376,8 @@ def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
     if default_units not in _DEFAULT_UNITS:
         raise CardError(f"card units {default_units!r}: use {' or '.join(_DEFAULT_UNITS)}")
     mapping = None if columns is None else _checked_columns(columns.items())
-    source, data = _read_source(path, stream)
-    table = _parse(_decode(data, source), source, default_units, mapping)
+    source = display_name(path)
+    table = _parse(read_text(path, MAX_BYTES, "card file", CardError, stream), source, default_units, mapping)
     load = table.columns["load"].values
     if "crank_angle" in table.columns:
         theta = table.columns["crank_angle"].values % (2.0 * math.pi)

@@ -1,11 +1,12 @@
 """Reading the user's text files safely: one clear line for anything that is not a text file.
 
 Every input file (unit files, dynamometer cards, batch manifests) goes through
-:func:`read_text`: it refuses, before reading, what is not a regular file (a directory,
-a FIFO that would block, a device such as ``/dev/zero`` that never ends) and what is
-larger than the limit of its kind; it reads at most that many bytes; and it accepts
-only UTF-8 text (a byte-order mark is dropped), naming UTF-16, binary data and other
-encodings instead of misreading them. ``-`` reads standard input with the same limit.
+:func:`read_text`: it opens without blocking, refuses what is not a regular file (a
+directory, a FIFO, a device such as ``/dev/zero`` that never ends) and what is larger
+than the limit of its kind, reads at most that many bytes, and accepts only UTF-8 text
+(a byte-order mark is dropped, line ends become LF), naming UTF-16, binary data and
+other encodings instead of misreading them. ``-`` reads standard input with the same
+limit, and refuses a terminal (it would wait for typing).
 """
 
 from __future__ import annotations
@@ -15,9 +16,12 @@ import os
 import stat
 import sys
 from pathlib import Path
-from typing import BinaryIO
+from typing import IO
 
 from .errors import PumpjackError
+
+STDIN = "-"
+STDIN_NAME = "<stdin>"
 
 #: What the operating system's errors mean to a user, by errno.
 _OS_ERRORS = {
@@ -28,7 +32,11 @@ _OS_ERRORS = {
     errno.ENOTDIR: "a part of the path is not a directory",
     errno.ELOOP: "too many symbolic links",
     errno.EISDIR: "is a directory",
+    errno.ENOSPC: "no space left on device",
+    errno.EROFS: "read-only file system",
 }
+_FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a device"),
+               (stat.S_ISBLK, "a device"), (stat.S_ISSOCK, "a socket"))
 
 
 def describe_os_error(exc: OSError) -> str:
@@ -36,62 +44,76 @@ def describe_os_error(exc: OSError) -> str:
     return _OS_ERRORS.get(exc.errno, exc.strerror or str(exc))
 
 
-def _kind_of(mode: int) -> str:
-    if stat.S_ISDIR(mode):
-        return "a directory"
-    if stat.S_ISFIFO(mode):
-        return "a FIFO (named pipe)"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        return "a device"
-    if stat.S_ISSOCK(mode):
-        return "a socket"
-    return "not a regular file"
+def display_name(path: Path | str) -> str:
+    """A file's name for a one-line message (non-printable characters escaped)."""
+    name = STDIN_NAME if str(path) == STDIN else str(path)
+    return name if name.isprintable() else ascii(name)[1:-1]
 
 
-def _decode(data: bytes, source: str, error: type[PumpjackError]) -> str:
-    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
-        raise error(f"{source}: is UTF-16 text; save it as UTF-8")
-    if b"\x00" in data:
-        raise error(f"{source}: is binary data (it contains NUL bytes), not a text file")
+def _line_of(data: bytes, offset: int) -> int:
+    return data[:offset].count(b"\n") + 1
+
+
+def decode_text(data: bytes | str, source: str, error: type[PumpjackError]) -> str:
+    """UTF-8 text with LF line ends and no byte-order mark; anything else raises ``error``."""
+    if isinstance(data, bytes):
+        if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+            raise error(f"{source}: is UTF-16 or UTF-32 text (byte-order mark); save it as UTF-8")
+        try:
+            data = data.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise error(f"{source}: line {_line_of(data, exc.start)}: byte 0x{data[exc.start]:02x} is not UTF-8; "
+                        f"save the file as UTF-8 text (for example from cp1251 or Latin-1)") from None
+    text = data.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
+    nul = text.find("\0")
+    if nul >= 0:
+        raise error(f"{source}: line {text.count(chr(10), 0, nul) + 1}: a NUL character: binary data, not text")
+    return text
+
+
+def _read_file(path: Path | str, limit: int, what: str, source: str, error: type[PumpjackError]) -> bytes:
     try:
-        return data.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        line = data[: exc.start].count(b"\n") + 1
-        raise error(
-            f"{source}: line {line}: is not UTF-8 text (byte 0x{data[exc.start]:02x}); save it as UTF-8 "
-            f"(for example from cp1251 or Latin-1)"
-        ) from None
-
-
-def _read_stream(stream: BinaryIO, limit: int, source: str, what: str, error: type[PumpjackError]) -> bytes:
-    data = stream.read(limit + 1)
-    if len(data) > limit:
-        raise error(f"{source}: more than {limit:,} bytes; a {what} is at most {limit:,} bytes")
-    return data
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as exc:
+        raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
+    except ValueError:
+        raise error(f"{source}: cannot read: the name holds a NUL character") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
+            raise error(f"{source}: is {kind}, not a {what}")
+        if info.st_size > limit:
+            raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")
+        with open(fd, "rb", closefd=False) as file:
+            return file.read(limit + 1)
+    except OSError as exc:
+        raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
+    finally:
+        os.close(fd)
 
 
 def read_text(path: Path | str, limit: int, what: str, error: type[PumpjackError] = PumpjackError,
-              stdin: BinaryIO | None = None) -> str:
-    """The UTF-8 text of a file (``"-"``: standard input) of at most ``limit`` bytes.
+              stream: IO | None = None) -> str:
+    """The text of a file (``"-"``: ``stream``, by default standard input) of at most ``limit`` bytes.
 
-    ``what`` names the kind of file in messages ("unit file", "card"); problems raise
-    ``error`` (a :class:`~pumpjack_cli.errors.PumpjackError`) with one line naming the
-    file and the problem.
+    ``what`` names the kind of file in messages ("unit file", "card file"); problems
+    raise ``error`` (a :class:`~pumpjack_cli.errors.PumpjackError`) with one line naming
+    the file and the problem.
     """
-    if str(path) == "-":
-        stream = stdin if stdin is not None else sys.stdin.buffer
-        return _decode(_read_stream(stream, limit, "<stdin>", what, error), "<stdin>", error)
-    source = str(path)
-    try:
-        info = os.stat(path)
-        if not stat.S_ISREG(info.st_mode):
-            raise error(f"{source}: is {_kind_of(info.st_mode)}, not a {what}")
-        if info.st_size > limit:
-            raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")
-        with open(path, "rb") as stream:
-            data = _read_stream(stream, limit, source, what, error)
-    except OSError as exc:
-        raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
-    except ValueError as exc:  # embedded NUL in the path
-        raise error(f"{source!r}: not a valid path: {exc}") from None
-    return _decode(data, source, error)
+    source = display_name(path)
+    if str(path) == STDIN:
+        stream = sys.stdin if stream is None else stream
+        if stream is None:
+            raise error(f"{source}: standard input is closed")
+        if stream.isatty():
+            raise error(f"{source}: is a terminal; pipe or redirect a {what} into it")
+        try:
+            data = getattr(stream, "buffer", stream).read(limit + 1)
+        except OSError as exc:
+            raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
+    else:
+        data = _read_file(path, limit, what, source, error)
+    if len(data) > limit:
+        raise error(f"{source}: more than {limit:,} bytes; a {what} is at most {limit:,} bytes")
+    return decode_text(data, source, error)

@@ -19,7 +19,7 @@ import pytest
 
 from pumpjack_cli.card_files import CardReading, parse_card_columns, read_card
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.units import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
+from pumpjack_cli.quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"

@@ -188,9 +188,9 @@ PATHS = {
     "fifo": (fifo, "is a FIFO (named pipe), not a card file"),
     "dev-zero": (lambda tmp_path: Path("/dev/zero"), "is a device, not a card file"),
     "dev-null": (lambda tmp_path: Path("/dev/null"), "is a device, not a card file"),
-    "missing": (lambda tmp_path: tmp_path / "nope.csv", "cannot read: No such file or directory"),
-    "name-too-long": (lambda tmp_path: tmp_path / ("x" * 5000), "cannot read: File name too long"),
-    "oversize": (sparse, f"{card_files.MAX_BYTES + 1} bytes; a card file has at most {card_files.MAX_BYTES} bytes"),
+    "missing": (lambda tmp_path: tmp_path / "nope.csv", "cannot read: no such file"),
+    "name-too-long": (lambda tmp_path: tmp_path / ("x" * 5000), "cannot read: file name too long"),
+    "oversize": (sparse, f"{card_files.MAX_BYTES + 1:,} bytes; a card file is at most {card_files.MAX_BYTES:,} bytes"),
 }
 
 
@@ -220,7 +220,7 @@ def test_permission_denied(tmp_path):
     path.chmod(0)
     with pytest.raises(CardError) as error:
         read_card(path, SK8)
-    check(error, str(path), "cannot read: Permission denied")
+    check(error, str(path), "cannot read: permission denied")
 
 
 class Terminal(io.StringIO):
@@ -240,7 +240,7 @@ def test_stdin_is_read_with_a_bounded_size(monkeypatch):
     stream = io.BytesIO(card().encode())
     with pytest.raises(CardError) as error:
         read_card("-", SK8, stream=stream)
-    check(error, "<stdin>", "more than 1000 bytes")
+    check(error, "<stdin>", "more than 1,000 bytes")
     assert stream.tell() == 1001
 
 
