@@ -50,7 +50,11 @@ UnitsOption = Annotated[
     typer.Option("--units", help="si (m, m/s, N, N·m) or field (in, ft/s, lbf, lbf·in)"),
 ]
 UnitArgument = Annotated[str, typer.Argument(help="bundled unit name (see `pumpjack units`) or path to a unit file")]
-CardOption = Annotated[Path, typer.Option("--card", help="dynamometer card CSV (see docs/cards.md)", dir_okay=False)]
+CardOption = Annotated[Path, typer.Option(
+    "--card", help="dynamometer card CSV, or - for standard input (see docs/cards.md)", dir_okay=False)]
+CardColumnsOption = Annotated[str | None, typer.Option(
+    "--card-columns", help="which card columns to read, for headers the reader does not know: "
+    "'position=NAME,load=NAME[,time=NAME]' or 'crank_angle=NAME,load=NAME'")]
 CardUnitsOption = Annotated[
     UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
 ]

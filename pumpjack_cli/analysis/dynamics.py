@@ -2,13 +2,11 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from ..core.dynamics.periodic import steady_state
 from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
-from .card_runs import load_card
+from .card_runs import CardSource
 from .machine import machine
 
 #: Well-model forces of the summary: name, description.
@@ -23,9 +21,9 @@ _WELL_FORCES = (
 )
 
 
-def dynamics(unit, card: Path | None, card_units: str, rtol: float, steps: int) -> Result:
+def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
     """The periodic motion under the motor, the well model (or a card) and the weights ([SK8Rotation2013])."""
-    measured = None if card is None else load_card(card, unit.geometry.linkage(), card_units)
+    measured = None if card is None else card.read(unit.geometry.linkage()).card
     machine_ = machine(unit, measured)
     result = steady_state(machine_, crank_grid(steps), rtol=rtol)
     s = result.summary

@@ -10,7 +10,8 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+from ..analysis.card_runs import CardSource
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
                      SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "balancing_torque_real")
@@ -24,6 +25,7 @@ def compare_redundancy(
     unit: UnitArgument,
     card: CardOption,
     card_units: CardUnitsOption = UnitSystem.si,
+    card_columns: CardColumnsOption = None,
     spm: SpmOption = None,
     steps: StepsOption = 360,
     rotation: RotationOption = Rotation.uniform,
@@ -48,4 +50,5 @@ def compare_redundancy(
              "equalizer_pin_roll": equalizer_pin_roll, "equalizer_pin_yaw": equalizer_pin_yaw}
     given = {field: quantity(text, DEVIATIONS[field], "--" + field.replace("_", "-"))
              for field, text in texts.items() if text is not None}
-    sink.emit(run(load_unit(unit), card, card_units.value, spm, steps, rotation.value, given), SHOWN)
+    sink.emit(run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value,
+                  given), SHOWN)

@@ -10,7 +10,8 @@ import typer
 from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
-from ..options import CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
+from ..analysis.card_runs import CardSource
+from ..options import CardColumnsOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -22,6 +23,7 @@ def dynamics(
         "--card", help="drive the unit with a dynamometer card CSV instead of the well model (docs/cards.md)",
         dir_okay=False)] = None,
     card_units: CardUnitsOption = UnitSystem.si,
+    card_columns: CardColumnsOption = None,
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
                                         min=1e-13, max=1e-3)] = DEFAULT_RTOL,
     steps: Annotated[int, typer.Option(help="crank positions per revolution in the output", min=4, max=1_000_000)] = 360,
@@ -35,4 +37,5 @@ def dynamics(
     The periodic motion under the motor's characteristic, the well (or a dynamometer
     card) and the weights."""
     sink = Output(fmt, units, out, plot)
-    sink.emit(run(load_unit(unit), card, card_units.value, rtol, steps), SHOWN)
+    source = None if card is None else CardSource(card, card_units.value, card_columns)
+    sink.emit(run(load_unit(unit), source, rtol, steps), SHOWN)

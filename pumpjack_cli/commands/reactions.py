@@ -8,7 +8,8 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+from ..analysis.card_runs import CardSource
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
                      SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque")
@@ -18,6 +19,7 @@ def reactions(
     unit: UnitArgument,
     card: CardOption,
     card_units: CardUnitsOption = UnitSystem.si,
+    card_columns: CardColumnsOption = None,
     spm: SpmOption = None,
     steps: StepsOption = 360,
     rotation: RotationOption = Rotation.uniform,
@@ -36,6 +38,6 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), card, card_units.value, spm, steps, rotation.value, weights=not no_weights,
+    result = run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

@@ -88,3 +88,18 @@ def cycle_period(omega: float) -> float:
     6.0
     """
     return 2.0 * np.pi / omega
+
+
+def peak(theta: np.ndarray, values: np.ndarray) -> Extreme:
+    """The largest magnitude of a periodic curve on the uniform grid ``theta`` [rad] and
+    its crank angle, refined as :func:`extremes` does.
+
+    ``values`` is a series (N,) (magnitude |v|) or a series of vectors (N, k) (length).
+
+    >>> theta = crank_grid(36)
+    >>> found = peak(theta, -2.0 * np.cos(theta - 0.1))   # largest |v| = 2 at theta = 0.1
+    >>> round(found.value, 4), round(found.crank_angle, 3)
+    (2.0, 0.1)
+    """
+    magnitude = np.abs(values) if np.ndim(values) == 1 else np.linalg.norm(values, axis=-1)
+    return extremes(theta, magnitude)[0]
