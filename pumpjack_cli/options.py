@@ -5,6 +5,7 @@ Imports nothing heavy: `pumpjack units` and every command's ``--help`` use it.
 
 from __future__ import annotations
 
+import math
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
@@ -58,9 +59,18 @@ CardColumnsOption = Annotated[str | None, typer.Option(
 CardUnitsOption = Annotated[
     UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
 ]
-SpmOption = Annotated[
-    float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)
-]
+def finite(value: float | None) -> float | None:
+    """Refuse NaN and infinity in a float option (typer's range check lets NaN through)."""
+    if value is not None and not math.isfinite(value):
+        raise typer.BadParameter(f"{value} is not a finite number")
+    return value
+
+
+SpmOption = Annotated[float | None, typer.Option(
+    help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60, callback=finite)]
+CardSpmOption = Annotated[float | None, typer.Option(
+    "--spm", help="pumping speed, strokes/min [default: the card's time stamps, else from motor and drive]",
+    min=0.1, max=60, callback=finite)]
 StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
 RotationOption = Annotated[Rotation, typer.Option(
     "--rotation", help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the periodic "

@@ -249,7 +249,8 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
     hidden = len(result.columns) - len(brief)
     if hidden:
         lines += ["", f"{hidden} more columns with --format csv or json"]
-    stream.write("\n".join(lines) + "\n")
+    for start in range(0, len(lines), CSV_BLOCK):
+        stream.write("\n".join(lines[start:start + CSV_BLOCK]) + "\n")
 
 
 def draw_plot(result: Result, system: str, stream, file_format: str) -> None:

@@ -59,6 +59,10 @@ def decode_text(data: bytes | str, source: str, error: type[PumpjackError]) -> s
     if isinstance(data, bytes):
         if data.startswith((b"\xff\xfe", b"\xfe\xff")):
             raise error(f"{source}: is UTF-16 or UTF-32 text (byte-order mark); save it as UTF-8")
+        nul = data.find(b"\0")
+        if nul >= 0:
+            line = data[:nul].replace(b"\r\n", b"\n").replace(b"\r", b"\n").count(b"\n") + 1
+            raise error(f"{source}: line {line}: a NUL character: binary data, not text")
         try:
             data = data.decode("utf-8")
         except UnicodeDecodeError as exc:

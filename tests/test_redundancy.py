@@ -261,8 +261,11 @@ def test_command_bad_deviations(run_cli, args, fragment):
     assert len(err.splitlines()) == 1 and fragment in err
 
 
-def test_unit_without_pitman_section(run_cli, repo_root):
-    code, _, err = run_cli("compare-redundancy", "c-114d-133-54", "--card",
+def test_unit_without_pitman_section(run_cli, repo_root, tmp_path):
+    text = (repo_root / "configs" / "c-114d-133-54.toml").read_text(encoding="utf-8")
+    unit = tmp_path / "no-section.toml"
+    unit.write_text(text[: text.index("[pitman_section]")], encoding="utf-8")
+    code, _, err = run_cli("compare-redundancy", unit, "--card",
                            repo_root / "samples" / "c-114d-133-54-card.csv", "--spm", "10")
     assert code == 2 and "no [pitman_section]" in err
 

@@ -12,7 +12,7 @@ from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
 from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "balancing_torque_real")
 
@@ -26,7 +26,7 @@ def compare_redundancy(
     card: CardOption,
     card_units: CardUnitsOption = UnitSystem.si,
     card_columns: CardColumnsOption = None,
-    spm: SpmOption = None,
+    spm: CardSpmOption = None,
     steps: StepsOption = 360,
     rotation: RotationOption = Rotation.uniform,
     crank_phase: Annotated[str | None, _deviation("crank pin A1 ahead of A, e.g. '0.5 deg'")] = None,

@@ -11,7 +11,7 @@ from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..analysis.card_runs import CardSource
-from ..options import CardColumnsOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
+from ..options import CardColumnsOption, finite, CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -25,7 +25,7 @@ def dynamics(
     card_units: CardUnitsOption = UnitSystem.si,
     card_columns: CardColumnsOption = None,
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
-                                        min=1e-13, max=1e-3)] = DEFAULT_RTOL,
+                                        min=1e-13, max=1e-3, callback=finite)] = DEFAULT_RTOL,
     steps: Annotated[int, typer.Option(help="crank positions per revolution in the output", min=4, max=1_000_000)] = 360,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,

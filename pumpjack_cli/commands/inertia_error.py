@@ -8,7 +8,7 @@ import typer
 
 from ..analysis.inertia import inertia_error as run
 from ..config import load_any_unit
-from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity
+from ..options import finite, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity
 
 SHOWN_LAWS = ("crank_angle", "time", "position", "velocity", "acceleration", "inertia_force")
 SHOWN_SUPPORT = ("crank_angle", "travel", "outer_edge_reaction", "inner_edge_reaction", "guide_friction",
@@ -18,7 +18,7 @@ SHOWN_SUPPORT = ("crank_angle", "travel", "outer_edge_reaction", "inner_edge_rea
 def inertia_error(
     unit: UnitArgument,
     spm: Annotated[float | None, typer.Option(
-        "--spm", "--rpm", min=0.1, max=1000,
+        "--spm", "--rpm", min=0.1, max=1000, callback=finite,
         help="crank speed, revolutions (double strokes) per minute [default: slider-crank: from its file; "
              "beam unit: from motor and drive]",
     )] = None,

@@ -8,14 +8,14 @@ import typer
 
 from ..analysis.kinematics import kinematics as run
 from ..config import load_unit
-from ..options import FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
+from ..options import SpmOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 
 SHOWN = ("crank_angle", "time", "position", "velocity", "acceleration", "torque_factor")
 
 
 def kinematics(
     unit: UnitArgument,
-    spm: Annotated[float | None, typer.Option(help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60)] = None,
+    spm: SpmOption = None,
     steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=10_000_000)] = 360,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,

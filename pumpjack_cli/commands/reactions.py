@@ -10,7 +10,7 @@ from ..analysis.reactions import reactions as run
 from ..config import load_unit
 from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     SpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque")
 
@@ -20,7 +20,7 @@ def reactions(
     card: CardOption,
     card_units: CardUnitsOption = UnitSystem.si,
     card_columns: CardColumnsOption = None,
-    spm: SpmOption = None,
+    spm: CardSpmOption = None,
     steps: StepsOption = 360,
     rotation: RotationOption = Rotation.uniform,
     no_inertia: Annotated[bool, typer.Option("--no-inertia", help="leave out the links' inertia forces and moments")] = False,

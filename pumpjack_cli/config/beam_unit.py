@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
@@ -22,31 +22,31 @@ from ..core.beam.spatial import SpatialLinkage
 from ..core.dynamics.drive import belt_ratio, rated_crank_speed, total_ratio
 from ..errors import ConfigError, GeometryError
 from .geometry_names import ROTATION_SIGNS, canonical_geometry
-from .quantities import (Angle, Area, AreaMoment, Count, Density, Fraction, KinematicViscosity, Length, Mass,
+from .quantities import (Angle, at_least, Area, AreaMoment, Count, Density, Fraction, KinematicViscosity, Length, Mass,
                          MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section)
 
 
 class Geometry(Section):
     """Four-bar geometry of a conventional (class I) unit, rotation direction included."""
 
-    front_arm: Length = Field(gt=0, le=20, description="k1 / A: centre bearing to horsehead arc [m]")
-    rear_arm: Length = Field(gt=0, le=20, description="k / C: centre bearing to equalizer bearing [m]")
-    crank_radius: Length = Field(gt=0, le=5, description="r / R: crank shaft to crank pin [m]")
-    pitman: Length = Field(gt=0, le=20, description="l / P: crank pin to equalizer bearing [m]")
+    front_arm: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="k1 / A: centre bearing to horsehead arc [m]")
+    rear_arm: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="k / C: centre bearing to equalizer bearing [m]")
+    crank_radius: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=5, description="r / R: crank shaft to crank pin [m]")
+    pitman: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="l / P: crank pin to equalizer bearing [m]")
     horizontal_offset: Length = Field(
         ge=0, le=20, description="l1 / I: horizontal distance crank shaft - centre bearing [m]"
     )
-    vertical_offset: Length = Field(
+    vertical_offset: Annotated[Length, at_least(0.01, "10 mm")] = Field(
         gt=0, le=20, description="l2 / H-G: height of the centre bearing above the crank shaft [m]"
     )
     rotation: Literal["clockwise", "counterclockwise"] = Field(
         description="crank rotation seen with the well to the right"
     )
-    crank_half_spacing: Length | None = Field(
+    crank_half_spacing: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
         default=None, gt=0, le=5,
         description="spatial model: crank shaft mid-plane to each crank pin, along the shaft [m]",
     )
-    equalizer_half_length: Length | None = Field(
+    equalizer_half_length: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
         default=None, gt=0, le=5, description="spatial model: equalizer bearing D to each pin, BD = DB1 [m]"
     )
 
@@ -178,9 +178,9 @@ class Motor(Section):
     """Induction motor nameplate data (seed 004, eqs. 25-26)."""
 
     model: str = Field(description="motor type designation")
-    rated_power: Power = Field(gt=0, le=1e6, description="rated shaft power [W]")
-    synchronous_speed: RotationalSpeed = Field(gt=0, le=400, description="synchronous speed n_s [rad/s]")
-    rated_speed: RotationalSpeed = Field(gt=0, le=400, description="rated speed n_n [rad/s]")
+    rated_power: Annotated[Power, at_least(10.0, "10 W")] = Field(gt=0, le=1e6, description="rated shaft power [W]")
+    synchronous_speed: Annotated[RotationalSpeed, at_least(1.0, "1 rad/s")] = Field(gt=0, le=400, description="synchronous speed n_s [rad/s]")
+    rated_speed: Annotated[RotationalSpeed, at_least(1.0, "1 rad/s")] = Field(gt=0, le=400, description="rated speed n_n [rad/s]")
     starting_torque_ratio: Number = Field(gt=0, le=10, description="starting torque / rated torque")
     breakdown_torque_ratio: Number = Field(gt=1, le=10, description="pull-out (maximum) torque / rated torque")
     rotor_inertia: MomentOfInertia = Field(gt=0, le=1e3, description="rotor moment of inertia [kg·m²]")
@@ -198,8 +198,8 @@ class Drive(Section):
     motor: Motor
     gearbox: str = Field(description="gearbox type designation")
     gearbox_ratio: Number = Field(gt=1, le=200, description="gearbox reduction ratio u_r")
-    motor_sheave_diameter: Length = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
-    gearbox_sheave_diameter: Length = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
+    motor_sheave_diameter: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=3, description="motor (driving) sheave diameter d_1 [m]")
+    gearbox_sheave_diameter: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=5, description="gearbox (driven) sheave diameter d_2 [m]")
     motor_sheave_inertia: MomentOfInertia = Field(
         default=0.0, ge=0, le=1e3, description="motor (driving) sheave, on the motor shaft; 0: not counted [kg·m²]"
     )
@@ -230,22 +230,22 @@ class Drive(Section):
 class RodSection(Section):
     """One section of a tapered rod string."""
 
-    diameter: Length = Field(gt=0, le=0.06, description="rod diameter [m]")
+    diameter: Annotated[Length, at_least(0.005, "5 mm")] = Field(gt=0, le=0.06, description="rod diameter [m]")
     fraction: Fraction = Field(gt=0, le=1, description="share of the string length (0..1, or '51 %')")
 
 
 class Well(Section):
     """Downhole data of the well the unit pumps (seed 004)."""
 
-    pump_depth: Length = Field(gt=0, le=5000, description="pump setting depth [m]")
-    plunger_diameter: Length = Field(gt=0, le=0.15, description="pump plunger diameter [m]")
+    pump_depth: Annotated[Length, at_least(1.0, "1 m")] = Field(gt=0, le=5000, description="pump setting depth [m]")
+    plunger_diameter: Annotated[Length, at_least(0.005, "5 mm")] = Field(gt=0, le=0.15, description="pump plunger diameter [m]")
     rod_string: tuple[RodSection, ...] = Field(min_length=1, description="rod sections from the top down")
     fluid_density: Density = Field(gt=100, le=2000, description="produced fluid density [kg/m³]")
     fluid_kinematic_viscosity: KinematicViscosity = Field(
         gt=0, le=1e-2, description="produced fluid kinematic viscosity [m²/s]"
     )
-    tubing_inner_diameter: Length = Field(gt=0, le=0.2, description="tubing inner diameter [m]")
-    plunger_clearance: Length | None = Field(
+    tubing_inner_diameter: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=0.2, description="tubing inner diameter [m]")
+    plunger_clearance: Annotated[Length, at_least(1e-6, "1 um")] | None = Field(
         default=None, gt=0, le=1e-3, description="clearance between plunger and barrel, for the plunger friction [m]"
     )
     pump_submergence: Length | None = Field(
@@ -267,14 +267,14 @@ class PitmanSectionConfig(Section):
     """Elastic pitman for the real mechanism (seed 000 eqs. 18-21; defaults from the seed
     where it gives them: E = 2.1e11 Pa, J_z = 17.61e-6 m^4)."""
 
-    youngs_modulus: Pressure = Field(default=2.1e11, gt=0, le=1e12, description="E [Pa] (seed 000)")
-    shear_modulus: Pressure = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
-    area: Area = Field(gt=0, le=0.1, description="cross-section area [m²]")
-    inplane_inertia: AreaMoment = Field(
+    youngs_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(default=2.1e11, gt=0, le=1e12, description="E [Pa] (seed 000)")
+    shear_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
+    area: Annotated[Area, at_least(1e-4, "1 cm2")] = Field(gt=0, le=0.1, description="cross-section area [m²]")
+    inplane_inertia: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(
         default=17.61e-6, gt=0, le=1e-2, description="J_z: second moment about the pin direction [m⁴] (seed 000)"
     )
-    outofplane_inertia: AreaMoment = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
-    torsion_constant: AreaMoment = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")
+    outofplane_inertia: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
+    torsion_constant: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")
 
     def model(self) -> PitmanSection:
         return PitmanSection(self.youngs_modulus, self.shear_modulus, self.area, self.inplane_inertia,

@@ -10,7 +10,7 @@ from __future__ import annotations
 from functools import partial
 from typing import Annotated
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Strict
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Strict
 
 from ..quantities import parse_quantity
 
@@ -34,6 +34,18 @@ Area = Annotated[float, _quantity("area")]
 #: Plain numbers without a unit; strict so that ``true`` is not read as 1.
 Number = Annotated[float, Strict()]
 Count = Annotated[int, Strict()]
+
+
+def at_least(minimum: float, shown: str) -> AfterValidator:
+    """A physical floor for a positive field: smaller values (down to the subnormal
+    1e-320) would make the computation overflow instead of being refused by name."""
+
+    def check(value: float) -> float:
+        if 0 < value < minimum:
+            raise ValueError(f"{value:.3g} is too small: give at least {shown} (SI {minimum:g})")
+        return value
+
+    return AfterValidator(check)
 
 
 class Section(BaseModel):

@@ -1,0 +1,329 @@
+"""Hostile inputs for every command: a right answer, or exit code 2 and one line naming the culprit.
+
+Generated cases, one class at a time: files that are not unit files, unit files with
+a broken structure, every numeric field of a unit set to extreme values, quantities
+written wrongly, bad options, output targets that will fail, and standard output
+closed, full or cut. Each case checks the exit code, a single ``pumpjack: error:`` line
+on stderr that names the file, field or option, no traceback, empty stdout, and that a
+pre-existing output file is left untouched. (Card files have their own module,
+``tests/test_card_hostile.py``.)
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SK8 = ROOT / "configs" / "sk8-3.5-4000.toml"
+SK8_CARD = ROOT / "samples" / "sk8-3.5-4000-card.csv"
+UNB = ROOT / "configs" / "unb-600a.toml"
+
+#: Every beam-unit command, as a function of the unit argument.
+COMMANDS = {
+    "kinematics": lambda unit: ["kinematics", unit, "--steps", "8"],
+    "reactions": lambda unit: ["reactions", unit, "--card", SK8_CARD, "--steps", "8"],
+    "compare-redundancy": lambda unit: ["compare-redundancy", unit, "--card", SK8_CARD, "--steps", "8",
+                                        "--crank-phase", "0.1 deg"],
+    "dynamics": lambda unit: ["dynamics", unit, "--steps", "8"],
+    "inertia-error": lambda unit: ["inertia-error", unit, "--steps", "8"],
+}
+
+
+def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:
+    assert code == 2, (code, err)
+    assert out == ""
+    assert err.startswith("pumpjack: error: ") and err.count("\n") == 1, err
+    assert "Traceback" not in err
+    for fragment in fragments:
+        assert fragment in err, (fragment, err)
+
+
+# --- files that are not unit files ------------------------------------------------------
+
+def _fifo(tmp: Path) -> Path:
+    path = tmp / "unit.toml"
+    os.mkfifo(path)
+    return path
+
+
+def _sparse(tmp: Path) -> Path:
+    path = tmp / "huge.toml"
+    with open(path, "wb") as f:
+        f.truncate(2 << 20)
+    return path
+
+
+def _write(name: str, content: bytes):
+    def make(tmp: Path) -> Path:
+        path = tmp / name
+        path.write_bytes(content)
+        return path
+    return make
+
+
+SK8_TEXT = SK8.read_text(encoding="utf-8")
+FILES = {
+    "directory": (lambda tmp: tmp, "is a directory"),
+    "fifo": (_fifo, "is a FIFO"),
+    "dev-zero": (lambda tmp: Path("/dev/zero"), "is a device"),
+    "too-large": (_sparse, "a unit file is at most"),
+    "missing": (lambda tmp: tmp / "nothing.toml", "no such file"),
+    "name-too-long": (lambda tmp: tmp / ("u" * 300 + ".toml"), "file name too long"),
+    "binary": (_write("b.toml", bytes(range(256))), "NUL"),
+    "cp1251": (_write("c.toml", SK8_TEXT.replace("SK8-3,5-4000", "СК8").encode("cp1251")), "not UTF-8"),
+    "utf16": (_write("w.toml", SK8_TEXT.encode("utf-16")), "UTF-16"),
+    "empty": (_write("e.toml", b""), "Field required"),
+    "top-level-list": (_write("l.json", b"[1, 2]"), "expected a table"),
+    "kind-list": (_write("k.json", b'{"kind": ["beam-pump"]}'), "kind: must be text"),
+    "kind-unknown": (_write("k.toml", b'kind = "mark-iv"\n'), "unknown machine kind"),
+    "json-duplicate": (_write("d.json", b'{"name": "a", "name": "b"}'), "key 'name' is given twice"),
+    "yaml-duplicate": (_write("d.yaml", b"name: a\nname: b\n"), "key 'name' is given twice"),
+    "yaml-alias": (_write("a.yaml", b"a: &x [1, 2]\nb: *x\n"), "aliases"),
+    "json-deep": (_write("deep.json", b"[" * 100000 + b"]" * 100000), "not valid JSON: nested too deep"),
+    "toml-deep": (_write("deep.toml", b"a = " + b"[" * 5000 + b"]" * 5000 + b"\n"), "not valid TOML"),
+    "yaml-deep": (_write("deep.yaml", b"[" * 5000 + b"]" * 5000), "not valid YAML"),
+    "json-nested-9": (_write("n.json", b'{"a": ' * 9 + b"1" + b"}" * 9), "nested 9 levels deep"),
+    "bad-toml": (_write("t.toml", b"name = \n"), "not valid TOML"),
+    "unknown-suffix": (_write("u.ini", SK8_TEXT.encode()), "unknown file type"),
+}
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+@pytest.mark.parametrize("case", FILES)
+def test_files_that_are_not_unit_files(run_cli, tmp_path, command, case):
+    make, fragment = FILES[case]
+    path = make(tmp_path)
+    code, out, err = run_cli(*COMMANDS[command](path), "-f", "csv")
+    one_line_error(code, out, err, fragment)
+
+
+# --- every numeric field at extreme values -----------------------------------------------
+
+def _numeric_fields(data, prefix=()):
+    for key, value in data.items():
+        if isinstance(value, dict):
+            yield from _numeric_fields(value, prefix + (key,))
+        elif isinstance(value, (int, float, str)) and not isinstance(value, bool) and key not in (
+                "name", "description", "model", "gearbox", "rotation", "kind", "phase"):
+            if isinstance(value, str) and not value[:1].isdigit():
+                continue
+            yield prefix + (key,), value
+
+
+def _replace(text: str, path: tuple[str, ...], new: str) -> str:
+    """The TOML text with the field at ``path`` set to ``new`` (the field's own line)."""
+    section = "[" + ".".join(path[:-1]) + "]" if len(path) > 1 else None
+    lines = text.splitlines()
+    start = lines.index(section) + 1 if section else 0
+    for i in range(start, len(lines)):
+        if lines[i].split("=")[0].strip() == path[-1]:
+            lines[i] = f"{path[-1]} = {new}"
+            return "\n".join(lines) + "\n"
+    raise KeyError(path)
+
+
+FIELDS = [path for path, _ in _numeric_fields(tomllib.loads(SK8_TEXT))]
+EXTREMES = {"tiny": "1e-320", "negative": "-1e-3", "huge": "1e300", "zero": "0"}
+
+
+def _commands_for(path: tuple[str, ...]) -> list[str]:
+    if path[0] == "geometry":
+        return ["kinematics", "reactions"]
+    if path[0] == "masses":
+        return ["reactions", "dynamics"]
+    if path[0] == "pitman_section":
+        return ["compare-redundancy"]
+    return ["dynamics"]
+
+
+#: Field names as the schema spells them (the SK8 file uses the GOST names).
+CANONICAL = {"k1": "front_arm", "k": "rear_arm", "r": "crank_radius", "l": "pitman", "l1": "horizontal_offset",
+             "l2": "vertical_offset"}
+#: Traces of a value that went on into the computation instead of being refused.
+NON_FINITE = ("not finite", "inf ", "nan", "e-3", "e+3")
+
+
+@pytest.mark.parametrize("value", EXTREMES)
+@pytest.mark.parametrize("path", FIELDS, ids=".".join)
+def test_extreme_field_values_are_refused_by_name(run_cli, tmp_path, path, value):
+    """Either a finite result, or one line that names the field, or (for a value that
+    is legal but physically impossible to run with, e.g. no counterweights at all) a
+    verdict about the machine that shows no non-finite or absurd number."""
+    unit = tmp_path / "unit.toml"
+    unit.write_text(_replace(SK8_TEXT, path, EXTREMES[value]), encoding="utf-8")
+    field = CANONICAL.get(path[-1], path[-1])
+    for command in _commands_for(path):
+        code, out, err = run_cli(*COMMANDS[command](unit), "-f", "json")
+        if code == 0:
+            assert err == "" or err.startswith("pumpjack: warning"), err
+            assert "NaN" not in out and "Infinity" not in out
+            continue
+        one_line_error(code, out, err)
+        if f"{'.'.join(path[:-1])}.{field}" not in err:
+            assert not any(trace in err.lower() for trace in NON_FINITE), err
+
+
+# --- quantities written wrongly ----------------------------------------------------------
+
+QUANTITIES = {
+    "space-inside-unit": ('k1 = "3500 mm"', 'k1 = "3.5 m m"', "unknown unit 'm m'"),
+    "decimal-comma": ('k1 = "3500 mm"', 'k1 = "3,5 m"', "decimal comma"),
+    "wrong-dimension": ('k1 = "3500 mm"', 'k1 = "3500 kg"', "is a mass, not a length"),
+    "overflow": ('k1 = "3500 mm"', 'k1 = "1e999 m"', "not a finite number"),
+    "infinite": ('k1 = "3500 mm"', "k1 = inf", "not a finite number"),
+    "not-a-number": ('k1 = "3500 mm"', "k1 = nan", "not a finite number"),
+    "boolean": ('k1 = "3500 mm"', "k1 = true", "boolean"),
+    "unknown-unit": ('k1 = "3500 mm"', 'k1 = "3500 furlongs"', "unknown unit"),
+    "count-as-text": ("count = 8", 'count = "8"', "count"),
+    "fraction-over-100": ('fraction = "51 %"', 'fraction = "151 %"', "fraction"),
+}
+
+
+@pytest.mark.parametrize("case", QUANTITIES)
+def test_quantities_written_wrongly(run_cli, tmp_path, case):
+    old, new, fragment = QUANTITIES[case]
+    assert old in SK8_TEXT
+    unit = tmp_path / "unit.toml"
+    unit.write_text(SK8_TEXT.replace(old, new, 1), encoding="utf-8")
+    code, out, err = run_cli("dynamics" if "fraction" in old else "reactions", unit, "--card", SK8_CARD,
+                             *(() if "fraction" in old else ("--steps", "8")), "-f", "csv") \
+        if "fraction" not in old else run_cli("dynamics", unit, "--steps", "8", "-f", "csv")
+    one_line_error(code, out, err, str(unit), fragment)
+
+
+# --- options ------------------------------------------------------------------------------
+
+OPTIONS = [
+    (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-phase", "0.1"], "--crank-phase: '0.1' has no unit"),
+    (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--pitman-length", "2"], "--pitman-length: '2' has no unit"),
+    (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-phase", "inf deg"], "--crank-phase"),
+    (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-phase", "15 deg"], "--crank-phase"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--counterweight-radius", "0.9"], "--counterweight-radius: '0.9' has no unit"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--counterweight-radius", "nan m"], "--counterweight-radius"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--counterweight-count", "17"], "--counterweight-count"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--spm", "6"], "disagrees with the time stamps"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--rotation", "dynamic", "--spm", "10.9"], "--spm"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--rotation", "sideways"], "--rotation"),
+    (["reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--card-columns", "position=Pos"], "--card-columns"),
+    (["reactions", "sk8-3.5-4000"], "--card"),
+    (["inertia-error", "unb-600a", "--mass", "3000"], "--mass: '3000' has no unit"),
+    (["inertia-error", "unb-600a", "--mass", "inf kg"], "--mass"),
+    (["inertia-error", "unb-600a", "--mass", "3000 m"], "--mass: '3000 m' is a length, not a mass"),
+    (["inertia-error", "unb-600a", "--rpm", "0"], "--rpm"),
+    (["kinematics", "sk8-3.5-4000", "--spm", "0"], "--spm"),
+    (["kinematics", "sk8-3.5-4000", "--spm", "nan"], "--spm"),
+    (["kinematics", "sk8-3.5-4000", "--steps", "2"], "--steps"),
+    (["kinematics", "sk8-3.5-4000", "--steps", "many"], "--steps"),
+    (["kinematics", "sk8-3.5-4000", "-f", "csv", "--format", "xml"], "--format"),
+    (["kinematics", "sk8-3.5-4000", "--units", "imperial"], "--units"),
+    (["kinematics", "no-such-unit"], "unknown unit 'no-such-unit'"),
+    (["kinematics", "unb-600a"], "not a beam pumping unit"),
+    (["dynamics", "sk8-3.5-4000", "--rtol", "1"], "--rtol"),
+    (["dynamics", "sk8-3.5-4000", "--card", "-"], "<stdin>"),
+    (["no-such-command"], "No such command"),
+    (["kinematics", "sk8-3.5-4000", "--no-such-option"], "--no-such-option"),
+]
+
+
+@pytest.mark.parametrize("argv,fragment", OPTIONS, ids=lambda x: " ".join(map(str, x[:3])) if isinstance(x, list) else x)
+def test_bad_options(run_cli, argv, fragment):
+    code, out, err = run_cli(*argv)
+    one_line_error(code, out, err, fragment)
+
+
+# --- output targets -----------------------------------------------------------------------
+
+TARGETS = {
+    "output-missing-dir": (["-o", "missing/out.csv"], "--output missing/out.csv: directory missing does not exist"),
+    "output-is-dir": (["-o", "."], "is a directory"),
+    "plot-missing-dir": (["-o", "pre.csv", "--plot", "missing/p.png"], "--plot missing/p.png"),
+    "plot-bad-suffix": (["-o", "pre.csv", "--plot", "p.gif"], "use a file ending in .png"),
+    "plot-is-output": (["-o", "same.png", "--plot", "same.png"], "name the same file"),
+    "plot-missing-dir-stdout": (["--plot", "missing/p.png"], "--plot missing/p.png"),
+}
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+@pytest.mark.parametrize("case", TARGETS)
+def test_output_targets_checked_before_anything_is_written(run_cli, tmp_path, monkeypatch, command, case):
+    monkeypatch.chdir(tmp_path)
+    pre = tmp_path / "pre.csv"
+    pre.write_text("precious\n")
+    argv, fragment = TARGETS[case]
+    unit = str(UNB) if command == "inertia-error" else str(SK8)
+    code, out, err = run_cli(*COMMANDS[command](unit), *argv)
+    one_line_error(code, out, err, fragment)
+    assert pre.read_text() == "precious\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["pre.csv"]
+
+
+def test_output_onto_a_device_is_written_in_place(run_cli):
+    code, out, err = run_cli("kinematics", "sk8-3.5-4000", "--steps", "8", "-o", "/dev/null")
+    assert (code, out, err) == (0, "", "")
+    assert Path("/dev/null").is_char_device()
+
+
+def test_output_through_a_symbolic_link_keeps_the_link(run_cli, tmp_path):
+    target = tmp_path / "real.csv"
+    target.write_text("old\n")
+    link = tmp_path / "link.csv"
+    link.symlink_to(target)
+    code, _, err = run_cli("kinematics", "sk8-3.5-4000", "--steps", "8", "-o", link)
+    assert (code, err) == (0, "")
+    assert link.is_symlink() and target.read_text().startswith("crank_angle_deg,")
+
+
+# --- standard output closed, full, or cut -------------------------------------------------
+
+def _script_path() -> str:
+    script = Path(sys.executable).parent / "pumpjack"
+    if not script.is_file():
+        pytest.skip("the pumpjack console script is not installed")
+    return str(script)
+
+
+def _script(argv, **kwargs):
+    return subprocess.run([_script_path(), *map(str, argv)], cwd=ROOT, timeout=120, **kwargs)
+
+
+@pytest.mark.parametrize("fmt", ["csv", "json", "table"])
+def test_full_stdout_is_one_line(fmt):
+    with open("/dev/full", "w") as full:
+        done = _script(["kinematics", "sk8-3.5-4000", "--steps", "2000", "-f", fmt], stdout=full, stderr=subprocess.PIPE)
+    err = done.stderr.decode()
+    assert done.returncode == 2 and err.count("\n") == 1 and "no space left on device" in err, err
+
+
+@pytest.mark.parametrize("fmt", ["csv", "json", "table"])
+def test_closed_stdout_is_one_line(fmt):
+    script = _script_path()
+    done = subprocess.run(f"{script} kinematics sk8-3.5-4000 --steps 20 -f {fmt} >&-", shell=True,
+                          capture_output=False, stderr=subprocess.PIPE, cwd=ROOT, timeout=120)
+    err = done.stderr.decode()
+    assert done.returncode == 2 and err == "pumpjack: error: standard output is closed: give --output FILE\n", err
+
+
+@pytest.mark.parametrize("fmt", ["csv", "json", "table"])
+def test_broken_pipe_is_quiet(fmt):
+    """The reader takes 10 bytes and closes the pipe: exit code 1, nothing on stderr."""
+    process = subprocess.Popen([_script_path(), "kinematics", "sk8-3.5-4000", "--steps", "200000", "-f", fmt],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+    process.stdout.read(10)
+    process.stdout.close()
+    err = process.stderr.read()
+    assert process.wait(timeout=120) == 1 and err == b""
+
+
+def test_no_floating_point_warning_reaches_stderr(run_cli, tmp_path):
+    unit = tmp_path / "unit.toml"
+    unit.write_text(SK8_TEXT.replace('r = "1010 mm"', 'r = "1 mm"'), encoding="utf-8")
+    code, out, err = run_cli("kinematics", unit, "--steps", "8", "-f", "csv")
+    assert "RuntimeWarning" not in err and (code == 0 or err.count("\n") == 1)
+    assert not any(math.isnan(float(v)) for v in out.splitlines()[1].split(",")) if code == 0 else True
