@@ -275,7 +275,8 @@ class PitmanSectionConfig(Section):
     shear_modulus: Pressure = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
     area: Area = Field(gt=0, le=0.1, description="cross-section area [m²]")
     inplane_inertia: AreaMoment = Field(
-        default=17.61e-6, gt=0, le=1e-2, description="J_z: second moment about the pin direction [m⁴] ([Spatial7SK12])"
+        default=17.61e-6, gt=0, le=1e-2,
+        description="J_z: second moment about the pin direction [m⁴] ([Spatial7SK12])",
     )
     outofplane_inertia: AreaMoment = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
     torsion_constant: AreaMoment = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")

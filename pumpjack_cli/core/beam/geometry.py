@@ -158,13 +158,13 @@ class Linkage:
         return self._dead.stroke
 
     def motion(self, crank_angle: Any):
-        """Link angles [rad] and their crank-angle derivatives for crank angles [rad], arrays (:func:`.linkage.motion`)."""
+        """Link angles [rad] and their crank-angle derivatives at crank angles [rad] (:func:`.linkage.motion`)."""
         from .linkage import motion
 
         return motion(self, crank_angle)
 
     def pin_rates(self, motion: Any):
-        """Crank-angle derivatives of the crank pin and the equalizer bearing [m/rad, m/rad²] (:func:`.linkage.pin_rates`)."""
+        """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.pin_rates`)."""
         from .linkage import pin_rates
 
         return pin_rates(self, motion)
@@ -199,10 +199,10 @@ def check_assembly(linkage: Linkage) -> None:
     --------
     A 2 m crank on SK8-3,5-4000: K + R = 3.717 + 2 = 5.717 m > P + C = 5.5 m.
 
-    >>> check_assembly(Linkage(3.5, 2.5, 2.0, 3.0, 2.195, 3.0))
+    >>> check_assembly(Linkage(3.5, 2.5, 2.0, 3.0, 2.195, 3.0))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    pumpjack_cli.errors.GeometryError: the unit cannot assemble: with the crank pin farthest from the centre bearing (K + R = 3.717 + 2 = 5.717 m) the pitman and rear arm (P + C = 3 + 2.5 = 5.5 m) cannot reach it; crank_radius or the offsets are too large, or pitman/rear_arm too short
+    pumpjack_cli.errors.GeometryError: the unit cannot assemble: ... (K + R = 3.717 + 2 = 5.717 m) ... (P + C = 3 + 2.5 = 5.5 m) ...
     """
     lengths = {
         "front_arm": linkage.front_arm,

@@ -72,9 +72,18 @@ class LinkLoads:
 class AppliedLoads:
     """Weights, inertia forces and moments and the rod load, per link.
 
-    Links numbered as in [Spatial7SK12]: crank 1, pitmans 2 and 3, equalizer 4, beam 5
-    (the beam's loads include the polished-rod load). Each is a :class:`LinkLoads`
-    [N, m, N·m].
+    Links numbered as in [Spatial7SK12].
+
+    Attributes
+    ----------
+    crank : LinkLoads
+        Link 1: both crank arms and the counterweights [N, m, N·m].
+    pitman2, pitman3 : LinkLoads
+        Links 2 and 3.
+    equalizer : LinkLoads
+        Link 4.
+    beam : LinkLoads
+        Link 5: beam body, horsehead and the polished-rod load at E.
     """
 
     crank: LinkLoads

@@ -146,7 +146,7 @@ class Machine:
 
     @property
     def crank_inertia(self) -> float:
-        """Both crank arms and all counterweights about the shaft, 2 (J_1 + m_1 r_1^2) + m_cw r_cw^2 [kg·m²] (parallel axes)."""
+        """Crank arms and counterweights about the shaft, 2 (J_1 + m_1 r_1^2) + m_cw r_cw^2 [kg·m²] (parallel axes)."""
         m = self.masses
         return 2.0 * (m.crank_arm_inertia + m.crank_arm_mass * m.crank_arm_cg**2) + \
             m.counterweight_mass * m.counterweight_radius**2

@@ -42,7 +42,7 @@ class SliderCrank:
     offset: float = 0.0
 
     def check(self) -> None:
-        """Raise :class:`GeometryError` unless the crank turns through a full revolution (:func:`check_slider_crank`)."""
+        """Raise :class:`GeometryError` unless the crank turns through a revolution (:func:`check_slider_crank`)."""
         check_slider_crank(self)
 
     def dead_positions(self) -> DeadCentres:
@@ -101,10 +101,10 @@ def check_slider_crank(mechanism: SliderCrank) -> None:
 
     Examples
     --------
-    >>> check_slider_crank(SliderCrank(0.2, 0.25, 0.1))
+    >>> check_slider_crank(SliderCrank(0.2, 0.25, 0.1))  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    pumpjack_cli.errors.GeometryError: the crank cannot turn: rod_length l = 0.25 m must exceed crank_radius + |offset| = 0.2 + 0.1 = 0.3 m
+    pumpjack_cli.errors.GeometryError: the crank cannot turn: ... = 0.2 + 0.1 = 0.3 m
     """
     r, l, e = mechanism.crank_radius, mechanism.rod_length, mechanism.offset
     if not r > 0:
