@@ -11,7 +11,7 @@ $(STAMP): pyproject.toml
 	$(VENV)/bin/python -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
-# The main job on a bundled unit: exact kinematics of SK8-3,5-4000 (seed 004).
+# The main job on a bundled unit: exact kinematics of SK8-3,5-4000 ([SK8Rotation2013]).
 demo: $(STAMP)
 	$(VENV)/bin/pumpjack kinematics sk8-3.5-4000 --format table
 

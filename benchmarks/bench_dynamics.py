@@ -3,7 +3,7 @@
 Run: .venv/bin/python benchmarks/bench_dynamics.py
 Prints the best time of `steady_state` on SK8-3,5-4000 (coefficient tables, splines,
 shooting with DOP853 over both strokes, output on 360 crank angles and the summary
-on 3600) with the seed 004 well model and with its sample dynamometer card, at the
+on 3600) with the [SK8Rotation2013] well model and with its sample dynamometer card, at the
 default and a loose tolerance.
 """
 

@@ -22,7 +22,7 @@ def repo_root() -> Path:
 
 @pytest.fixture(scope="session")
 def sk8_toml(repo_root) -> Path:
-    """The bundled SK8-3,5-4000 unit (GOST names, every datum of seed 004)."""
+    """The bundled SK8-3,5-4000 unit (GOST names, every datum of [SK8Rotation2013])."""
     return repo_root / "configs" / "sk8-3.5-4000.toml"
 
 

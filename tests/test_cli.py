@@ -1,6 +1,6 @@
 """The `pumpjack` command: output formats, units, files, errors, help, pipes.
 
-Independent reference numbers (seed 004, SK8-3,5-4000 with motor 4AR180M4U3 at its
+Independent reference numbers ([SK8Rotation2013], SK8-3,5-4000 with motor 4AR180M4U3 at its
 rated 1460 rpm, gearbox 37.18, sheaves 250/900 mm):
 omega1 = pi·1460/(30·37.18·900/250) = 1.1422 1/s and N = 60·omega1/(2 pi) ≈ 10.9 1/min.
 Library values (for "parses back exactly") come from pumpjack_cli.core directly, not
@@ -27,8 +27,8 @@ from pumpjack_cli.errors import PumpjackError
 
 ROOT = Path(__file__).resolve().parents[1]
 SK8 = "sk8-3.5-4000"
-SEED_OMEGA1 = 1.1422  # 1/s, seed 004 (printed to 4 decimals)
-SEED_SPM = 10.9  # 1/min, seed 004 (printed to 1 decimal)
+SEED_OMEGA1 = 1.1422  # 1/s, [SK8Rotation2013] (printed to 4 decimals)
+SEED_SPM = 10.9  # 1/min, [SK8Rotation2013] (printed to 1 decimal)
 INCH, FOOT = 0.0254, 0.3048  # m, exact definitions
 # Angles are printed in degrees rounded to 1e-9 degree (documented in units.py), so a
 # degree column can differ from value·180/pi by half a unit in the 9th decimal, plus
@@ -78,7 +78,7 @@ ANGLE_COLUMNS = {
 }
 
 
-# --- seed 004 speed ----------------------------------------------------------------
+# --- [SK8Rotation2013] speed ----------------------------------------------------------------
 
 
 def test_table_shows_seed_crank_speed(run_cli, monkeypatch):
@@ -86,19 +86,19 @@ def test_table_shows_seed_crank_speed(run_cli, monkeypatch):
     code, out, err = run_cli("kinematics", SK8, "-f", "table")
     assert (code, err) == (0, "")
     speed_line = next(line for line in out.splitlines() if re.search(r"\bcrank_speed\b", line))
-    # The table prints 6 significant digits: seed 004's pi·1460/(30·37.18·3.6) = 1.14227.
+    # The table prints 6 significant digits: [SK8Rotation2013]'s pi·1460/(30·37.18·3.6) = 1.14227.
     assert "1.14227" in speed_line
     spm_line = next(line for line in out.splitlines() if "strokes_per_minute" in line)
     spm = float(re.search(r"\d+\.\d+", spm_line).group())
-    assert abs(spm - SEED_SPM) < 0.05  # seed 004 prints 10.9 (one decimal: ±0.05)
+    assert abs(spm - SEED_SPM) < 0.05  # [SK8Rotation2013] prints 10.9 (one decimal: ±0.05)
 
 
 def test_json_summary_matches_seed(run_cli):
     code, out, err = run_cli("kinematics", SK8, "-f", "json")
     assert (code, err) == (0, "")
     summary = json.loads(out)["summary"]
-    assert abs(summary["crank_speed_rad_s"] - SEED_OMEGA1) < 1e-4  # seed prints 4 decimals
-    assert abs(summary["strokes_per_minute_spm"] - SEED_SPM) < 0.05  # seed prints 1 decimal
+    assert abs(summary["crank_speed_rad_s"] - SEED_OMEGA1) < 1e-4  # [SK8Rotation2013] prints 4 decimals
+    assert abs(summary["strokes_per_minute_spm"] - SEED_SPM) < 0.05  # [SK8Rotation2013] prints 1 decimal
     # period = 2 pi / omega1 (one rotation of the crank is one stroke cycle)
     assert summary["period_s"] == pytest.approx(2 * math.pi / summary["crank_speed_rad_s"], rel=1e-12)
 

@@ -1,6 +1,6 @@
-"""Unit files: every shipped file validates, seed 004 data, name spellings, rejections.
+"""Unit files: every shipped file validates, [SK8Rotation2013] data, name spellings, rejections.
 
-Reference data: seed 004 (Rozvidka ta rozrobka naftovykh i hazovykh rodovyshch 2013,
+Reference data: [SK8Rotation2013] (Rozvidka ta rozrobka naftovykh i hazovykh rodovyshch 2013,
 no. 4(49)), the passport data of SK8-3,5-4000 it prints: k1 = 3500 mm, k = 2500 mm,
 r = 1010 mm, l = 3000 mm, l1 = 2195 mm, l2 = 3000 mm; crank arm 1373 kg, pitman 130 kg,
 counterweight 650 kg (5200 kg in all at 0.83 m), beam 1220 kg, horsehead 490 kg,
@@ -109,7 +109,7 @@ def test_config_error_is_a_user_error():
     assert issubclass(ConfigError, PumpjackError)
 
 
-# --- SK8-3,5-4000 equals seed 004 --------------------------------------------------
+# --- SK8-3,5-4000 equals [SK8Rotation2013] --------------------------------------------------
 
 
 @pytest.fixture(scope="module")
@@ -139,7 +139,7 @@ def test_sk8_masses_seed_004(sk8):
         assert getattr(m, field).mass == pytest.approx(value, rel=REL_UNIT), field
     assert m.counterweights.radius == pytest.approx(0.83, rel=REL_UNIT)
     assert m.counterweights.count == 8
-    # Seed 004: counterweights of 5200 kg in all.
+    # [SK8Rotation2013]: counterweights of 5200 kg in all.
     assert m.counterweights.mass * m.counterweights.count == pytest.approx(5200.0, rel=REL_UNIT)
 
 
@@ -162,9 +162,9 @@ def test_sk8_drive_seed_004(sk8):
 
 def test_sk8_rated_crank_speed_seed_004(sk8):
     omega = sk8.drive.rated_crank_speed
-    # Seed 004's formula with its data; only rounding separates the two (rel 1e-12).
+    # [SK8Rotation2013]'s formula with its data; only rounding separates the two (rel 1e-12).
     assert omega == pytest.approx(math.pi * 1460 / (30 * 37.18 * 900 / 250), rel=1e-12)
-    # The number the seed prints, 1.1422 1/s: agreement to its last printed digit.
+    # The number [SK8Rotation2013] prints, 1.1422 1/s: agreement to its last printed digit.
     assert abs(omega - 1.1422) < 1e-4
 
 

@@ -1,7 +1,7 @@
-"""The equation of motion (pumpjack_cli.core.dynamics): invariants, hand values and seed 004.
+"""The equation of motion (pumpjack_cli.core.dynamics): invariants, hand values and [SK8Rotation2013].
 
 Independent references used here:
-* seed 004 eqs. 25-26 and its printed numbers (motor 4AR180M4U3: 30 kW, 1500/1460 rpm;
+* [SK8Rotation2013] eqs. 25-26 and its printed numbers (motor 4AR180M4U3: 30 kW, 1500/1460 rpm;
   u = 37.18 x 900/250; omega1 = pi 1460 / (30 u) = 1.1422 1/s), evaluated by hand;
 * the rational-mechanism kinetostatics of issue 3 (pumpjack_cli.core.kinetostatics),
   a separate spatial d'Alembert solution: by virtual work its balancing torque equals
@@ -55,7 +55,7 @@ def _stroke(linkage) -> float:
     return linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
 
 
-# --- seed 004 by hand ----------------------------------------------------------------
+# --- [SK8Rotation2013] by hand ----------------------------------------------------------------
 
 
 def test_motor_characteristic_is_seed_004_eqs_25_26():
@@ -75,7 +75,7 @@ def test_motor_characteristic_is_seed_004_eqs_25_26():
 
 def test_rated_crank_speed_is_seed_004s_1_1422(machine):
     omega1 = math.pi * 1460 / (30 * 37.18 * 900 / 250)
-    assert omega1 == pytest.approx(1.1422, abs=1e-4)  # 1.14227...; the seed prints 1.1422
+    assert omega1 == pytest.approx(1.1422, abs=1e-4)  # 1.14227...; [SK8Rotation2013] prints 1.1422
     assert machine.rated_crank_speed == pytest.approx(omega1, rel=1e-12)
     assert machine.drive_ratio == pytest.approx(37.18 * 3.6, rel=1e-14)
 
@@ -84,12 +84,12 @@ def test_drive_reduction_counts_each_inertia_by_its_speed_ratio_squared():
     assert drive_inertia(1.0, 0.0, 0.0, 3.6, 37.18) == pytest.approx((3.6 * 37.18) ** 2)
     assert drive_inertia(0.0, 1.0, 0.0, 3.6, 37.18) == pytest.approx(37.18**2)
     assert drive_inertia(0.0, 0.0, 5.0, 3.6, 37.18) == 5.0
-    # Seed 004's rotor alone: 0.232 kg m^2 x (37.18 x 3.6)^2 = 4156 kg m^2.
+    # [SK8Rotation2013]'s rotor alone: 0.232 kg m^2 x (37.18 x 3.6)^2 = 4156 kg m^2.
     assert drive_inertia(0.232, 0.0, 0.0, 3.6, 37.18) == pytest.approx(4156.35, abs=0.01)
 
 
 def test_constant_part_of_the_reduced_inertia_is_the_seeds(machine):
-    # Seed 004: "the constant part of the reduced inertia 66 798.5 kg m^2"; the bundled
+    # [SK8Rotation2013]: "the constant part of the reduced inertia 66 798.5 kg m^2"; the bundled
     # unit's ESTIMATED sheave and gearbox inertias are chosen to reproduce it
     # (docs/dynamics.md): drive + 2 (J_arm + m_arm r_arm^2) + m_cw r_cw^2.
     crank = 2 * (257 + 1373 * 0.45**2) + 5200 * 0.83**2

@@ -1,8 +1,8 @@
 """`pumpjack inertia-error` as a user runs it: formats, library equality, errors, help.
 
-Closed-form reference numbers for UNB-600A (seed 001: r = 0.2 m, l2 = 1.19 m) at the
+Closed-form reference numbers for UNB-600A ([InertiaUNB600A]: r = 0.2 m, l2 = 1.19 m) at the
 maximum (w t = 0): lambda = r/l2, delta_sin = 1 - 1/(1 + lambda) = 14.3885 %,
-delta_1 = 0; Phi_max = m w^2 (r + r^2/l2) (seed eq. 2). Library values for the
+delta_1 = 0; Phi_max = m w^2 (r + r^2/l2) ([InertiaUNB600A] eq. 2). Library values for the
 "JSON equals library" checks come from pumpjack_cli.core, called directly.
 """
 
@@ -27,7 +27,7 @@ from pumpjack_cli.quantities import parse_quantity
 
 ROOT = Path(__file__).resolve().parents[1]
 UNB = "unb-600a"
-R, L2 = 0.2, 1.19  # m, seed 001
+R, L2 = 0.2, 1.19  # m, [InertiaUNB600A]
 LAMBDA = R / L2
 MASS = 240.0  # kg, the bundled file's (estimated) value
 OMEGA = 65 * 2 * math.pi / 60  # 1/s, the bundled file's 65 rpm
@@ -93,7 +93,7 @@ def test_csv_parses_back_and_table_renders(run_cli):
 def test_field_units(run_cli):
     si = _json(run_cli, UNB, "--steps", "4")["summary"]
     field = _json(run_cli, UNB, "--steps", "4", "--units", "field")["summary"]
-    lbf = 4.4482216152605  # N, NIST SP 811
+    lbf = 4.4482216152605  # N, NIST SP 811 [NIST811]
     assert field["peak_inertia_force_lbf"] == pytest.approx(si["peak_inertia_force_n"] / lbf, rel=1e-14)
     assert field["harmonic_peak_error_percent"] == si["harmonic_peak_error_percent"]
 

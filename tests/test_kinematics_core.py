@@ -21,13 +21,13 @@ from pumpjack_cli.core.beam.linkage import motion
 
 INCH = 0.0254  # m, exact (1959 international yard and pound agreement)
 
-# SK8-3,5-4000 (seed 004 / configs/sk8-3.5-4000.toml), m
+# SK8-3,5-4000 ([SK8Rotation2013] / configs/sk8-3.5-4000.toml), m
 SK8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-# C-114D-133-54, Guo, Lyons & Ghalambor 2007, Table 12.1: A, C, R, P, I, H - G in inches
+# C-114D-133-54, Guo, Lyons & Ghalambor 2007 [Guo2007], Table 12.1: A, C, R, P, I, H - G in inches
 C114_CCW = Linkage(72 * INCH, 64 * INCH, 24 * INCH, 74.5 * INCH, 64 * INCH, 75 * INCH, COUNTERCLOCKWISE)
 
 UNITS = {"SK8": SK8, "C114-ccw": C114_CCW}
-# 1.1422 1/s: crank speed of the SK8 seed-004 example (about 10.9 strokes/min); any
+# 1.1422 1/s: crank speed of the SK8 example of [SK8Rotation2013] (about 10.9 strokes/min); any
 # positive value would do, the identities tested hold for every omega.
 OMEGA = 1.1422
 
@@ -44,7 +44,7 @@ def _exact(lk: Linkage, theta, omega, epsilon=0.0):
 
 @pytest.mark.parametrize("name", UNITS)
 def test_torque_factor_is_derivative_of_position(name):
-    """TF = ds/dtheta (API Spec 11E torque factor). Central difference with h = 1e-5 rad
+    """TF = ds/dtheta (torque factor of [API11E]). Central difference with h = 1e-5 rad
     on separately computed crank angles: truncation h^2/6 |s'''| ~ 2e-11 m, rounding
     ~ 1e-16 * 3 m / 1e-5 = 3e-11 m, so the bound 1e-6 relative (to max |TF|, because TF
     crosses zero at the dead positions) is three orders above both."""
@@ -85,7 +85,7 @@ def test_velocity_and_acceleration_are_time_derivatives(name):
 @pytest.mark.parametrize("name", UNITS)
 def test_rod_motion_chain_rule_nonuniform_rotation(name):
     """Non-uniform crank rotation theta(t) = w0 t + 0.1 sin t (a prescribed law, as in
-    seed 004's non-uniform rotation study): omega = w0 + 0.1 cos t, epsilon = -0.1 sin t.
+    [SK8Rotation2013]'s non-uniform rotation study): omega = w0 + 0.1 cos t, epsilon = -0.1 sin t.
     Then v(t) = ds/dt and a(t) = dv/dt must hold with the package's chain rule
     a = A (psi'' omega^2 + psi' epsilon). Finite differences in t, dt = 1e-5 s,
     tolerance 1e-6 of the peak (truncation ~1e-10, rounding ~1e-11 relative)."""
@@ -167,7 +167,7 @@ def test_two_term_is_series_of_exact_slider_crank(lam):
     crank-rod triangle: the rod's projection on the line of stroke is
     L sqrt(1 - lam^2 sin^2 phi)): x = R(1 - cos phi) + L(1 - sqrt(1 - lam^2 sin^2 phi)).
     Expanding the square root, x = R[(1 - cos phi) + (lam/2) sin^2 phi] + R lam^3 sin^4(phi)/8
-    + O(lam^5): the two-term law is the first-order series (NUNG eqs. 5.12-5.13 per the
+    + O(lam^5): the two-term law is the first-order series ([NUNG] eqs. 5.12-5.13 per the
     module docstring). Tolerance: the first neglected term R lam^3/8, times 1.1 for the
     O(lam^5) rest."""
     r_crank = 1.0
@@ -193,7 +193,7 @@ def test_two_term_with_zero_ratio_is_harmonic():
 def _small_crank_unit(ratio: float) -> Linkage:
     """Crank much shorter than pitman and frame, I = C and H - G = P so that the pitman
     is vertical and the beam horizontal at mid-stroke: the exact motion then tends to
-    simple harmonic motion of amplitude R A / C (NUNG textbook, elementary theory)."""
+    simple harmonic motion of amplitude R A / C ([NUNG] textbook, elementary theory)."""
     c, p = 2.5, 3.0
     return Linkage(front_arm=3.5, rear_arm=c, crank_radius=ratio * p, pitman=p, horizontal_offset=c, vertical_offset=p)
 

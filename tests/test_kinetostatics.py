@@ -1,8 +1,8 @@
 """Spatial kinematics and kinetostatics of the rational mechanism (issue 3).
 
 The checks are independent of the solver: an energy balance built from positions by
-finite differences (virtual work), the API 11E torque-factor method for massless
-links, the mirror symmetry of identical sides (seed 000, fig. 10), the planar closed
+finite differences (virtual work), the [API11E] torque-factor method for massless
+links, the mirror symmetry of identical sides ([Spatial7SK12], fig. 10), the planar closed
 form for the spatial kinematics, and the gravity torque of counterweights.
 """
 
@@ -115,7 +115,7 @@ def test_virtual_work(name, epsilon):
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
 def test_massless_links_give_the_api_torque_factor_method(name):
-    """With massless links M_z = TF x load (API Spec 11E), to 1e-9 relative."""
+    """With massless links M_z = TF x load ([API11E]), to 1e-9 relative."""
     spatial, m = unit(name)
     massless = MassModel(**{f.name: 0.0 for f in dataclasses.fields(MassModel)})
     theta = np.linspace(0, 2 * np.pi, 360, endpoint=False)
@@ -128,7 +128,7 @@ def test_massless_links_give_the_api_torque_factor_method(name):
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
 def test_identical_sides_share_the_load(name):
-    """Seed 000, fig. 10: without redundant constraints R12 = R13 and z-components vanish."""
+    """[Spatial7SK12], fig. 10: without redundant constraints R12 = R13 and z-components vanish."""
     spatial, m = unit(name)
     theta = np.linspace(0, 2 * np.pi, 360, endpoint=False)
     load = rod_load(theta)

@@ -32,10 +32,10 @@ from pumpjack_cli.errors import GeometryError
 INCH = 0.0254  # m, exact by definition (international yard and pound agreement, 1959)
 
 # SK8-3,5-4000 geometry as given in the brief and in configs/sk8-3.5-4000.toml
-# (seed 004 data): A = 3.5, C = 2.5, R = 1.01, P = 3.0, I = 2.195, H - G = 3.0 m.
+# ([SK8Rotation2013] data): A = 3.5, C = 2.5, R = 1.01, P = 3.0, I = 2.195, H - G = 3.0 m.
 SK8 = dict(front_arm=3.5, rear_arm=2.5, crank_radius=1.01, pitman=3.0, horizontal_offset=2.195, vertical_offset=3.0)
 
-# API unit C-114D-133-54, Guo, Lyons & Ghalambor, "Petroleum Production Engineering",
+# API unit C-114D-133-54, Guo, Lyons & Ghalambor [Guo2007], "Petroleum Production Engineering",
 # Elsevier 2007, Table 12.1 (p. 12/167): A=72, C=64, I=64, P=74.5, H=116, G=41, R1=24 in.
 C114 = dict(
     front_arm=72 * INCH,
@@ -122,7 +122,7 @@ def case(request):
 def test_reference_is_on_the_conventional_branch(case):
     """Sanity of the reference itself: the pitman points up from the crank pin to the
     equalizer bearing, and the equalizer bearing is behind the centre bearing (x < 0),
-    as in every conventional (class I) unit (API Spec 11E fig. 1)."""
+    as in every conventional (class I) unit ([API11E] fig. 1)."""
     lk, ref, _ = case
     assert np.all(np.sin(ref["chi"]) > 0.5)
     assert np.all(ref["B"][:, 0] < 0.0)
@@ -183,7 +183,7 @@ def test_loop_closure(name, rot):
 
 
 def test_crank_pin_convention_clockwise_points_to_well():
-    """API Spec 11E: theta from 12 o'clock in the direction of rotation. Clockwise seen
+    """[API11E]: theta from 12 o'clock in the direction of rotation. Clockwise seen
     with the well to the right means the pin is at 3 o'clock (towards the well, +x) at
     theta = 90 deg; counterclockwise puts it at 9 o'clock (-x)."""
     cw = Linkage(**SK8, rotation=CLOCKWISE)
@@ -227,7 +227,7 @@ def test_dead_positions(name, rot):
     assert dead.beam_angle_top > dead.beam_angle_bottom
 
     # stretched position (|OB| = P + R, crank and pitman in line) is the bottom for a
-    # conventional unit (seed 004); folded (|OB| = P - R) is the top.
+    # conventional unit ([SK8Rotation2013]); folded (|OB| = P - R) is the top.
     o = lk.crank_shaft
     for theta_dead, reach in ((dead.crank_angle_bottom, lk.pitman + lk.crank_radius),
                               (dead.crank_angle_top, lk.pitman - lk.crank_radius)):

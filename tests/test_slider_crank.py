@@ -1,14 +1,14 @@
-"""Slider-crank core: exact motion, series laws, limits, offset mechanism, seed 001 eqs. 2-4.
+"""Slider-crank core: exact motion, series laws, limits, offset mechanism, [InertiaUNB600A] eqs. 2-4.
 
 Expected values come from closed forms written out here, independently of the code:
 
 * exact centric acceleration a = -r w^2 [cos p + L cos 2p / s + L^3 sin^2 2p / (4 s^3)],
-  s = sqrt(1 - L^2 sin^2 p), L = r/l (seed 001 eq. 1; any theory-of-machines text);
+  s = sqrt(1 - L^2 sin^2 p), L = r/l ([InertiaUNB600A] eq. 1; any theory-of-machines text);
 * maxima Phi_max = m w^2 (r + r^2/l2) (eq. 2), Phi_c = m r w^2 (eq. 3),
   Phi_1 = m r w^2 (1 + L) (eq. 4) at w t = 0;
 * the textbook harmonic coefficients A2 = L + L^3/4 + 15 L^5/128,
   A4 = L^3/4 + 3 L^5/16, A6 = 9 L^5/128 of a = -r w^2 (cos p + A2 cos 2p - A4 cos 4p
-  + A6 cos 6p) (binomial expansion of the radical, e.g. NPTEL 112101096 module 4);
+  + A6 cos 6p) (binomial expansion of the radical, e.g. [NPTEL112101096] module 4);
 * the offset stroke sqrt((l + r)^2 - e^2) - sqrt((l - r)^2 - e^2).
 """
 
@@ -26,14 +26,14 @@ from pumpjack_cli.core.slider_crank.geometry import SliderCrank, check_slider_cr
 from pumpjack_cli.core.slider_crank.mechanism import approximate_acceleration, exact_motion, law_errors, law_methods, series_coefficients, slider_inertia_laws
 from pumpjack_cli.errors import GeometryError
 
-# Seed 001's UNB-600A drill pump.
+# The UNB-600A drill pump of [InertiaUNB600A].
 R_SEED, L2_SEED = 0.2, 1.19
 LAMBDA_SEED = R_SEED / L2_SEED
 OMEGA = 65 * 2 * math.pi / 60  # 1/s, 65 rpm (the speed cancels in every ratio below)
 
 
 def centric_acceleration(r: float, l: float, phi: np.ndarray, omega: float) -> np.ndarray:
-    """The classical exact piston acceleration of a centric slider-crank (seed 001 eq. 1)."""
+    """The classical exact piston acceleration of a centric slider-crank ([InertiaUNB600A] eq. 1)."""
     lam = r / l
     s = np.sqrt(1.0 - lam**2 * np.sin(phi) ** 2)
     return -r * omega**2 * (np.cos(phi) + lam * np.cos(2 * phi) / s + lam**3 * np.sin(2 * phi) ** 2 / (4 * s**3))
@@ -165,7 +165,7 @@ def test_all_laws_agree_with_the_exact_one_as_lambda_goes_to_zero(name):
 
 
 def test_seed_equations_2_to_4_at_the_maximum():
-    # Seed 001: for lambda < 1/4 the largest force is at w t = 0 for every law, and
+    # [InertiaUNB600A]: for lambda < 1/4 the largest force is at w t = 0 for every law, and
     # Phi_max / (m r w^2) = 1 + lambda (eq. 2), 1 (eq. 3), 1 + lambda (eq. 4), so
     # delta_sin = 1 - 1/(1 + lambda) = 14.39 % and delta_1 = 0 for UNB-600A.
     c = slider_inertia_laws(SliderCrank(R_SEED, L2_SEED), OMEGA, crank_grid(36))

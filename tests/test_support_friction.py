@@ -3,14 +3,14 @@
 Sources of the expected values (all derived by hand here, not from the code):
 
 1. Fixed-ended beam whose end B settles by Delta: end reactions 12 EI Delta / L^3 and
-   end moments 6 EI Delta / L^2 (NPTEL course 105101085, Structural Analysis II, module 5
+   end moments 6 EI Delta / L^2 ([NPTEL105101085], Structural Analysis II, module 5
    lecture 1, example 5.5; the slope-deflection fixed-end moment 6 EI Delta / L^2).
    End B turned by theta instead: force 6 EI theta / L^2, moment 4 EI theta / L at B
-   (slope-deflection equation M_N = 2EI/L (2 theta_N + theta_F - 3 psi), e.g. Hibbeler,
+   (slope-deflection equation M_N = 2EI/L (2 theta_N + theta_F - 3 psi), e.g. [Hibbeler2012],
    Structural Analysis, ch. 11).
 2. Fixed-ended beam pushed up at mid-span by a support raised delta_C: the central
    point load P = 192 EI delta_C / L^3 (mid-span deflection P L^3 / (192 EI) of a
-   fixed-fixed beam, Timoshenko & Gere, Mechanics of Materials, table of beam
+   fixed-fixed beam, [TimoshenkoGere1972], Mechanics of Materials, table of beam
    deflections), end reactions -P/2 and end moments P L / 8.
 3. Two equal spans a (clamp A, support C, clamp B), B settled Delta, slope-deflection
    by hand: moment equilibrium at C, 4EI theta_C/a + 2EI/a (2 theta_C - 3 Delta/a) = 0,
@@ -121,12 +121,12 @@ def test_equal_sections_equal_one_section():
 
 
 def test_reduction_coefficients_are_relative_to_the_smallest_section():
-    # Seed 001 reduces to J_0 = J_2 (the rod); alpha_i = J_i / J_0.
+    # [InertiaUNB600A] reduces to J_0 = J_2 (the rod); alpha_i = J_i / J_0.
     np.testing.assert_allclose(reduction_coefficients([8.0, 2.0, 4.0]), [4.0, 1.0, 2.0], rtol=0)
 
 
 def test_edge_reactions_and_friction_seed_cases():
-    # Seed 001: with M_B <= 0.5 R_B l_n both edge forces point the same way and
+    # [InertiaUNB600A]: with M_B <= 0.5 R_B l_n both edge forces point the same way and
     # F = f R_B; otherwise they oppose and F = f 2 M_B / l_n, larger by 2 M_B / (l_n R_B).
     l_n, f = 0.4, 0.1
     outer, inner = guide_edge_reactions(np.array([100.0, 100.0]), np.array([10.0, 50.0]), l_n)

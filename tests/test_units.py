@@ -1,6 +1,6 @@
 """Input units: parse_quantity against the exact definitions of the units.
 
-Expected values are built here from the definitions (NIST SP 811 (2008), Appendix B;
+Expected values are built here from the definitions (NIST SP 811 (2008), Appendix B [NIST811];
 the SI prefixes; rpm = 2 pi / 60 rad/s), never from the package's own constants.
 Tolerance: each expected value is a product of a few decimal definitions, computed
 in a possibly different order than the package does, so the two may differ by a few

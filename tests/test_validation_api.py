@@ -1,9 +1,9 @@
 """Validation of the exact kinematics against a published table of API units.
 
-Source: Guo B., Lyons W.C., Ghalambor A., "Petroleum Production Engineering: A
+Source [Guo2007]: Guo B., Lyons W.C., Ghalambor A., "Petroleum Production Engineering: A
 Computer-Assisted Approach", Elsevier 2007, Table 12.1 (p. 12/167), "Conventional
 pumping units API geometry dimensions". It lists A, C, I, P, H, G and the crank holes
-R1 > R2 > R3 in inches, and a "Torque factor" column: the API Spec 11E torque factor
+R1 > R2 > R3 in inches, and a "Torque factor" column: the [API11E] torque factor
 TF = ds/dtheta at crank angle 90 deg for the longest hole R1, rotation clockwise with
 the well to the right (the API convention), in inches.
 

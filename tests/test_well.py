@@ -1,6 +1,6 @@
-"""The well model of seed 004 (pumpjack_cli.core.well): every force against a hand calculation.
+"""The well model of [SK8Rotation2013] (pumpjack_cli.core.well): every force against a hand calculation.
 
-Reference data: seed 004's well (pump at 1530 m, plunger 38 mm, rods 19/22/25 mm for
+Reference data: [SK8Rotation2013]'s well (pump at 1530 m, plunger 38 mm, rods 19/22/25 mm for
 51/26/23 % of the length, fluid 820 kg/m^3 and 3e-6 m^2/s, tubing 62 mm), with the
 ESTIMATED plunger clearance 0.1 mm and submergence 100 m of configs/sk8-3.5-4000.toml.
 Each expected value is written out from its textbook formula here, not taken from the code.

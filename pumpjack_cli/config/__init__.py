@@ -1,7 +1,7 @@
 """Validated unit configs: the field types, one schema per machine kind, and the files.
 
 * :mod:`.quantities`: field types (SI floats parsed from values with units);
-* :mod:`.geometry_names`: GOST names and API 11E letters of the geometry (pure Python);
+* :mod:`.geometry_names`: GOST names and API 11E letters ([API11E]) of the geometry (pure Python);
 * :mod:`.beam_unit`: the beam pumping unit (geometry, masses, drive, well, ...);
 * :mod:`.slider_crank`: slider-crank machines (drill pumps; [InertiaUNB600A]);
 * :mod:`.files`: reading files, bundled units, the registry of kinds.

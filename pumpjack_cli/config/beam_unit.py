@@ -2,9 +2,9 @@
 
 Values are SI numbers or strings with a unit, converted once by the field types of
 :mod:`.quantities`; unknown keys are rejected. Geometry may be written with the GOST
-names or the API Spec 11E letters (:mod:`.geometry_names`). Bracketed symbols in the
-descriptions are those of the seed papers ([Spatial7SK12], [PopovychSenchishak],
-[SK8Rotation2013]).
+names or the API Spec 11E letters ([API11E]; :mod:`.geometry_names`). Symbols in
+parentheses in the descriptions are those of the source papers ([Spatial7SK12],
+[PopovychSenchishak], [SK8Rotation2013]).
 """
 
 from __future__ import annotations
@@ -141,7 +141,11 @@ class BeamPart(Section):
 
 
 class Masses(Section):
-    """Masses, centres of mass and inertias of the moving links (seed 000/003/004 names in brackets)."""
+    """Masses, centres of mass and inertias of the moving links.
+
+    The names in parentheses in the descriptions are those of [Spatial7SK12],
+    [PopovychSenchishak] and [SK8Rotation2013].
+    """
 
     crank_arm: CrankArm
     counterweights: Counterweights
@@ -175,7 +179,7 @@ class Masses(Section):
 
 
 class Motor(Section):
-    """Induction motor nameplate data (seed 004, eqs. 25-26)."""
+    """Induction motor nameplate data ([SK8Rotation2013] eqs. 25-26)."""
 
     model: str = Field(description="motor type designation")
     rated_power: Annotated[Power, at_least(10.0, "10 W")] = Field(gt=0, le=1e6, description="rated shaft power [W]")
@@ -235,7 +239,7 @@ class RodSection(Section):
 
 
 class Well(Section):
-    """Downhole data of the well the unit pumps (seed 004)."""
+    """Downhole data of the well the unit pumps (the well model of [SK8Rotation2013])."""
 
     pump_depth: Annotated[Length, at_least(1.0, "1 m")] = Field(gt=0, le=5000, description="pump setting depth [m]")
     plunger_diameter: Annotated[Length, at_least(0.005, "5 mm")] = Field(gt=0, le=0.15, description="pump plunger diameter [m]")
@@ -264,14 +268,17 @@ class Well(Section):
 
 
 class PitmanSectionConfig(Section):
-    """Elastic pitman for the real mechanism (seed 000 eqs. 18-21; defaults from the seed
-    where it gives them: E = 2.1e11 Pa, J_z = 17.61e-6 m^4)."""
+    """Elastic pitman for the real mechanism ([Spatial7SK12] eqs. 18-21; defaults from that
+    paper where it gives them: E = 2.1e11 Pa, J_z = 17.61e-6 m^4)."""
 
-    youngs_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(default=2.1e11, gt=0, le=1e12, description="E [Pa] (seed 000)")
-    shear_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
+    youngs_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(
+        default=2.1e11, gt=0, le=1e12, description="E [Pa] ([Spatial7SK12])")
+    shear_modulus: Annotated[Pressure, at_least(1e9, "1 GPa")] = Field(
+        default=8.08e10, gt=0, le=1e12, description="G [Pa]: E / (2 (1 + 0.3)) for steel")
     area: Annotated[Area, at_least(1e-4, "1 cm2")] = Field(gt=0, le=0.1, description="cross-section area [m²]")
     inplane_inertia: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(
-        default=17.61e-6, gt=0, le=1e-2, description="J_z: second moment about the pin direction [m⁴] (seed 000)"
+        default=17.61e-6, gt=0, le=1e-2,
+        description="J_z: second moment about the pin direction [m⁴] ([Spatial7SK12])",
     )
     outofplane_inertia: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(gt=0, le=1e-2, description="second moment across the pin direction [m⁴]")
     torsion_constant: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")

@@ -12,6 +12,9 @@ vertical_offset    l2      H - G or     centre bearing above crank shaft;
                            sqrt(K²-I²)  K is the straight distance
 =================  ======  ===========  ============================================
 
+The GOST names are those of the Soviet textbooks and of [SK8Rotation2013] (GOST 5866-76
+units, [GOST5866]); the letters are those of [API11E].
+
 Pure Python, no pydantic and no numpy: the schema (:mod:`.beam_unit`) validates through
 :func:`canonical_geometry`, and ``pumpjack units`` uses :func:`linkage_of` to list the
 bundled units' strokes without building a single model.

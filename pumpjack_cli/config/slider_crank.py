@@ -17,7 +17,7 @@ from .quantities import Angle, Length, Mass, Number, Pressure, RotationalSpeed, 
 
 
 class SliderCrankGeometry(Section):
-    """Crank, connecting rod and line of stroke of a slider-crank (seed 001 symbols)."""
+    """Crank, connecting rod and line of stroke of a slider-crank (symbols of [InertiaUNB600A])."""
 
     crank_radius: Length = Field(gt=0, le=5, description="r: crank shaft to crank pin [m]")
     rod_length: Length = Field(gt=0, le=20, description="l2: connecting rod, crank pin to crosshead (slider) pin [m]")
@@ -60,7 +60,7 @@ class SliderSection(Section):
 
 
 class IntermediateSupport(Section):
-    """A redundant support fixed to the frame between the ends of the slider (seed 001 fig. 4)."""
+    """A redundant support fixed to the frame between the ends of the slider ([InertiaUNB600A] fig. 4)."""
 
     position: Length = Field(
         gt=0, le=20, description="z_C0: distance from the clamped end A along the slider at the outer dead centre [m]"
@@ -69,7 +69,7 @@ class IntermediateSupport(Section):
 
 
 class SteppedSlider(Section):
-    """Stepped slider on redundant supports (seed 001, second part): clamped at A (the
+    """Stepped slider on redundant supports ([InertiaUNB600A], second part): clamped at A (the
     piston end), held by guide B (the crosshead guide) that has settled and turned."""
 
     sections: tuple[SliderSection, ...] = Field(
@@ -91,7 +91,7 @@ class SteppedSlider(Section):
 
 
 class SliderCrankConfig(Section):
-    """A reciprocating machine with a slider-crank drive (drill pump, compressor; seed 001)."""
+    """A reciprocating machine with a slider-crank drive (drill pump, compressor; [InertiaUNB600A])."""
 
     kind: Literal["slider-crank"] = Field(default="slider-crank", description="machine kind (see UNIT_KINDS)")
     name: str = Field(min_length=1, description="designation, e.g. UNB-600A")

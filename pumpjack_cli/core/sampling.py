@@ -13,15 +13,37 @@ import numpy as np
 
 @dataclass(frozen=True)
 class Extreme:
-    """An extreme value and the crank angle [rad] where it occurs."""
+    """An extreme value and the crank angle where it occurs.
+
+    Attributes
+    ----------
+    value : float
+        The extreme, in the unit of the sampled curve.
+    crank_angle : float
+        Crank angle of the extreme [rad].
+    """
 
     value: float
     crank_angle: float
 
 
 def crank_grid(steps: int) -> np.ndarray:
-    """``steps`` equally spaced crank angles over one revolution, from 0, endpoint excluded [rad].
+    """Equally spaced crank angles over one revolution, from 0, endpoint excluded.
 
+    theta_k = 2 pi k / steps, k = 0 .. steps - 1.
+
+    Parameters
+    ----------
+    steps : int
+        Number of crank positions per revolution (dimensionless).
+
+    Returns
+    -------
+    numpy.ndarray
+        Crank angles, shape (steps,) [rad].
+
+    Examples
+    --------
     >>> crank_grid(4).tolist() == [0.0, np.pi / 2, np.pi, 3 * np.pi / 2]
     True
     """
@@ -29,11 +51,30 @@ def crank_grid(steps: int) -> np.ndarray:
 
 
 def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
-    """Maximum and minimum of a periodic curve sampled on the uniform grid ``theta`` [rad].
+    """Maximum and minimum of a periodic curve sampled on a uniform crank-angle grid.
 
-    Each is refined by the parabola through the extreme sample and its two neighbours
-    (the grid is periodic, so the last sample neighbours the first); for a smooth curve
-    the error of the located angle is O(h^3) and of the value O(h^4), h the step.
+    Each is refined by the parabola through the extreme sample y1 and its two
+    neighbours y0, y2 (the grid is periodic, so the last sample neighbours the first):
+    shift s = (y0 - y2) / (2 (y0 - 2 y1 + y2)) steps, value y1 - (y0 - y2) s / 4. For a
+    smooth curve the error of the located angle is O(h^3) and of the value O(h^4), h
+    the step.
+
+    Parameters
+    ----------
+    theta : numpy.ndarray
+        Uniform grid over one revolution, as :func:`crank_grid` makes it [rad].
+    values : numpy.ndarray
+        The curve on that grid, shape like ``theta`` (any unit).
+
+    Returns
+    -------
+    tuple of Extreme
+        (maximum, minimum), values in the unit of ``values``, crank angles in
+        [0, 2 pi) [rad].
+
+    Examples
+    --------
+    The extremes of cos(theta - 0.1), sampled every 10 degrees, are +-1 at 0.1 rad:
 
     >>> theta = crank_grid(36)
     >>> top, bottom = extremes(theta, np.cos(theta - 0.1))
@@ -52,10 +93,23 @@ def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
 
 
 def largest_magnitude(theta: np.ndarray, values: np.ndarray) -> Extreme:
-    """The sample of largest magnitude and its crank angle [rad], on the given grid (no refinement).
+    """The sample of largest magnitude and its crank angle, on the given grid (no refinement).
 
-    ``values`` is a series (N,) (magnitude |v|) or a series of vectors (N, k) (Euclidean norm).
+    Parameters
+    ----------
+    theta : numpy.ndarray
+        Crank angles, shape (N,) [rad].
+    values : numpy.ndarray
+        A series (N,), whose magnitude is |v|, or a series of vectors (N, k), whose
+        magnitude is the Euclidean norm (any unit).
 
+    Returns
+    -------
+    Extreme
+        The largest magnitude (unit of ``values``) and its crank angle [rad].
+
+    Examples
+    --------
     >>> largest_magnitude(np.array([0.0, 1.0, 2.0]), np.array([1.0, -3.0, 2.0]))
     Extreme(value=3.0, crank_angle=1.0)
     >>> largest_magnitude(np.array([0.0, 1.0]), np.array([[3.0, 4.0], [1.0, 1.0]])).value
@@ -67,8 +121,22 @@ def largest_magnitude(theta: np.ndarray, values: np.ndarray) -> Extreme:
 
 
 def signed_extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
-    """The largest and the smallest sample and their crank angles [rad], on the given grid (no refinement).
+    """The largest and the smallest sample and their crank angles, on the given grid (no refinement).
 
+    Parameters
+    ----------
+    theta : numpy.ndarray
+        Crank angles, shape (N,) [rad].
+    values : numpy.ndarray
+        The series, shape (N,) (any unit).
+
+    Returns
+    -------
+    tuple of Extreme
+        (largest, smallest) sample with its crank angle [rad].
+
+    Examples
+    --------
     >>> signed_extremes(np.array([0.0, 1.0, 2.0]), np.array([1.0, -3.0, 2.0]))
     (Extreme(value=2.0, crank_angle=2.0), Extreme(value=-3.0, crank_angle=1.0))
     """
@@ -77,13 +145,43 @@ def signed_extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Ext
 
 
 def uniform_time(crank_angle: np.ndarray, omega: float) -> np.ndarray:
-    """Time [s] from crank angle 0 at uniform rotation: t = theta / omega (theta [rad], omega [1/s])."""
+    """Time from crank angle 0 at uniform rotation, t = theta / omega.
+
+    Parameters
+    ----------
+    crank_angle : numpy.ndarray
+        theta [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        t [s].
+
+    Examples
+    --------
+    >>> uniform_time(np.array([0.0, np.pi]), np.pi / 3).tolist()   # half a 6 s cycle
+    [0.0, 3.0]
+    """
     return crank_angle / omega
 
 
 def cycle_period(omega: float) -> float:
-    """Time of one crank revolution, 2 pi / omega [s], for a mean crank speed omega [1/s].
+    """Time of one crank revolution, T = 2 pi / omega.
 
+    Parameters
+    ----------
+    omega : float
+        Mean crank speed [1/s].
+
+    Returns
+    -------
+    float
+        T [s].
+
+    Examples
+    --------
     >>> round(cycle_period(2 * np.pi / 6), 12)   # 10 strokes per minute
     6.0
     """

@@ -39,12 +39,25 @@ COUNTERCLOCKWISE = -1
 
 @dataclass(frozen=True)
 class DeadPositions:
-    """Crank and beam angles at the bottom and top of the stroke [rad], and the stroke.
+    """Crank and beam angles at the bottom and top of the stroke, and the stroke.
 
     The beam stops when crank and pitman are in one line: stretched out (|OB| = P + R)
     or folded (|OB| = P - R). For a conventional unit the stretched position is the
     bottom of the stroke ([SK8Rotation2013]: "crank and pitman stretched in one line").
-    ``front_arm`` [m] turns beam rotation into polished-rod travel.
+
+    Attributes
+    ----------
+    crank_angle_bottom, crank_angle_top : float
+        Crank angles theta of the bottom and top of the stroke, from 12 o'clock in the
+        direction of rotation ([API11E]) [rad].
+    beam_angle_bottom, beam_angle_top : float
+        Beam angles psi there, front arm above horizontal [rad].
+    front_arm : float
+        A [m]: turns beam rotation into polished-rod travel.
+
+    References
+    ----------
+    [SK8Rotation2013] (start of the upstroke), [API11E] (angle convention).
     """
 
     crank_angle_bottom: float
@@ -55,25 +68,26 @@ class DeadPositions:
 
     @property
     def stroke(self) -> float:
-        """Exact polished-rod stroke S = A (psi_top - psi_bottom) [m]."""
+        """Exact polished-rod stroke S = A (psi_top - psi_bottom) [m] (the horsehead is an arc of radius A)."""
         return self.front_arm * (self.beam_angle_top - self.beam_angle_bottom)
 
     @property
     def upstroke_crank_travel(self) -> float:
-        """Crank rotation from the bottom to the top of the stroke [rad]."""
+        """Crank rotation from the bottom to the top of the stroke, (theta_top - theta_bottom) mod 2 pi [rad]."""
         return (self.crank_angle_top - self.crank_angle_bottom) % (2.0 * math.pi)
 
     @property
     def downstroke_crank_travel(self) -> float:
-        """Crank rotation from the top back to the bottom of the stroke [rad]."""
+        """Crank rotation from the top back to the bottom of the stroke, 2 pi - upstroke travel [rad]."""
         return 2.0 * math.pi - self.upstroke_crank_travel
 
 
 @dataclass(frozen=True)
 class Linkage:
-    """Geometry of the four-bar of a conventional pumping unit, SI.
+    """Geometry of the four-bar O-A-B-C of a conventional (class I) pumping unit, SI.
 
-    Implements :class:`pumpjack_cli.core.mechanism.Mechanism`.
+    Implements :class:`pumpjack_cli.core.mechanism.Mechanism`. The letters are those of
+    [API11E], the second names those of GOST 5866-76 units and [SK8Rotation2013].
 
     Parameters
     ----------
@@ -90,7 +104,20 @@ class Linkage:
     vertical_offset : float
         H - G, l2 [m]: height of the centre bearing above the crank shaft.
     rotation : int
-        +1 clockwise, -1 counterclockwise, seen with the well to the right.
+        +1 clockwise, -1 counterclockwise, seen with the well to the right
+        (dimensionless).
+
+    References
+    ----------
+    [API11E] (letters, conventional unit), [SK8Rotation2013] (GOST names, SK8-3,5-4000).
+
+    Examples
+    --------
+    SK8-3,5-4000 with the 1010 mm crank hole ([SK8Rotation2013]); K = sqrt(2.195² + 3²):
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> round(sk8.frame_length, 4)
+    3.7173
     """
 
     front_arm: float
@@ -103,14 +130,14 @@ class Linkage:
 
     @property
     def crank_shaft(self):
-        """Position of the crank shaft O relative to the centre bearing, numpy array (2,) [m]."""
+        """Position of the crank shaft O relative to the centre bearing, (-I, -(H - G)), numpy array (2,) [m]."""
         import numpy as np
 
         return np.array([-self.horizontal_offset, -self.vertical_offset])
 
     @property
     def frame_length(self) -> float:
-        """K [m]: distance crank shaft - centre bearing (API Spec 11E letter K)."""
+        """K = sqrt(I^2 + (H - G)^2) [m]: distance crank shaft - centre bearing ([API11E] letter K)."""
         return math.hypot(self.horizontal_offset, self.vertical_offset)
 
     def check(self) -> None:
@@ -122,22 +149,22 @@ class Linkage:
         return dead_positions(self)
 
     def dead_positions(self) -> DeadPositions:
-        """The exact dead positions (computed once per linkage)."""
+        """The exact dead positions (:func:`dead_positions`, computed once per linkage)."""
         return self._dead
 
     @property
     def stroke(self) -> float:
-        """Exact polished-rod stroke [m]."""
+        """Exact polished-rod stroke S = A (psi_top - psi_bottom) [m]."""
         return self._dead.stroke
 
     def motion(self, crank_angle: Any):
-        """Link angles and their crank-angle derivatives, arrays (:func:`.linkage.motion`)."""
+        """Link angles [rad] and their crank-angle derivatives at crank angles [rad] (:func:`.linkage.motion`)."""
         from .linkage import motion
 
         return motion(self, crank_angle)
 
     def pin_rates(self, motion: Any):
-        """Crank-angle derivatives of the crank pin and the equalizer bearing (:func:`.linkage.pin_rates`)."""
+        """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.pin_rates`)."""
         from .linkage import pin_rates
 
         return pin_rates(self, motion)
@@ -149,7 +176,33 @@ def check_assembly(linkage: Linkage) -> None:
     The crank pin's distance from the centre bearing runs over [K - R, K + R]; the
     pitman and rear arm reach it at every crank angle only if (Grashof crank-rocker
     condition, strict so that the unit never locks in a toggle)
-    K + R < P + C and K - R > |P - C| ([Artobolevsky1951]).
+
+        K + R < P + C  and  K - R > |P - C|.
+
+    Every length must be finite and, except the two offsets, positive.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar, lengths [m].
+
+    Raises
+    ------
+    GeometryError
+        A length is not finite or not positive, or the crank cannot turn.
+
+    References
+    ----------
+    [Artobolevsky1951] (Grashof's condition).
+
+    Examples
+    --------
+    A 2 m crank on SK8-3,5-4000: K + R = 3.717 + 2 = 5.717 m > P + C = 5.5 m.
+
+    >>> check_assembly(Linkage(3.5, 2.5, 2.0, 3.0, 2.195, 3.0))  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    pumpjack_cli.errors.GeometryError: the unit cannot assemble: ... (K + R = 3.717 + 2 = 5.717 m) ... (P + C = 3 + 2.5 = 5.5 m) ...
     """
     lengths = {
         "front_arm": linkage.front_arm,
@@ -182,19 +235,50 @@ def check_assembly(linkage: Linkage) -> None:
 
 
 def assembly_angle(x: Any, y: Any, reach: Any, rear_arm: float, xp: Any = math) -> Any:
-    """Beam angle psi [rad] that puts the rear-arm end B = -C e(psi) at distance ``reach`` from X = (x, y).
+    """Beam angle that puts the rear-arm end B = -C e(psi) at distance ``reach`` from X = (x, y).
 
-    Cosine rule: |B - X|^2 = C^2 + |X|^2 + 2 C |X| cos(psi - delta), delta = angle of X.
+    Cosine rule on the triangle C-X-B:
+
+        |B - X|^2 = C^2 + |X|^2 + 2 C |X| cos(psi - delta),  delta = angle of X,
+
+    so psi = delta + arccos((reach^2 - C^2 - |X|^2) / (2 C |X|)), wrapped to [-pi, pi).
     The assembly branch keeps B on the side where (X x B)_z < 0, i.e. the equalizer
     bearing above and behind the crank pin as in every conventional unit; this branch
     cannot change during motion without passing a toggle, which :func:`check_assembly`
-    excludes. ``xp`` is :mod:`math` for scalars or numpy for arrays.
+    excludes. This is the closed-vector-loop solution of [SK8Rotation2013] eqs. 2-6
+    written for the beam angle directly.
 
-    SK8-3,5-4000 at its stretched (bottom) dead position, where the beam swings to
-    -23.8 degrees ([SK8Rotation2013] data, l1 horizontal, l2 vertical):
+    Parameters
+    ----------
+    x, y : float or numpy.ndarray
+        Point X relative to the centre bearing [m] (the crank pin, or the crank shaft at
+        a dead position).
+    reach : float or numpy.ndarray
+        Required distance |B - X| [m] (the pitman P, or P +- R at a dead position).
+    rear_arm : float
+        C [m].
+    xp : module
+        :mod:`math` for scalars or :mod:`numpy` for arrays.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        psi, front arm above horizontal [rad].
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 2-6.
+
+    Examples
+    --------
+    SK8-3,5-4000 at its stretched (bottom) and folded (top) dead positions: the beam
+    swings from -23.8 to +23.9 degrees ([SK8Rotation2013] data, l1 horizontal, l2
+    vertical, as ``configs/sk8-3.5-4000.toml`` states):
 
     >>> round(math.degrees(assembly_angle(-2.195, -3.0, 3.0 + 1.01, 2.5)), 1)
     -23.8
+    >>> round(math.degrees(assembly_angle(-2.195, -3.0, 3.0 - 1.01, 2.5)), 1)
+    23.9
     """
     distance = xp.hypot(x, y)
     delta = xp.atan2(y, x)
@@ -204,15 +288,45 @@ def assembly_angle(x: Any, y: Any, reach: Any, rear_arm: float, xp: Any = math) 
 
 
 def dead_positions(linkage: Linkage) -> DeadPositions:
-    """Exact crank and beam angles at the ends of the stroke.
+    """Exact crank and beam angles at the ends of the stroke, in closed form.
 
     At a dead position O, A and B are collinear, so B is at distance P + R (stretched)
     or P - R (folded) from O; the beam angle follows from the cosine rule of
     :func:`assembly_angle` applied to the triangle C-O-B, and the crank pin lies on the
-    line OB (stretched: A = O + R u, folded: A = O - R u, u the unit vector O->B).
+    line OB (stretched: A = O + R u, folded: A = O - R u, u the unit vector O->B), so
+    theta = atan2(s u_x, u_y) for the stretched and atan2(-s u_x, -u_y) for the folded
+    position, s the rotation. The lower beam angle is the bottom of the stroke.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar, lengths [m].
+
+    Returns
+    -------
+    DeadPositions
+        Crank and beam angles of bottom and top [rad]; ``stroke`` [m].
+
+    Raises
+    ------
+    GeometryError
+        The crank cannot turn (:func:`check_assembly`).
+
+    References
+    ----------
+    [SK8Rotation2013] (the upstroke starts with crank and pitman stretched in one line).
+
+    Examples
+    --------
+    SK8-3,5-4000 with the 1010 mm crank hole of [SK8Rotation2013]: the beam swings
+    -23.80 to +23.88 degrees (:func:`assembly_angle`), so the stroke is
+    3.5 m x 47.68 degrees x pi/180 = 2.913 m:
 
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    >>> round(dead_positions(sk8).stroke, 4)   # seed unit SK8-3,5-4000, r = 1010 mm hole
+    >>> dead = dead_positions(sk8)
+    >>> round(math.degrees(dead.beam_angle_bottom), 2), round(math.degrees(dead.beam_angle_top), 2)
+    (-23.8, 23.88)
+    >>> round(dead.stroke, 4)
     2.9128
     """
     check_assembly(linkage)
@@ -231,15 +345,60 @@ def dead_positions(linkage: Linkage) -> DeadPositions:
 
 
 def vertical_offset_from_heights(centre_bearing_height: float, crank_shaft_height: float) -> float:
-    """H - G [m]: the centre bearing's height above the crank shaft from the API 11E letters
-    H (centre bearing above the base) and G (crank shaft above the base) [API11E]."""
+    """The centre bearing's height above the crank shaft, H - G, from the [API11E] letters.
+
+    Parameters
+    ----------
+    centre_bearing_height : float
+        H, centre bearing above the base [m].
+    crank_shaft_height : float
+        G, crank shaft above the base [m].
+
+    Returns
+    -------
+    float
+        H - G [m].
+
+    References
+    ----------
+    [API11E].
+
+    Examples
+    --------
+    C-114D-133-54 of [Guo2007], Table 12.1: H = 116 in, G = 41 in.
+
+    >>> round(vertical_offset_from_heights(116 * 0.0254, 41 * 0.0254) / 0.0254, 9)
+    75.0
+    """
     return centre_bearing_height - crank_shaft_height
 
 
 def vertical_offset_from_frame(frame_length: float, horizontal_offset: float) -> float:
-    """sqrt(K^2 - I^2) [m]: the vertical offset from the API 11E letters K (straight
-    distance crank shaft - centre bearing) and I (its horizontal part) [API11E].
+    """The vertical offset sqrt(K^2 - I^2) from the [API11E] letters K and I.
 
+    Parameters
+    ----------
+    frame_length : float
+        K, straight distance crank shaft - centre bearing [m].
+    horizontal_offset : float
+        I, its horizontal part [m].
+
+    Returns
+    -------
+    float
+        H - G [m].
+
+    Raises
+    ------
+    GeometryError
+        K does not exceed I.
+
+    References
+    ----------
+    [API11E].
+
+    Examples
+    --------
     >>> vertical_offset_from_frame(5.0, 3.0)
     4.0
     """
@@ -249,7 +408,25 @@ def vertical_offset_from_frame(frame_length: float, horizontal_offset: float) ->
 
 
 def pitman_lean(crank_half_spacing: float | None, equalizer_half_length: float | None) -> float:
-    """|b - e| [m]: offset of the pitman's ends along the crank shaft (0 without spatial data)."""
+    """Offset |b - e| of the pitman's ends along the crank shaft (0 without spatial data).
+
+    Parameters
+    ----------
+    crank_half_spacing : float or None
+        b, crank shaft mid-plane to each crank pin [m].
+    equalizer_half_length : float or None
+        e, equalizer bearing D to each equalizer pin [m].
+
+    Returns
+    -------
+    float
+        |b - e| [m], 0 when either is None.
+
+    Examples
+    --------
+    >>> pitman_lean(1.0, 0.6), pitman_lean(None, 0.6)
+    (0.4, 0.0)
+    """
     if crank_half_spacing is None or equalizer_half_length is None:
         return 0.0
     return abs(crank_half_spacing - equalizer_half_length)
@@ -258,9 +435,34 @@ def pitman_lean(crank_half_spacing: float | None, equalizer_half_length: float |
 def beam_linkage(front_arm: float, rear_arm: float, crank_radius: float, pitman: float, horizontal_offset: float,
                  vertical_offset: float, rotation: int, crank_half_spacing: float | None = None,
                  equalizer_half_length: float | None = None) -> Linkage:
-    """The planar four-bar of a unit [m]; the pitman is projected on the beam plane,
-    sqrt(P^2 - (b - e)^2), when the crank pins (half spacing b) and the equalizer pins
-    (half length e) are spaced differently along the shaft.
+    """The planar four-bar of a unit, with the pitman projected on the beam plane.
+
+    When the crank pins (half spacing b) and the equalizer pins (half length e) are
+    spaced differently along the shaft, the pitman leans and its projection on the beam
+    plane, P_xy = sqrt(P^2 - (b - e)^2), is the planar pitman.
+
+    Parameters
+    ----------
+    front_arm, rear_arm, crank_radius, pitman, horizontal_offset, vertical_offset : float
+        A, C, R, P, I, H - G [m] as in :class:`Linkage`; ``pitman`` is the true length.
+    rotation : int
+        +1 clockwise, -1 counterclockwise, seen with the well to the right.
+    crank_half_spacing, equalizer_half_length : float or None
+        b and e [m] of the spatial model, or None.
+
+    Returns
+    -------
+    Linkage
+        The planar four-bar [m].
+
+    Raises
+    ------
+    GeometryError
+        The pitman is not longer than |b - e|.
+
+    Examples
+    --------
+    A 5 m pitman leaning by |1 - 4| = 3 m projects to 4 m (a 3-4-5 triangle):
 
     >>> beam_linkage(3.5, 2.5, 1.01, 5.0, 2.195, 3.0, CLOCKWISE, 1.0, 4.0).pitman
     4.0

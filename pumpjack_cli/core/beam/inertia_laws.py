@@ -1,20 +1,21 @@
-"""Inertia-force laws of the polished rod of a beam pumping unit (seed 001 eqs. 5-7).
+"""Inertia-force laws of the polished rod of a beam pumping unit ([InertiaUNB600A] eqs. 5-7).
 
 Exact: the polished rod moves with the horsehead arc, s = A (psi - psi_bottom)
-(:mod:`pumpjack_cli.core.kinematics`; seed 001 eqs. 5-6 write the same exact force with
-the rocker arms l31 = A and l32 = C). Approximations compared with it:
+(:mod:`pumpjack_cli.core.beam.kinematics`; [InertiaUNB600A] eqs. 5-6 write the same exact
+force with the rocker arms l31 = A and l32 = C). Approximations compared with it:
 
 * ``harmonic`` and ``two_term``: the elementary and refined textbook theories of
-  :func:`pumpjack_cli.core.kinematics.approximate_motion`;
+  :func:`pumpjack_cli.core.beam.kinematics.approximate_motion` ([Aliverdizade1951],
+  [NUNG]);
 * ``chord``: the equalizer bearing B is taken to move along the chord of its arc
-  between the two dead positions instead of the arc (seed 001: "the motion of the
-  suspension point along the arc is neglected, it is taken to move along the chord",
-  its ref. [1]), and the polished rod moves A/C times as far. The crank, pitman and the
-  chord then form an offset slider-crank (:mod:`pumpjack_cli.core.slider_crank`) whose
-  line of stroke is the chord, inclined to the frame. Seed eq. 7 (with the tilt psi of
-  the post of length l0) is illegible in the extracted text; this is our reconstruction
-  of the same assumption, exact for the chord so that only the arc-to-chord step is
-  approximated.
+  between the two dead positions instead of the arc ([InertiaUNB600A]: "the motion of
+  the suspension point along the arc is neglected, it is taken to move along the
+  chord", its ref. 1), and the polished rod moves A/C times as far. The crank, pitman
+  and the chord then form an offset slider-crank (:mod:`pumpjack_cli.core.slider_crank`)
+  whose line of stroke is the chord, inclined to the frame. Eq. 7 of [InertiaUNB600A]
+  (with the tilt psi of the post of length l0) is illegible in the extracted text; this
+  is our reconstruction of the same assumption, exact for the chord so that only the
+  arc-to-chord step is approximated.
 """
 
 from __future__ import annotations
@@ -28,17 +29,40 @@ from .linkage import Linkage
 
 
 def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
-    """The offset slider-crank of the chord law: (mechanism, phase [rad], direction).
+    """The offset slider-crank of the chord law.
 
     The chord runs through the equalizer-bearing positions B_bottom and B_top of the two
     dead positions (|OB| = P + R and P - R). Its axis n is the chord direction signed so
     that (B_bottom - O) . n > 0 (the slider-crank branch with the rod pointing along n).
     The crank pin direction in the frame is pi/2 - rotation * theta (theta: the unit's
-    crank angle from 12 o'clock, :mod:`pumpjack_cli.core.linkage`), so in the chord frame
-    it is gamma = pi/2 - rotation * theta - angle(n); mirroring the frame across n by
-    m = -rotation makes phi = m gamma = phase + theta grow with time, with the offset
-    e = m (B_bottom - O) . n_perp. ``direction`` is +1 if n points from B_bottom to B_top
-    (the polished rod rises as B moves along n), else -1.
+    crank angle from 12 o'clock, :mod:`pumpjack_cli.core.beam.linkage`), so in the chord
+    frame it is gamma = pi/2 - rotation * theta - angle(n); mirroring the frame across n
+    by m = -rotation makes phi = m gamma = phase + theta grow with time, with the offset
+    e = m (B_bottom - O) . n_perp.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+
+    Returns
+    -------
+    tuple
+        (mechanism, phase, direction): the :class:`SliderCrank` with r = R, l = P and
+        the offset e [m]; phase [rad], with phi = phase + theta; direction, +1 if n
+        points from B_bottom to B_top (the polished rod rises as B moves along n), else
+        -1 (dimensionless).
+
+    References
+    ----------
+    [InertiaUNB600A] eq. 7 (the assumption; the formula is reconstructed here).
+
+    Examples
+    --------
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> mechanism, phase, direction = chord_slider_crank(sk8)
+    >>> mechanism.crank_radius, mechanism.rod_length   # R and P of the unit
+    (1.01, 3.0)
     """
     dead = linkage.dead_positions()
     o = linkage.crank_shaft
@@ -56,13 +80,45 @@ def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
 
 
 def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> RodMotion:
-    """Polished-rod motion under the chord law for uniform rotation at ``omega`` [1/s].
+    """Polished-rod motion under the chord law for uniform crank rotation.
 
-    s = (A/C) d (x(phi) - x(phi_bottom)), v and a likewise from the exact offset
-    slider-crank (:func:`pumpjack_cli.core.slider_crank.exact_motion`) with
-    phi = phase + theta (so d/dt = omega d/dphi), d the
-    ``direction`` of :func:`chord_slider_crank`. The stroke is (A/C) times the chord,
+        s = (A/C) d (x(phi) - x(phi_bottom)),  v = (A/C) d dx/dt,  a = (A/C) d d2x/dt2,
+
+    from the exact offset slider-crank
+    (:func:`pumpjack_cli.core.slider_crank.mechanism.exact_motion`) with
+    phi = phase + theta (so d/dt = omega d/dphi), d the ``direction`` of
+    :func:`chord_slider_crank`. The stroke is (A/C) times the chord,
     2 A sin((psi_top - psi_bottom)/2).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    crank_angle : numpy.ndarray
+        theta [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    RodMotion
+        s [m], v [m/s], a [m/s²].
+
+    References
+    ----------
+    [InertiaUNB600A] eq. 7 (the assumption; reconstructed here).
+
+    Examples
+    --------
+    SK8-3,5-4000: the beam swings 47.68 degrees, so the chord stroke is
+    2 x 3.5 x sin(23.84 deg) = 2.829 m, against the exact 2.913 m; the chord joins the
+    exact dead positions.
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> dead = sk8.dead_positions()
+    >>> s = chord_motion(sk8, np.array([dead.crank_angle_bottom, dead.crank_angle_top]), 1.0).position
+    >>> [round(abs(float(x)), 3) for x in s]
+    [0.0, 2.829]
     """
     mechanism, phase, direction = chord_slider_crank(linkage)
     theta = np.asarray(crank_angle, dtype=float)
@@ -94,9 +150,40 @@ def _rod_laws(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> tuple[
 
 
 def beam_inertia_laws(linkage: Linkage, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
-    """Exact polished-rod motion and every law of :data:`BEAM_LAWS` on ``crank_angle``
-    [rad], uniform rotation at ``omega`` [1/s]; peaks and errors on the dense grid.
+    """Exact polished-rod motion and every law of :data:`BEAM_LAWS`, with their errors.
 
+    The inertia force of a mass m moving with the polished rod is -m a for every law,
+    so the errors of :func:`~pumpjack_cli.core.slider_crank.mechanism.law_errors` are
+    the same for accelerations and forces. Peaks and errors are taken on a dense grid of
+    :data:`~pumpjack_cli.core.slider_crank.mechanism.DENSE_STEPS` positions.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    omega : float
+        Crank speed [1/s], positive (uniform rotation).
+    crank_angle : numpy.ndarray
+        Output crank angles [rad].
+
+    Returns
+    -------
+    InertiaComparison
+        Exact position [m] from the bottom, velocity [m/s], acceleration [m/s²], each
+        law's acceleration [m/s²], stroke [m], exact peak [m/s²] and its angle [rad],
+        errors (dimensionless fractions).
+
+    Raises
+    ------
+    ValueError
+        ``omega`` is not positive.
+
+    References
+    ----------
+    [InertiaUNB600A] eqs. 5-7; [Aliverdizade1951], [NUNG].
+
+    Examples
+    --------
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
     >>> c = beam_inertia_laws(sk8, 1.1422, crank_grid(12))
     >>> round(c.stroke, 4), sorted(c.errors)

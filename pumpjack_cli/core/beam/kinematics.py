@@ -1,16 +1,16 @@
 """Polished-rod kinematics: exact motion and the classical textbook approximations.
 
-The exact motion comes from :mod:`pumpjack_cli.core.linkage`. The horsehead is an arc
-of radius A about the centre bearing, so the polished rod moves by A times the beam
-rotation (seed 004: "the speed of the suspension point equals the speed of the beam
-end"): position s = A (psi - psi_bottom), velocity v = A psi' omega,
-acceleration a = A (psi'' omega^2 + psi' epsilon), and the API Spec 11E torque factor
+The exact motion comes from :mod:`pumpjack_cli.core.beam.linkage`. The horsehead is an
+arc of radius A about the centre bearing, so the polished rod moves by A times the beam
+rotation ([SK8Rotation2013]: "the speed of the suspension point equals the speed of the
+beam end"): position s = A (psi - psi_bottom), velocity v = A psi' omega,
+acceleration a = A (psi'' omega^2 + psi' epsilon), and the torque factor of [API11E]
 TF = ds/dtheta = A psi' (torque on the crank shaft per unit polished-rod load).
 
 The approximations are the "elementary" and "refined" theories of Soviet textbooks
-(Aliverdizade 1951, ref. [1] of seed 004; restated in the NUNG oil-production
-textbook, eqs. 5.12-5.18), with phi the crank angle travelled from the bottom dead
-position and amplitude R A/C:
+([Aliverdizade1951], ref. 1 of [SK8Rotation2013]; restated in the oil-production
+textbook [NUNG], eqs. 5.12-5.18), with phi the crank angle travelled from the bottom
+dead position and amplitude R A/C:
 
 * elementary (harmonic): s = R (A/C)(1 - cos phi), v = R (A/C) omega sin phi,
   a = R (A/C) omega^2 cos phi;
@@ -33,8 +33,17 @@ _DENSE_STEPS = 7200
 
 @dataclass(frozen=True)
 class RodMotion:
-    """Polished-rod position [m] from the bottom of the stroke, velocity [m/s],
-    acceleration [m/s^2] (positive upwards)."""
+    """Polished-rod motion, positive upwards.
+
+    Attributes
+    ----------
+    position : numpy.ndarray
+        s, from the bottom of the stroke [m].
+    velocity : numpy.ndarray
+        v [m/s].
+    acceleration : numpy.ndarray
+        a [m/s²].
+    """
 
     position: np.ndarray
     velocity: np.ndarray
@@ -45,10 +54,45 @@ def rod_motion(
     linkage: Linkage, beam_angle: np.ndarray, beam_rate: np.ndarray, beam_rate2: np.ndarray,
     beam_angle_bottom: float, omega: np.ndarray | float, epsilon: np.ndarray | float = 0.0,
 ) -> RodMotion:
-    """Exact polished-rod motion for crank speed ``omega`` [1/s] and acceleration ``epsilon`` [1/s^2].
+    """Exact polished-rod motion for any crank speed and acceleration.
 
-    s = A (psi - psi_bottom); v = A psi' omega; a = A (psi'' omega^2 + psi' epsilon)
-    (chain rule on s(theta(t)); seed 004 eqs. 6-8).
+    The chain rule on s(theta(t)) with s = A (psi - psi_bottom):
+
+        s = A (psi - psi_bottom),  v = A psi' omega,  a = A (psi'' omega^2 + psi' epsilon).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar; only its front arm A [m] enters.
+    beam_angle, beam_rate, beam_rate2 : numpy.ndarray
+        psi [rad], psi' (dimensionless) and psi'' [1/rad] from :func:`.linkage.motion`.
+    beam_angle_bottom : float
+        psi at the bottom of the stroke [rad].
+    omega : float or numpy.ndarray
+        Crank speed [1/s].
+    epsilon : float or numpy.ndarray
+        Crank acceleration [1/s²]; 0 for uniform rotation.
+
+    Returns
+    -------
+    RodMotion
+        s [m], v [m/s], a [m/s²].
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 6-8.
+
+    Examples
+    --------
+    C-114D-133-54 at theta = 90 degrees: the velocity is TF omega, and [Guo2007] prints
+    TF = 26.45 in there.
+
+    >>> inch = 0.0254
+    >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
+    >>> m = motion(c114, np.radians([90.0]))
+    >>> rod = rod_motion(c114, m.beam_angle, m.beam_rate, m.beam_rate2, 0.0, omega=1.0)
+    >>> round(float(rod.velocity[0]) / inch, 2)   # in/s at 1 rad/s
+    26.45
     """
     a = linkage.front_arm
     return RodMotion(
@@ -61,10 +105,30 @@ def rod_motion(
 def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
     """Elementary theory: simple harmonic motion of the polished rod.
 
-    s = r_e (1 - cos phi), v = r_e omega sin phi, a = r_e omega^2 cos phi, with
-    r_e = R A / C [m] and phi [rad] the crank travel from the bottom dead position
-    (NUNG textbook eqs. 5.16-5.18).
+        s = r_e (1 - cos phi),  v = r_e omega sin phi,  a = r_e omega^2 cos phi,
 
+    with r_e = R A / C and phi the crank travel from the bottom dead position.
+
+    Parameters
+    ----------
+    amplitude : float
+        r_e = R A / C [m].
+    crank_from_bottom : numpy.ndarray
+        phi [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    RodMotion
+        s [m], v [m/s], a [m/s²].
+
+    References
+    ----------
+    [NUNG] eqs. 5.16-5.18; [Aliverdizade1951].
+
+    Examples
+    --------
     >>> m = harmonic_motion(1.0, np.array([0.0, np.pi]), 2.0)
     >>> m.position.tolist(), m.acceleration.tolist()
     ([0.0, 2.0], [4.0, -4.0])
@@ -80,9 +144,36 @@ def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, omega: floa
 def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
     """Refined theory: harmonic motion plus the second harmonic of a slider-crank.
 
-    s = r_e [(1 - cos phi) + (lambda/2) sin^2 phi], v = r_e omega [sin phi + (lambda/2) sin 2phi],
-    a = r_e omega^2 [cos phi + lambda cos 2phi], r_e = R A / C [m], lambda = R/P
-    (NUNG textbook eqs. 5.12-5.13; the two-term series of the slider-crank).
+        s = r_e [(1 - cos phi) + (lambda/2) sin^2 phi],
+        v = r_e omega [sin phi + (lambda/2) sin 2phi],
+        a = r_e omega^2 [cos phi + lambda cos 2phi],
+
+    r_e = R A / C, lambda = R/P: the two-term series of the slider-crank.
+
+    Parameters
+    ----------
+    amplitude : float
+        r_e = R A / C [m].
+    crank_ratio : float
+        lambda = R / P (dimensionless).
+    crank_from_bottom : numpy.ndarray
+        phi, crank travel from the bottom dead position [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    RodMotion
+        s [m], v [m/s], a [m/s²].
+
+    References
+    ----------
+    [NUNG] eqs. 5.12-5.13; [Aliverdizade1951].
+
+    Examples
+    --------
+    At phi = 0 the acceleration is r_e omega^2 (1 + lambda), at phi = pi
+    -r_e omega^2 (1 - lambda):
 
     >>> m = two_term_motion(1.0, 0.25, np.array([0.0, np.pi]), 1.0)
     >>> m.position.tolist(), m.acceleration.tolist()
@@ -97,7 +188,45 @@ def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.
 
 
 def approximate_motion(method: str, linkage: Linkage, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
-    """Polished-rod motion by one of :data:`APPROXIMATIONS` (``"harmonic"``, ``"two_term"``)."""
+    """Polished-rod motion by one of the textbook approximations of :data:`APPROXIMATIONS`.
+
+    The amplitude is r_e = R A / C and, for ``"two_term"``, lambda = R / P
+    (:func:`harmonic_motion`, :func:`two_term_motion`).
+
+    Parameters
+    ----------
+    method : str
+        ``"harmonic"`` (elementary theory) or ``"two_term"`` (refined theory).
+    linkage : Linkage
+        The four-bar [m].
+    crank_from_bottom : numpy.ndarray
+        phi, crank travel from the bottom dead position [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    RodMotion
+        s [m], v [m/s], a [m/s²].
+
+    Raises
+    ------
+    ValueError
+        Unknown ``method``.
+
+    References
+    ----------
+    [Aliverdizade1951], [NUNG] eqs. 5.12-5.18.
+
+    Examples
+    --------
+    The elementary stroke of SK8-3,5-4000 is 2 R A / C = 2 x 1.01 x 3.5 / 2.5 = 2.828 m,
+    against the exact 2.913 m:
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> round(float(approximate_motion("harmonic", sk8, np.array([np.pi]), 1.0).position[0]), 3)
+    2.828
+    """
     amplitude = linkage.crank_radius * linkage.front_arm / linkage.rear_arm
     if method == "harmonic":
         return harmonic_motion(amplitude, crank_from_bottom, omega)
@@ -112,11 +241,19 @@ APPROXIMATIONS = ("harmonic", "two_term")
 
 @dataclass(frozen=True)
 class ApproximationError:
-    """Error of an approximate law against the exact motion, as fractions.
+    """Error of an approximate law against the exact motion over one revolution.
 
-    position: max |s_approx - s| / stroke; velocity: max |v_approx - v| / max |v|;
-    acceleration: max |a_approx - a| / max |a|; peak_acceleration:
-    max |a_approx| / max |a| - 1 (signed: negative means the law underestimates).
+    Attributes
+    ----------
+    position : float
+        max |s_approx - s| / stroke (dimensionless fraction).
+    velocity : float
+        max |v_approx - v| / max |v| (dimensionless).
+    acceleration : float
+        max |a_approx - a| / max |a| (dimensionless).
+    peak_acceleration : float
+        max |a_approx| / max |a| - 1 (dimensionless, signed: negative means the law
+        underestimates the peak; the definition of [InertiaUNB600A] at the maximum).
     """
 
     position: float
@@ -127,7 +264,29 @@ class ApproximationError:
 
 @dataclass(frozen=True)
 class KinematicsSummary:
-    """Scalar results of a uniform-rotation kinematics run (SI, angles in rad)."""
+    """Scalar results of a uniform-rotation kinematics run.
+
+    Attributes
+    ----------
+    crank_speed : float
+        omega [1/s].
+    period : float
+        2 pi / omega [s].
+    stroke : float
+        Exact stroke [m].
+    crank_angle_bottom, crank_angle_top : float
+        Dead positions [rad].
+    upstroke_crank_travel, downstroke_crank_travel : float
+        Crank rotation during each stroke [rad].
+    max_velocity, min_velocity : Extreme
+        [m/s] at [rad].
+    max_acceleration, min_acceleration : Extreme
+        [m/s²] at [rad].
+    max_torque_factor, min_torque_factor : Extreme
+        TF = A psi' [m] at [rad] ([API11E]).
+    approximation_errors : dict of str to ApproximationError
+        By name of :data:`APPROXIMATIONS` (dimensionless fractions).
+    """
 
     crank_speed: float
     period: float
@@ -147,7 +306,27 @@ class KinematicsSummary:
 
 @dataclass(frozen=True)
 class KinematicsResult:
-    """Per-crank-angle kinematics of the unit for uniform crank rotation (SI, rad)."""
+    """Per-crank-angle kinematics of the unit for uniform crank rotation.
+
+    Attributes
+    ----------
+    crank_angle : numpy.ndarray
+        theta [rad].
+    time : numpy.ndarray
+        theta / omega [s].
+    rod : RodMotion
+        Exact polished-rod motion [m, m/s, m/s²].
+    torque_factor : numpy.ndarray
+        TF = A psi' [m] ([API11E]).
+    beam_angle, beam_angular_velocity, beam_angular_acceleration : numpy.ndarray
+        psi [rad], dpsi/dt [1/s], d2psi/dt2 [1/s²].
+    pitman_angle, pitman_angular_velocity, pitman_angular_acceleration : numpy.ndarray
+        chi [rad], dchi/dt [1/s], d2chi/dt2 [1/s²].
+    approximations : dict of str to RodMotion
+        The textbook laws of :data:`APPROXIMATIONS`.
+    summary : KinematicsSummary
+        Extremes and errors, located on a fixed dense grid.
+    """
 
     crank_angle: np.ndarray
     time: np.ndarray
@@ -204,15 +383,47 @@ def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsS
 
 
 def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> KinematicsResult:
-    """Kinematics of every link for uniform crank rotation at ``omega`` [1/s].
+    """Kinematics of every link for uniform crank rotation.
 
     One array computation over ``steps`` crank angles (see :func:`crank_grid`); time is
-    measured from crank angle 0 (crank pin at 12 o'clock). The summary's extremes are
-    located on a fixed dense grid, so they do not depend on ``steps``.
+    measured from crank angle 0 (crank pin at 12 o'clock). Beam and pitman rates are
+    dpsi/dt = psi' omega, d2psi/dt2 = psi'' omega^2 (likewise chi). The summary's extremes
+    are located on a fixed dense grid of 7200 positions, so they do not depend on
+    ``steps``.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    omega : float
+        Crank speed [1/s], positive.
+    steps : int
+        Crank positions per revolution of the output (dimensionless).
+
+    Returns
+    -------
+    KinematicsResult
+        Per-angle arrays and the summary (SI, angles in rad).
+
+    Raises
+    ------
+    ValueError
+        ``omega`` is not positive.
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 2-8; [API11E] (torque factor); [Aliverdizade1951], [NUNG]
+    (approximations).
+
+    Examples
+    --------
+    SK8-3,5-4000 at the rated crank speed 1.1422 1/s of [SK8Rotation2013]: the cycle
+    takes 2 pi / 1.1422 = 5.501 s.
 
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    >>> round(uniform_kinematics(sk8, 1.1422).summary.stroke, 4)
-    2.9128
+    >>> result = uniform_kinematics(sk8, 1.1422)
+    >>> round(result.summary.stroke, 4), round(result.summary.period, 3)
+    (2.9128, 5.501)
     """
     if not omega > 0:
         raise ValueError(f"crank speed must be positive, got {omega} 1/s")

@@ -1,12 +1,12 @@
 """Kinetostatics of the rational spatial mechanism: joint reactions and balancing torque.
 
-d'Alembert's principle (seed 000 eqs. 17-48, seed 003 eqs. 1-9): every link is in
+d'Alembert's principle ([Spatial7SK12] eqs. 17-48, [PopovychSenchishak] eqs. 1-9): every link is in
 equilibrium under its weight, its inertia force -m a_S at the centre of mass, its
 inertia moment -J eps - w x (J w), the joint reactions and, on the beam, the
 polished-rod load at E. Friction is neglected.
 
 The rational mechanism has spherical pairs at A, A1, B, B1 and D and revolute pairs
-at C (beam) and O (crank). As the seed itself does in the end (seed 000 eqs. 38-39),
+at C (beam) and O (crank). As [Spatial7SK12] itself does in the end (its eqs. 38-39),
 the structural group 2-3-4-5 is solved as one linear system: 24 equilibrium equations
 (forces and moments about C for pitmans 2, 3, equalizer 4 and beam 5) in 20 unknowns
 R12, R13, R24, R34, R45, R05 (3 components each) and the bearing moment M_R05 (2
@@ -23,7 +23,7 @@ the equalizer is taken to turn with the beam (kinematics, :mod:`.spatial`) and t
 component is carried by the beam. Its power is unchanged because the equalizer does
 not turn relative to the beam about the pin line.
 
-Then the crank (seed 003 eqs. 8-9): forces give R01, moments about the shaft centre
+Then the crank ([PopovychSenchishak] eqs. 8-9): forces give R01, moments about the shaft centre
 give the balancing torque M_z along the shaft (the gearbox output torque, reported
 positive when it drives the crank in its direction of rotation) and the bearing
 moment M_R01 across the shaft.
@@ -43,22 +43,48 @@ from .spatial import Z, SpatialLinkage, SpatialMotion, cross, spatial_motion
 
 @dataclass(frozen=True)
 class LinkLoads:
-    """Applied loads on one link: forces (N, k, 3) at points (N, k, 3), plus a moment (N, 3)."""
+    """Applied loads on one link at N crank angles: k point forces and a couple.
+
+    Attributes
+    ----------
+    forces : numpy.ndarray
+        Forces, shape (N, k, 3) [N].
+    points : numpy.ndarray
+        Their points of application relative to the centre bearing C, shape (N, k, 3) [m].
+    moment : numpy.ndarray
+        A couple on the link, shape (N, 3) [N·m].
+    """
 
     forces: np.ndarray
     points: np.ndarray
     moment: np.ndarray
 
     def resultant(self) -> np.ndarray:
+        """Sum of the forces, shape (N, 3) [N]."""
         return self.forces.sum(axis=1)
 
     def moment_about_origin(self) -> np.ndarray:
+        """Moment about the centre bearing C, sum p x F + couple, shape (N, 3) [N·m]."""
         return cross(self.points, self.forces).sum(axis=1) + self.moment
 
 
 @dataclass(frozen=True)
 class AppliedLoads:
-    """Weights, inertia forces and moments and the rod load, per link (seed numbering)."""
+    """Weights, inertia forces and moments and the rod load, per link.
+
+    Links numbered as in [Spatial7SK12].
+
+    Attributes
+    ----------
+    crank : LinkLoads
+        Link 1: both crank arms and the counterweights [N, m, N·m].
+    pitman2, pitman3 : LinkLoads
+        Links 2 and 3.
+    equalizer : LinkLoads
+        Link 4.
+    beam : LinkLoads
+        Link 5: beam body, horsehead and the polished-rod load at E.
+    """
 
     crank: LinkLoads
     pitman2: LinkLoads
@@ -69,11 +95,27 @@ class AppliedLoads:
 
 @dataclass(frozen=True)
 class Reactions:
-    """Joint reactions [N] and moments [N·m], arrays (N, 3); Rij acts from link i on link j.
+    """Joint reactions and moments of the mechanism at N crank angles.
 
-    ``balancing_torque`` [N·m] is M_z, positive when the gearbox drives the crank in
-    its direction of rotation; ``residual`` is max |E x - f| of the group 2-3-4-5
-    relative to the largest applied load, per crank angle.
+    Rij acts from link i on link j (links numbered as in [Spatial7SK12]; 0 the frame).
+
+    Attributes
+    ----------
+    r12, r13, r24, r34, r45, r05, r01 : numpy.ndarray
+        Reaction forces, shape (N, 3) [N].
+    m05, m01 : numpy.ndarray
+        Bearing moments of the beam (C) and the crank shaft (O) across their axes, shape
+        (N, 3) [N·m].
+    balancing_torque : numpy.ndarray
+        M_z [N·m], the gearbox output torque on the crank, positive when it drives the
+        crank in its direction of rotation ([PopovychSenchishak] eqs. 8-9).
+    residual : numpy.ndarray
+        Equilibrium residual of the group 2-3-4-5 relative to the largest applied load
+        (dimensionless), per crank angle.
+
+    References
+    ----------
+    [Spatial7SK12], [PopovychSenchishak].
     """
 
     r12: np.ndarray
@@ -104,10 +146,36 @@ def applied_loads(
     inertia: bool = True,
     gravity: float = STANDARD_GRAVITY,
 ) -> AppliedLoads:
-    """Weights, d'Alembert inertia forces/moments and the polished-rod load on every link.
+    """Weights, d'Alembert inertia forces and moments and the polished-rod load on every link.
 
-    ``rod_load`` [N] is the polished-rod load (dynamometer card), acting downwards on
-    the horsehead along the vertical tangent x = A, i.e. at E = (A, 0, 0).
+    Every centre of mass S carries m g and the inertia force -m a_S; every link the
+    inertia moment -J eps (the equalizer also -(J - J_t)(w . u) w x u, u its pin line).
+    Counterweights are point masses, half on each crank arm. The polished-rod load acts
+    downwards on the horsehead along the vertical tangent x = A, i.e. at E = (A, 0, 0).
+
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The mechanism [m].
+    masses : MassModel
+        Masses [kg], centres of mass [m], inertias [kg·m²].
+    sm : SpatialMotion
+        Positions [m], angular velocities [1/s] and accelerations [1/s²].
+    rod_load : numpy.ndarray
+        Polished-rod load at each crank angle [N] (dynamometer card).
+    weights, inertia : bool
+        Include the weights, the inertia forces and moments.
+    gravity : float
+        g [m/s²] ([BIPM2019]).
+
+    Returns
+    -------
+    AppliedLoads
+        Forces [N] at points [m] and couples [N·m], per link.
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 17-48; [PopovychSenchishak] eqs. 1-9.
     """
     n = sm.crank_angle.size
     g = np.array([0.0, -gravity, 0.0]) if weights else np.zeros(3)
@@ -179,6 +247,23 @@ def _moment_about(loads: LinkLoads, point: np.ndarray) -> np.ndarray:
 def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: AppliedLoads) -> Reactions:
     """Reactions in every joint and the balancing torque of the rational mechanism.
 
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The mechanism [m].
+    sm : SpatialMotion
+        Its motion (:func:`.spatial.spatial_motion`).
+    loads : AppliedLoads
+        The applied loads (:func:`applied_loads`) [N, m, N·m].
+
+    Returns
+    -------
+    Reactions
+        Reactions [N], bearing moments and balancing torque [N·m], residual
+        (dimensionless).
+
+    Notes
+    -----
     The 24 equilibrium equations of the group 2-3-4-5 in its 20 unknowns are solved by
     block elimination along the structure of the group (all crank angles at once,
     closed form, no per-angle matrices):
@@ -196,6 +281,11 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     max(|sum F| / F_ref, |sum M| / (F_ref L_ref)) with F_ref the largest applied force
     and L_ref = K + A the size of the unit. ``tests/test_kinetostatics.py`` assembles the
     full 24 x 20 matrix independently, checks its rank (20) and this solution against it.
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 17-48 (closed by eqs. 38-39 for the whole group);
+    [PopovychSenchishak] eqs. 1-9.
     """
     w2, w3 = sm.pin_b - sm.pin_a, sm.pin_b1 - sm.pin_a1
     n2 = w2 / np.linalg.norm(w2, axis=-1, keepdims=True)
@@ -255,10 +345,33 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
 def crank_reactions(
     spatial: SpatialLinkage, sm: SpatialMotion, crank: LinkLoads, r12: np.ndarray, r13: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Crank equilibrium (seed 003 eqs. 8-9): R01, M_R01 and the balancing torque M_z.
+    """Crank equilibrium: the shaft bearing reaction R01, its moment M_R01 and the balancing torque M_z.
 
-    R01 + R21 + R31 + loads = 0 with R21 = -R12, R31 = -R13; moments about the shaft
-    centre O: M_z (along the shaft, + driving) and M_R01 (across it) balance the rest.
+        R01 + R21 + R31 + F_crank = 0,  R21 = -R12, R31 = -R13;
+
+    about the shaft centre O, the drive couple M1 = M_z + M_R01 balances the moments of
+    R21, R31 and the crank's own loads; M_z is its component along the direction of
+    rotation (positive driving), M_R01 the rest (across the shaft).
+
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The mechanism [m].
+    sm : SpatialMotion
+        Its motion.
+    crank : LinkLoads
+        Weights and inertia of crank arms and counterweights [N, m, N·m].
+    r12, r13 : numpy.ndarray
+        Forces of the crank on the pitmans, shape (N, 3) [N].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        R01 (N, 3) [N], M_R01 (N, 3) [N·m], M_z (N,) [N·m].
+
+    References
+    ----------
+    [PopovychSenchishak] eqs. 8-9.
     """
     r01 = r12 + r13 - crank.resultant()
     o = sm.crank_shaft
@@ -282,8 +395,59 @@ def rational_mechanism(
 ) -> tuple[SpatialMotion, Reactions]:
     """Kinematics and reactions of the rational mechanism over the given crank angles.
 
-    ``omega1`` [1/s] and ``epsilon1`` [1/s^2]: crank speed and acceleration in the
-    direction of rotation; ``rod_load`` [N]: polished-rod load at each crank angle.
+    :func:`.spatial.spatial_motion`, then :func:`applied_loads`, then
+    :func:`rational_reactions`.
+
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The mechanism [m].
+    masses : MassModel
+        Link masses [kg], centres [m], inertias [kg·m²].
+    crank_angle : numpy.ndarray
+        theta [rad].
+    omega1 : float or numpy.ndarray
+        Crank speed in the direction of rotation [1/s].
+    epsilon1 : float or numpy.ndarray
+        Crank acceleration in the direction of rotation [1/s²].
+    rod_load : numpy.ndarray
+        Polished-rod load at each crank angle [N].
+    weights, inertia : bool
+        Include the links' weights, their inertia forces and moments.
+
+    Returns
+    -------
+    tuple
+        (:class:`~.spatial.SpatialMotion`, :class:`Reactions`).
+
+    References
+    ----------
+    [Spatial7SK12], [PopovychSenchishak]; torque factor [API11E].
+
+    Examples
+    --------
+    With massless links the balancing torque is the torque factor times the rod load
+    (the torque-factor method of [API11E]). C-114D-133-54 at 90 degrees, where
+    [Guo2007] prints TF = 26.45 in, under 10 000 lbf:
+
+    >>> from pumpjack_cli.core.beam.linkage import Linkage
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
+    >>> massless = MassModel(*[0.0] * 18)
+    >>> _, r = rational_mechanism(SpatialLinkage(c114, 0.6, 0.6), massless, np.radians([90.0]), 1.0, 0.0,
+    ...                           np.array([10000 * lbf]))
+    >>> round(float(r.balancing_torque[0]) / (lbf * inch) / 10000, 2)   # M_z / F = TF [in]
+    26.45
+
+    The weight of 5200 kg of counterweights at 0.83 m ([SK8Rotation2013]), crank at
+    3 o'clock: M_z = -m g r = -5200 x 9.80665 x 0.83 = -42 325.5 N·m.
+
+    >>> import dataclasses
+    >>> blocks = dataclasses.replace(massless, counterweight_mass=5200.0, counterweight_radius=0.83)
+    >>> sk8 = SpatialLinkage(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), 0.8, 0.8)
+    >>> _, r = rational_mechanism(sk8, blocks, np.radians([90.0]), 1.0, 0.0, np.array([0.0]))
+    >>> round(float(r.balancing_torque[0]), 1)
+    -42325.5
     """
     sm = spatial_motion(spatial, crank_angle, omega1, epsilon1)
     loads = applied_loads(spatial, masses, sm, rod_load, weights=weights, inertia=inertia)

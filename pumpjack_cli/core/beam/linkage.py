@@ -24,8 +24,26 @@ class Motion:
     """Angles of the beam and pitman and their derivatives with respect to crank angle.
 
     All arrays share the shape of the crank angles they were computed for.
-    ``beam_rate`` is dpsi/dtheta (the first transfer function of [SK8Rotation2013] eq. 6),
-    ``beam_rate2`` is d2psi/dtheta2; likewise for the pitman angle chi. Angles in rad.
+
+    Attributes
+    ----------
+    crank_angle : numpy.ndarray
+        theta [rad].
+    beam_angle : numpy.ndarray
+        psi, front arm above horizontal [rad].
+    beam_rate : numpy.ndarray
+        dpsi/dtheta, the first transfer function of [SK8Rotation2013] eq. 6
+        (dimensionless, rad/rad).
+    beam_rate2 : numpy.ndarray
+        d2psi/dtheta2 [1/rad].
+    pitman_angle : numpy.ndarray
+        chi, direction crank pin -> equalizer bearing above horizontal [rad].
+    pitman_rate, pitman_rate2 : numpy.ndarray
+        dchi/dtheta (dimensionless) and d2chi/dtheta2 [1/rad].
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 6-7.
     """
 
     crank_angle: np.ndarray
@@ -38,7 +56,35 @@ class Motion:
 
 
 def crank_pin(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
-    """Crank pin A, shape (2, N) [m]: A = O + R (s sin theta, cos theta), s = rotation."""
+    """Position of the crank pin, A = O + R (s sin theta, cos theta), s = rotation.
+
+    theta is measured from 12 o'clock in the direction of rotation ([API11E]).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    crank_angle : numpy.ndarray
+        theta, shape (N,) [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        A relative to the centre bearing, shape (2, N) [m].
+
+    References
+    ----------
+    [API11E] (crank-angle convention).
+
+    Examples
+    --------
+    SK8-3,5-4000, crank shaft at O = (-2.195, -3.0) m, R = 1.01 m, clockwise: at 12
+    o'clock the pin is R above O, at 3 o'clock (90 degrees) R towards the well.
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> np.round(crank_pin(sk8, np.radians([0.0, 90.0])), 6).tolist()
+    [[-2.195, -1.185], [-1.99, -3.0]]
+    """
     theta = np.asarray(crank_angle, dtype=float)
     o = linkage.crank_shaft
     return np.stack(
@@ -52,19 +98,59 @@ def crank_pin(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
 def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
     """Beam and pitman angles and their first two derivatives for whole arrays of crank angles.
 
+    The beam angle psi comes from the cosine rule on C-A-B (:func:`assembly_angle`).
     With w = B - A the pitman vector, the constraint |w| = P differentiated once gives
-    psi' = (w . A') / (w . B_psi) and twice
-    psi'' = [w . A'' - w . B_psipsi psi'^2 - |B_psi psi' - A'|^2] / (w . B_psi),
+
+        psi' = (w . A') / (w . B_psi)
+
+    and twice
+
+        psi'' = [w . A'' - w . B_psipsi psi'^2 - |B_psi psi' - A'|^2] / (w . B_psi),
+
     where B_psi = dB/dpsi, B_psipsi = -B, A' = dA/dtheta, A'' = -(A - O). The pitman
-    angle follows from chi' = (w x w')/P^2 and chi'' = (w x w'')/P^2.
+    angle follows from chi' = (w x w')/P^2 and chi'' = (w x w'')/P^2. The torque factor
+    of [API11E] is TF = A psi' [m].
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    crank_angle : numpy.ndarray
+        theta, any shape [rad].
+
+    Returns
+    -------
+    Motion
+        psi, chi [rad], their first derivatives (dimensionless) and second derivatives
+        [1/rad], arrays shaped like ``crank_angle``.
+
+    Raises
+    ------
+    GeometryError
+        The crank cannot turn (:func:`check_assembly`).
 
     References
     ----------
-    Planar form of [Spatial7SK12] eqs. 7-12 (Bour's formula) and [SK8Rotation2013] eq. 6.
+    Planar form of [Spatial7SK12] eqs. 7-12 (Bour's formula) and [SK8Rotation2013] eq. 6;
+    torque factor [API11E].
+
+    Examples
+    --------
+    C-114D-133-54 (A = 72, C = 64, R = 24, P = 74.5, I = 64, H - G = 116 - 41 in),
+    clockwise: [Guo2007], Table 12.1, prints the torque factor 26.45 in at theta = 90
+    degrees.
+
+    >>> inch = 0.0254
+    >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
+    >>> m = motion(c114, np.radians([90.0]))
+    >>> round(float(c114.front_arm * m.beam_rate[0] / inch), 2)
+    26.45
+
+    At a dead position the beam stops, psi' = 0:
 
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    >>> m = motion(sk8, np.radians([0.0, 90.0]))
-    >>> bool(m.beam_rate[1] > 0)   # crank at 3 o'clock: polished rod rising
+    >>> bottom = sk8.dead_positions().crank_angle_bottom
+    >>> bool(abs(motion(sk8, np.array([bottom])).beam_rate[0]) < 1e-12)
     True
     """
     theta = np.asarray(crank_angle, dtype=float)
@@ -98,10 +184,34 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
 
 
 def pin_rates(linkage: Linkage, m: Motion) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """dA/dtheta, d2A/dtheta2, dB/dtheta, d2B/dtheta2 of the crank pin A and the equalizer bearing B.
+    """Crank-angle derivatives of the crank pin A and the equalizer bearing B.
 
-    A = O + R (s sin theta, cos theta), s = rotation; B = -C (cos psi, sin psi) with
-    psi(theta) from :func:`motion` (chain rule). Shape (2, N) each [m/rad, m/rad^2].
+    A = O + R (s sin theta, cos theta), s = rotation, so A' = R (s cos theta, -sin theta)
+    and A'' = -R (s sin theta, cos theta); B = -C (cos psi, sin psi) with psi(theta) from
+    :func:`motion`, so by the chain rule B' = C psi' (sin psi, -cos psi) and
+    B'' = C [psi'' (sin psi, -cos psi) + psi'^2 (cos psi, sin psi)].
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    m : Motion
+        The motion at the crank angles of interest.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        dA/dtheta, d2A/dtheta2 [m/rad, m/rad²], dB/dtheta, d2B/dtheta2 [m/rad, m/rad²],
+        each of shape (2, N).
+
+    Examples
+    --------
+    At 90 degrees the pin of a clockwise crank moves straight down at R per radian:
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> a1, a2, b1, b2 = pin_rates(sk8, motion(sk8, np.radians([90.0])))
+    >>> np.round(a1[:, 0], 6).tolist()
+    [0.0, -1.01]
     """
     theta, psi, d1, d2 = m.crank_angle, m.beam_angle, m.beam_rate, m.beam_rate2
     r, c, s = linkage.crank_radius, linkage.rear_arm, linkage.rotation

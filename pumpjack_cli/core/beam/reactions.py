@@ -23,13 +23,35 @@ _METHODS = ("rational", "real")
 
 
 def reaction_methods() -> tuple[str, ...]:
-    """Names of the mechanism models, the statically determinate one first."""
+    """Names of the mechanism models, the statically determinate one first.
+
+    Returns
+    -------
+    tuple of str
+        ``"rational"`` ([Spatial7SK12], [PopovychSenchishak]) and ``"real"``
+        ([Spatial7SK12]).
+
+    Examples
+    --------
+    >>> reaction_methods()
+    ('rational', 'real')
+    """
     return _METHODS
 
 
 @dataclass(frozen=True)
 class ReactionSolution:
-    """Motion, reactions and, for the real mechanism, the joint moments of its revolute pins."""
+    """Motion, reactions and, for the real mechanism, the joint moments of its revolute pins.
+
+    Attributes
+    ----------
+    motion : SpatialMotion
+        Positions [m], angular velocities [1/s] and accelerations [1/s²].
+    reactions : Reactions
+        Reactions [N], moments and balancing torque [N·m].
+    joint_moments : JointMoments or None
+        Moments of the revolute pins [N·m] (``real`` only).
+    """
 
     motion: SpatialMotion
     reactions: Reactions
@@ -53,10 +75,43 @@ def joint_reactions(
 ) -> ReactionSolution:
     """Reactions of the mechanism model ``method`` (see :func:`reaction_methods`).
 
-    ``spatial`` is the error-free unit; for ``real``, ``actual`` is the unit with the
-    side-3 deviations (default: none), ``tilts`` the pin-bore errors and ``section``
-    the pitman's elastic section (required). ``omega1`` [1/s], ``epsilon1`` [1/s^2]:
-    crank speed and acceleration in the direction of rotation; ``rod_load`` [N].
+    Parameters
+    ----------
+    method : str
+        ``"rational"`` (:func:`.kinetostatics.rational_mechanism`) or ``"real"``
+        (:func:`.redundancy.real_mechanism`).
+    spatial : SpatialLinkage
+        The error-free unit [m].
+    masses : MassModel
+        Masses [kg], centres [m], inertias [kg·m²].
+    crank_angle : numpy.ndarray
+        theta [rad].
+    omega1, epsilon1 : float or numpy.ndarray
+        Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
+    rod_load : numpy.ndarray
+        Polished-rod load at each crank angle [N].
+    actual : SpatialLinkage, optional
+        ``real`` only: the unit with the side-3 deviations [m, rad] (default: none).
+    tilts : PinTilts
+        ``real`` only: the pin-bore errors [rad].
+    section : PitmanSection, optional
+        ``real`` only (required): the pitman's elastic section [Pa, m², m⁴].
+    weights, inertia : bool
+        Include the links' weights, their inertia forces and moments.
+
+    Returns
+    -------
+    ReactionSolution
+        Motion, reactions [N, N·m] and, for ``real``, the joint moments [N·m].
+
+    Raises
+    ------
+    ValueError
+        Unknown ``method``, or ``real`` without a ``section``.
+
+    References
+    ----------
+    [Spatial7SK12], [PopovychSenchishak].
     """
     if method == "rational":
         motion, reactions = rational_mechanism(spatial, masses, crank_angle, omega1, epsilon1, rod_load,

@@ -1,23 +1,23 @@
-"""The real mechanism: redundant constraints and elastic pitmans (seed 000 eqs. 17-39).
+"""The real mechanism: redundant constraints and elastic pitmans ([Spatial7SK12] eqs. 17-39).
 
 In the real unit the pitmans are joined to the crank pins A, A1 and to the equalizer
 pins B, B1 by revolute pairs (class V). Against the rational mechanism (spherical
-pairs there) this adds four constraints that the motion does not need (seed 000:
+pairs there) this adds four constraints that the motion does not need ([Spatial7SK12]:
 W = -3 for a unit that moves with one degree of freedom), so the mechanism is
 statically indeterminate of degree 4. An ideal unit assembles without stress; a unit
 with manufacturing or wear errors (crank arms out of phase, unequal crank radii or
 pitman lengths, pin bores not parallel) forces the pitmans to twist and bend, and
 their elastic moments load the joints unevenly.
 
-Compatibility model (derived here; seed 000 takes its twist and bending angles from a
-companion paper that is not available): the force method. Linear elasticity about
+Compatibility model (derived here; [Spatial7SK12] takes its twist and bending angles from
+a companion paper, [Popovych2014], that is not available): the force method. Linear elasticity about
 the configuration of the rational mechanism with the same errors (positions and
 motion from :mod:`.spatial`); all links rigid except the pitmans, each a straight
 prismatic bar of length l between its joints with axial stiffness E A, torsional
-G J_t, bending E J_c about the pin direction (bending in the plane of motion; the
-seed's J_z) and E J_n across it (out of that plane); shear deformation neglected.
+G J_t, bending E J_c about the pin direction (bending in the plane of motion; J_z of
+[Spatial7SK12]) and E J_n across it (out of that plane); shear deformation neglected.
 
-1. Unknowns (28, seed 000): R12, R13, R24, R34, R45, R05 (3 each), M_R05 (2, across z)
+1. Unknowns (28, [Spatial7SK12]): R12, R13, R24, R34, R45, R05 (3 each), M_R05 (2, across z)
    and the joint moments M_R12, M_R13, M_R24, M_R34 (2 each, across their pin axes:
    a revolute pair transmits no moment about its own axis).
 2. Equilibrium: the 24 equations of links 2, 3, 4, 5 (forces, moments about C),
@@ -38,7 +38,7 @@ seed's J_z) and E J_n across it (out of that plane); shear deformation neglected
    amplitudes y: (S^T Q S) y = S^T (w - q - Q X_p). With no errors and symmetric loads
    y = 0 and the real mechanism equals the rational one.
 
-Seed 000 writes the torsion as G J_p phi / l_AB along e_AB (eqs. 18-19) and the
+[Spatial7SK12] writes the torsion as G J_p phi / l_AB along e_AB (eqs. 18-19) and the
 bending as 3 E J_z sin(dbeta23) / (2 l_AB) along e_BD (eqs. 20-21), a bar clamped at
 one end and free to turn at the other. Here both ends are held by their pins and the
 whole statically indeterminate group is solved at once; about the pin direction a
@@ -60,12 +60,27 @@ from .spatial import Z, SpatialLinkage, SpatialMotion, skew, cross, spatial_moti
 
 @dataclass(frozen=True)
 class PitmanSection:
-    """Elastic properties of a pitman: moduli [Pa], cross-section area [m^2], second
-    moments of area [m^4].
+    """Elastic properties of a pitman, a straight prismatic bar.
 
-    ``inplane_inertia`` is J_c, about the pin direction (bending in the plane of motion;
-    the seed's J_z = 17.61e-6 m^4); ``outofplane_inertia`` J_n across it;
-    ``torsion_constant`` J_t (the polar moment J_p for a tube).
+    Attributes
+    ----------
+    youngs_modulus : float
+        E [Pa] (2.1e11 Pa in [Spatial7SK12]).
+    shear_modulus : float
+        G [Pa].
+    area : float
+        Cross-section area A [m²].
+    inplane_inertia : float
+        J_c, second moment about the pin direction (bending in the plane of motion;
+        J_z = 17.61e-6 m⁴ in [Spatial7SK12]) [m⁴].
+    outofplane_inertia : float
+        J_n, second moment across the pin direction [m⁴].
+    torsion_constant : float
+        J_t, the polar moment J_p for a tube [m⁴].
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 18-21.
     """
 
     youngs_modulus: float
@@ -78,13 +93,21 @@ class PitmanSection:
 
 @dataclass(frozen=True)
 class PinTilts:
-    """Pin bores not parallel to the crank shaft [rad], small rotations of the pin axis.
+    """Pin bores not parallel to the crank shaft: small rotations of the pin axes of side 3.
 
-    Crank pin A1 (side 3), in the crank arm's frame: about the arm's radial line
-    (``crank_pin_radial``: the pin leans along the path of the pin) and about its
-    tangent (``crank_pin_tangential``: the pin leans outwards). Equalizer pin B1 about
-    the beam's long axis (``equalizer_pin_roll``) and about the vertical across it
-    (``equalizer_pin_yaw``). Side 2 is the reference.
+    Side 2 is the reference.
+
+    Attributes
+    ----------
+    crank_pin_radial : float
+        Crank pin A1 turned about the crank arm's radial line (the pin leans along the
+        path of the pin) [rad].
+    crank_pin_tangential : float
+        Crank pin A1 turned about the arm's tangent (the pin leans outwards) [rad].
+    equalizer_pin_roll : float
+        Equalizer pin B1 turned about the beam's long axis [rad].
+    equalizer_pin_yaw : float
+        Equalizer pin B1 turned about the vertical across the beam [rad].
     """
 
     crank_pin_radial: float = 0.0
@@ -125,11 +148,26 @@ def _rotate(v: np.ndarray, rotation: np.ndarray) -> np.ndarray:
 
 
 def pin_axes(spatial: SpatialLinkage, sm: SpatialMotion, tilts: PinTilts) -> tuple[np.ndarray, ...]:
-    """Axes of the four pins (a2, u2, a3, u3), unit vectors (N, 3).
+    """Axes of the four pins, crank pins A, A1 and equalizer pins B, B1.
 
     Crank pins turn with the crank: their axes are the shaft direction, pin A1's tilted
     in the arm frame (radial line r, tangent s = z x r). Equalizer pins lie along the
-    pin line B1->B, pin B1's tilted about the beam axis and about z x beam axis.
+    pin line B1->B, pin B1's tilted about the beam axis and about z x beam axis. Tilts
+    are applied as finite rotations (Rodrigues' formula).
+
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The unit [m].
+    sm : SpatialMotion
+        Its motion.
+    tilts : PinTilts
+        Pin-bore errors of side 3 [rad].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (a2, u2, a3, u3): unit vectors (N, 3) of pins A, B, A1, B1 (dimensionless).
     """
     n = sm.crank_angle.size
     shaft = np.broadcast_to(Z, (n, 3))
@@ -144,10 +182,21 @@ def pin_axes(spatial: SpatialLinkage, sm: SpatialMotion, tilts: PinTilts) -> tup
 
 @dataclass(frozen=True)
 class JointMoments:
-    """Reaction moments of the revolute pairs [N·m], arrays (N, 3): ``m12`` of the crank
-    on pitman 2 at A, ``m13`` on pitman 3 at A1, ``m24`` of pitman 2 on the equalizer at
-    B, ``m34`` of pitman 3 at B1; ``torsion2``, ``torsion3`` the pitman torques about
-    their axes [N·m]."""
+    """Reaction moments of the revolute pairs of the real mechanism.
+
+    Attributes
+    ----------
+    m12, m13 : numpy.ndarray
+        Moments of the crank on pitman 2 at A and on pitman 3 at A1, (N, 3) [N·m].
+    m24, m34 : numpy.ndarray
+        Moments of pitman 2 on the equalizer at B and of pitman 3 at B1, (N, 3) [N·m].
+    torsion2, torsion3 : numpy.ndarray
+        The pitman torques about their axes, (N,) [N·m].
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 18-21 (the pitmans' elastic moments).
+    """
 
     m12: np.ndarray
     m13: np.ndarray
@@ -273,10 +322,62 @@ def real_mechanism(
     weights: bool = True,
     inertia: bool = True,
 ) -> tuple[SpatialMotion, JointMoments, Reactions]:
-    """Kinematics, joint moments and reactions of the real mechanism (module doc).
+    """Kinematics, joint moments and reactions of the real mechanism.
 
-    ``ideal`` is the error-free unit, ``actual`` the same with the side-3 deviations
-    (crank phase, crank radius, pitman length); ``tilts`` the pin bore errors.
+    The force method of the module docstring: the 24 equilibrium equations E X = f in
+    28 unknowns, a particular solution X_p and the self-stress states S (null space of
+    E, per crank angle by SVD), then Menabrea's condition with misfit,
+    (S^T Q S) y = S^T (w - q - Q X_p), X = X_p + S y; the crank follows as in the
+    rational mechanism, with the joint moments at A and A1 acting on it.
+
+    Parameters
+    ----------
+    ideal : SpatialLinkage
+        The error-free unit [m].
+    actual : SpatialLinkage
+        The same with the side-3 deviations (crank phase [rad], crank radius and pitman
+        length [m]).
+    tilts : PinTilts
+        Pin-bore errors [rad].
+    section : PitmanSection
+        The pitmans' elastic section [Pa, m², m⁴].
+    masses : MassModel
+        Masses [kg], centres [m], inertias [kg·m²].
+    crank_angle : numpy.ndarray
+        theta [rad].
+    omega1, epsilon1 : float or numpy.ndarray
+        Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
+    rod_load : numpy.ndarray
+        Polished-rod load at each crank angle [N].
+    weights, inertia : bool
+        Include the links' weights, their inertia forces and moments.
+
+    Returns
+    -------
+    tuple
+        (:class:`SpatialMotion` of ``actual``, :class:`JointMoments` [N·m],
+        :class:`~.kinetostatics.Reactions` [N, N·m]).
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 17-39.
+
+    Examples
+    --------
+    Without deviations the unit assembles free of stress, so the real mechanism gives
+    the rational mechanism's reactions and no joint moments:
+
+    >>> import dataclasses
+    >>> from pumpjack_cli.core.beam.linkage import Linkage
+    >>> from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
+    >>> sk8 = SpatialLinkage(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), 0.8, 0.8)
+    >>> masses = dataclasses.replace(MassModel(*[0.0] * 18), pitman_mass=130.0, pitman_cg=1.5)
+    >>> tube = PitmanSection(2.1e11, 8.08e10, 56.5e-4, 17.61e-6, 17.61e-6, 35.22e-6)
+    >>> theta, load = np.radians([0.0, 90.0, 180.0]), np.full(3, 50e3)
+    >>> _, moments, real = real_mechanism(sk8, sk8, PinTilts(), tube, masses, theta, 1.14, 0.0, load)
+    >>> _, rational = rational_mechanism(sk8, masses, theta, 1.14, 0.0, load)
+    >>> bool(np.allclose(real.r12, rational.r12, atol=1e-6) and np.allclose(moments.m12, 0.0, atol=1e-6))
+    True
     """
     ideal_motion = spatial_motion(ideal, crank_angle, omega1, epsilon1)
     sm = spatial_motion(actual, crank_angle, omega1, epsilon1)

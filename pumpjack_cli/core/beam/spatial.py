@@ -1,6 +1,6 @@
-"""Spatial kinematics of the six-link lever mechanism (seed 000 eqs. 5-16).
+"""Spatial kinematics of the six-link lever mechanism ([Spatial7SK12] eqs. 5-16).
 
-Links (seed numbering): 1 double crank (arms OA and O1A1 on one shaft), 2 and 3
+Links (numbered as in [Spatial7SK12]): 1 double crank (arms OA and O1A1 on one shaft), 2 and 3
 pitmans AB and A1B1, 4 equalizer B-D-B1, 5 walking beam with horsehead, 0 frame.
 Frame: origin at the centre bearing C, x towards the well, y up, z along the crank
 shaft (x, y, z right-handed); the beam moves in the plane z = 0. Pitman 2 is on the
@@ -8,7 +8,7 @@ shaft (x, y, z right-handed); the beam moves in the plane z = 0. Pitman 2 is on 
 (``equalizer_half_length``); pitman 3 mirrors it at -z. The pin line B-B1 passes
 through the equalizer bearing D, the rear-arm end of the beam.
 
-The rational mechanism has four idle freedoms (seed 000): the spin of each pitman
+The rational mechanism has four idle freedoms ([Spatial7SK12]): the spin of each pitman
 about its own axis, and two rotations of the equalizer relative to the beam (about
 its pin line, and about an axis along the pitmans). They are fixed here as a real
 unit's equalizer bearing does: the equalizer turns with the beam except for a roll
@@ -16,14 +16,14 @@ gamma about the beam's long axis l (which lets it share the load when the two si
 differ), and the pitmans do not spin.
 
 Positions: with both sides equal the two pitmans move in mirror planes and the
-planar closed form of :mod:`pumpjack_cli.core.linkage` (applied to the projection of
+planar closed form of :mod:`pumpjack_cli.core.beam.linkage` (applied to the projection of
 the pitman on the beam plane, P_xy = sqrt(P^2 - (b - e)^2)) gives everything. With
 deviations between the sides, the beam angle psi and the roll gamma solve
 |B - A| = P2, |B1 - A1| = P3 with B, B1 = D +- e u, u = cos(gamma) z + sin(gamma) (z x l),
 by Newton's method started from the planar solution, batched over all crank angles.
 
 Angular velocities and accelerations come from the two closed vector loops
-(seed 000 eqs. 5-6) differentiated with Bour's formula dl/dt = w x l:
+([Spatial7SK12] eqs. 5-6) differentiated with Bour's formula dl/dt = w x l:
 ``w1 x l1 + w2 x l2 + w4 x l4 + w5 x l5 = 0`` and
 ``w1 x l11 + w3 x l3 + w4 x l41 + w5 x l5 = 0`` (eqs. 7-10), and once more for the
 accelerations (eqs. 11-12). Unknowns per crank angle: w2, w3 (3 each), the roll rate
@@ -48,13 +48,35 @@ _NEWTON_ITERATIONS = 30
 
 @dataclass(frozen=True)
 class SpatialLinkage:
-    """The planar four-bar plus the spatial spacing of the two sides [m].
+    """The planar four-bar plus the spatial spacing of the two sides.
 
-    ``planar`` holds the projected pitman length; :attr:`pitman` is the true one. The
-    deviations describe side 3 (crank pin A1, pitman A1B1) against side 2: its crank
-    pin leads by ``crank_phase_offset`` [rad] in the direction of rotation, its crank
-    radius and its pitman are longer by ``crank_radius_offset`` and
-    ``pitman_length_offset`` [m]. All zero: both sides equal.
+    The deviations describe side 3 (crank pin A1, pitman A1B1) against side 2; all zero:
+    both sides equal.
+
+    Attributes
+    ----------
+    planar : Linkage
+        The four-bar with the projected pitman length [m]; :attr:`pitman` is the true one.
+    crank_half_spacing : float
+        b, crank shaft mid-plane to each crank pin, along the shaft [m].
+    equalizer_half_length : float
+        e, equalizer bearing D to each equalizer pin [m].
+    crank_phase_offset : float
+        Crank pin A1 ahead of A in the direction of rotation [rad].
+    crank_radius_offset, pitman_length_offset : float
+        Crank radius of A1 and pitman A1B1 minus those of side 2 [m].
+
+    References
+    ----------
+    [Spatial7SK12] (the six-link mechanism and its errors).
+
+    Examples
+    --------
+    A pitman projected to 4 m with its ends 3 m apart along the shaft is 5 m long:
+
+    >>> from pumpjack_cli.core.beam.linkage import Linkage
+    >>> SpatialLinkage(Linkage(3.5, 2.5, 1.01, 4.0, 2.195, 3.0), 1.0, 4.0).pitman
+    5.0
     """
 
     planar: Linkage
@@ -66,26 +88,40 @@ class SpatialLinkage:
 
     @property
     def pitman(self) -> float:
-        """True length P of pitman 2 [m] (the planar linkage holds its projection)."""
+        """True length of pitman 2, P = sqrt(P_xy^2 + (b - e)^2) [m] (the planar linkage holds P_xy)."""
         return float(np.hypot(self.planar.pitman, self.crank_half_spacing - self.equalizer_half_length))
 
     @property
     def pitman3(self) -> float:
-        """True length of pitman 3 [m]: P plus the length deviation."""
+        """True length of pitman 3, P + pitman_length_offset [m]."""
         return self.pitman + self.pitman_length_offset
 
     @property
     def crank_spin(self) -> np.ndarray:
-        """Unit vector of the crank angular velocity: clockwise seen from +z is -z."""
+        """Unit vector of the crank angular velocity (dimensionless): clockwise seen from +z is -z."""
         return -self.planar.rotation * Z
 
 
 @dataclass(frozen=True)
 class SpatialMotion:
-    """Points [m] (arrays (N, 3)) and link angular velocities [1/s] and accelerations [1/s^2].
+    """Positions, angular velocities and angular accelerations of every link at N crank angles.
 
-    ``omega1``/``epsilon1`` are the crank's scalar speed and acceleration in the
-    direction of rotation; the vectors ``w1``, ``e1`` point along the shaft.
+    Attributes
+    ----------
+    crank_angle : numpy.ndarray
+        theta, (N,) [rad].
+    omega1, epsilon1 : numpy.ndarray
+        The crank's scalar speed [1/s] and acceleration [1/s²] in the direction of
+        rotation, (N,).
+    crank_shaft, pin_a, pin_a1, pin_b, pin_b1, pin_d : numpy.ndarray
+        Points O, A, A1, B, B1, D relative to the centre bearing C, (N, 3) [m].
+    beam_angle : numpy.ndarray
+        psi, (N,) [rad].
+    w1, w2, w3, w4, w5 : numpy.ndarray
+        Angular velocities of crank, pitmans, equalizer and beam, (N, 3) [1/s]; ``w1``
+        points along the shaft.
+    e1, e2, e3, e4, e5 : numpy.ndarray
+        Their angular accelerations, (N, 3) [1/s²].
     """
 
     crank_angle: np.ndarray
@@ -111,14 +147,47 @@ class SpatialMotion:
 
 
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """a x b over the last axis (length 3); np.cross without its per-call overhead."""
+    """Cross product a x b over the last axis (length 3), np.cross without its per-call overhead.
+
+    Parameters
+    ----------
+    a, b : numpy.ndarray
+        Vectors, shape (..., 3) (any units).
+
+    Returns
+    -------
+    numpy.ndarray
+        a x b, shape (..., 3) (product of the units).
+
+    Examples
+    --------
+    >>> cross(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])).tolist()
+    [0.0, 0.0, 1.0]
+    """
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
     b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
     return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
 def skew(v: np.ndarray) -> np.ndarray:
-    """Cross-product matrices [v]x, shape (..., 3, 3), so that [v]x @ u = v x u."""
+    """Cross-product matrices [v]x, so that [v]x @ u = v x u.
+
+    Parameters
+    ----------
+    v : numpy.ndarray
+        Vectors, shape (..., 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        Skew-symmetric matrices, shape (..., 3, 3).
+
+    Examples
+    --------
+    >>> v, u = np.array([1.0, 2.0, 3.0]), np.array([-1.0, 0.5, 2.0])
+    >>> bool(np.allclose(skew(v) @ u, np.cross(v, u)))
+    True
+    """
     out = np.zeros(v.shape[:-1] + (3, 3))
     out[..., 0, 1], out[..., 0, 2] = -v[..., 2], v[..., 1]
     out[..., 1, 0], out[..., 1, 2] = v[..., 2], -v[..., 0]
@@ -211,8 +280,47 @@ def spatial_motion(
 ) -> SpatialMotion:
     """Positions, angular velocities and accelerations of every link, whole revolution at once.
 
-    ``omega1`` [1/s] and ``epsilon1`` [1/s^2] are the crank speed and acceleration in
-    the direction of rotation (scalars or arrays like ``crank_angle``).
+    Velocities from the two closed loops differentiated with Bour's formula,
+    sum w_i x l_i = 0, plus w2 . l2 = w3 . l3 = 0 (no pitman spin): one 8 x 8 system per
+    crank angle in (w2, w3, the equalizer's roll rate, w5z); accelerations from the
+    loops differentiated again, sum (eps_i x l_i + w_i x (w_i x l_i)) = 0, with the same
+    matrix.
+
+    Parameters
+    ----------
+    spatial : SpatialLinkage
+        The mechanism [m, rad].
+    crank_angle : numpy.ndarray
+        theta, (N,) [rad].
+    omega1 : float or numpy.ndarray
+        Crank speed in the direction of rotation [1/s].
+    epsilon1 : float or numpy.ndarray
+        Crank acceleration in the direction of rotation [1/s²].
+
+    Returns
+    -------
+    SpatialMotion
+        Points [m], angular velocities [1/s], angular accelerations [1/s²].
+
+    Raises
+    ------
+    GeometryError
+        The two sides cannot be assembled with the deviations.
+
+    References
+    ----------
+    [Spatial7SK12] eqs. 5-16.
+
+    Examples
+    --------
+    With equal sides the beam turns as in the planar closed form, w5z = psi' omega1:
+
+    >>> from pumpjack_cli.core.beam.linkage import Linkage
+    >>> sk8 = SpatialLinkage(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), 0.8, 0.8)
+    >>> theta = np.radians([30.0, 90.0])
+    >>> sm = spatial_motion(sk8, theta, 1.2)
+    >>> bool(np.allclose(sm.w5[:, 2], motion(sk8.planar, theta).beam_rate * 1.2, rtol=1e-12))
+    True
     """
     theta = np.asarray(crank_angle, dtype=float)
     n = theta.size
@@ -246,7 +354,7 @@ def spatial_motion(
     def centripetal(w: np.ndarray, vec: np.ndarray) -> np.ndarray:
         return cross(w, cross(w, vec))
 
-    # Second derivative of each loop: sum(eps x l + w x (w x l)) = 0 (seed 000 eqs. 11-12).
+    # Second derivative of each loop: sum(eps x l + w x (w x l)) = 0 ([Spatial7SK12] eqs. 11-12).
     # eps4 = eps5z z + k' l + k w5z (z x l): the last term is known and goes to the right side.
     known4 = (roll_rate * x[:, 7])[:, None] * normal
     loop1 = (cross(e1, l1) + centripetal(w1, l1) + centripetal(w2, l2) + centripetal(w4, l4)

@@ -57,7 +57,7 @@ def _finite(name: str, *arrays: np.ndarray) -> None:
 
 
 def torque_factor(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
-    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]; [Kretzer]).
+    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]; [KretzerSWPSC]).
 
     >>> from pumpjack_cli.core.beam.geometry import Linkage
     >>> lk = Linkage(72, 64, 24, 74.5, 64, 116 - 41)   # C-114D-133-54, inches ([Guo2007] Table 12.1)
@@ -279,7 +279,7 @@ def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance
 
     From |TF (W - B) - M sin(theta - tau)| <= T_r: for TF > 0,
     B + (M sin(theta - tau) - T_r)/TF <= W <= B + (M sin(theta - tau) + T_r)/TF, and the
-    bounds swap where TF < 0 ([Gault], from the definition). Where TF = 0 the load does
+    bounds swap where TF < 0 ([GaultSWPSC], from the definition). Where TF = 0 the load does
     not reach the gearbox: every W is allowed (W_min = -inf, W_max = +inf) if the
     counterbalance alone keeps |M sin(theta - tau)| <= T_r, and none (W_min = +inf,
     W_max = -inf) otherwise. Near TF = 0 the finite bounds grow without limit.
@@ -302,7 +302,7 @@ def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance
 
     References
     ----------
-    [Gault]; [API11E].
+    [GaultSWPSC]; [API11E].
 
     Examples
     --------

@@ -36,8 +36,19 @@ from .drive import MotorCharacteristic, rated_crank_speed
 
 
 class RodLoad(Protocol):
-    """Polished-rod load [N] by crank angle and stroke direction, and the masses [kg]
-    that move with the polished rod on each stroke (they enter the reduced inertia)."""
+    """Polished-rod load by crank angle and stroke direction, and the masses moving with the polished rod.
+
+    Attributes
+    ----------
+    mass_upstroke, mass_downstroke : float
+        Masses that move with the polished rod on each stroke [kg]; they enter the
+        reduced inertia ([SK8Rotation2013] eq. 9).
+
+    Methods
+    -------
+    force(crank_angle, upstroke)
+        Polished-rod load [N] at crank angles [rad], given the upstroke mask.
+    """
 
     mass_upstroke: float
     mass_downstroke: float
@@ -51,6 +62,13 @@ class CardLoad:
 
     A measured card already holds the weights of rods and fluid, friction and the rods'
     inertia, so no mass moves with the polished rod in the reduced inertia.
+
+    Attributes
+    ----------
+    card : Card
+        Load [N] on the crank-angle axis [rad].
+    mass_upstroke, mass_downstroke : float
+        0 [kg].
     """
 
     card: Card
@@ -58,6 +76,7 @@ class CardLoad:
     mass_downstroke: float = 0.0
 
     def force(self, crank_angle: np.ndarray, upstroke: np.ndarray) -> np.ndarray:
+        """The card's load [N] at crank angles [rad] (:func:`~pumpjack_cli.core.beam.card.card_load`)."""
         return card_load(self.card, crank_angle)
 
 
@@ -65,11 +84,56 @@ class CardLoad:
 class Machine:
     """Everything the equation of motion needs, SI.
 
-    linkage: the planar four-bar; masses: the moving links (per arm / per pitman, as
-    :class:`~.kinetostatics.MassModel`); drive_inertia [kg·m^2]: rotor, sheaves and
-    gearbox reduced to the crank shaft (:func:`drive_inertia`); drive_ratio u: motor
-    speed / crank speed; motor: its characteristic at the motor shaft; rod_load: the
-    polished-rod load model (:class:`~.well.WellLoad` or :class:`CardLoad`).
+    Attributes
+    ----------
+    linkage : Linkage
+        The planar four-bar [m].
+    masses : MassModel
+        The moving links, per arm and per pitman [kg, m, kg·m², rad].
+    drive_inertia : float
+        Rotor, sheaves and gearbox reduced to the crank shaft [kg·m²]
+        (:func:`~.drive.drive_inertia`).
+    drive_ratio : float
+        u, motor speed / crank speed (dimensionless).
+    motor : MotorCharacteristic
+        The motor's characteristic at the motor shaft [N·m, rad/s].
+    rod_load : RodLoad
+        The polished-rod load model (:class:`~pumpjack_cli.core.well.WellLoad` or
+        :class:`CardLoad`) [N, kg].
+    gravity : float
+        g [m/s²] ([BIPM2019]).
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 1, 9, 18-26.
+
+    Examples
+    --------
+    SK8-3,5-4000 ([SK8Rotation2013]): crank arms 2 x 1373 kg, counterweights 5200 kg at
+    0.83 m; the drive inertias are the estimates of ``configs/sk8-3.5-4000.toml``, chosen
+    to close the paper's constant part of the reduced inertia, 66 798.5 kg·m². The crank
+    part by hand: 2 (257 + 1373 x 0.45²) + 5200 x 0.83² = 4652.3 kg·m².
+
+    >>> import dataclasses
+    >>> from pumpjack_cli.core.beam.card import Card
+    >>> from pumpjack_cli.core.dynamics.drive import drive_inertia, motor_characteristic
+    >>> rpm = np.pi / 30
+    >>> masses = dataclasses.replace(MassModel(*[0.0] * 18), crank_arm_mass=1373.0, crank_arm_cg=0.45,
+    ...                              crank_arm_inertia=257.0, counterweight_mass=5200.0, counterweight_radius=0.83)
+    >>> sk8 = Machine(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), masses,
+    ...               drive_inertia(0.232 + 0.1, 0.5 + 40.154, 0.0, 3.6, 37.18), 37.18 * 3.6,
+    ...               motor_characteristic(30e3, 1500 * rpm, 1460 * rpm, 2.0, 2.2),
+    ...               CardLoad(Card(np.array([0.0]), np.array([0.0]))))
+    >>> round(sk8.crank_inertia, 1), round(sk8.constant_inertia)
+    (4652.3, 66798)
+    >>> round(sk8.rated_crank_speed, 4)
+    1.1423
+
+    At the rated crank speed the motor gives its rated torque, 196.22 N·m x u = 26 263 N·m
+    at the crank:
+
+    >>> round(sk8.drive_torque(sk8.rated_crank_speed))
+    26263
     """
 
     linkage: Linkage
@@ -82,23 +146,38 @@ class Machine:
 
     @property
     def crank_inertia(self) -> float:
-        """Both crank arms and all counterweights about the shaft [kg·m^2] (parallel axes)."""
+        """Crank arms and counterweights about the shaft, 2 (J_1 + m_1 r_1^2) + m_cw r_cw^2 [kg·m²] (parallel axes)."""
         m = self.masses
         return 2.0 * (m.crank_arm_inertia + m.crank_arm_mass * m.crank_arm_cg**2) + \
             m.counterweight_mass * m.counterweight_radius**2
 
     @property
     def constant_inertia(self) -> float:
-        """The constant part of the reduced inertia, I_0 + I_dr + m_pr r_pr^2 of seed 004 eq. 9 [kg·m^2]."""
+        """The constant part of the reduced inertia, I_0 + I_dr + m_pr r_pr^2 of [SK8Rotation2013] eq. 9 [kg·m²]."""
         return self.drive_inertia + self.crank_inertia
 
     @property
     def rated_crank_speed(self) -> float:
-        """omega_1 = omega_n / u [1/s] (:func:`.drive.rated_crank_speed`)."""
+        """Crank speed at the motor's rated speed, omega_1 = omega_n / u [1/s] (:func:`.drive.rated_crank_speed`)."""
         return rated_crank_speed(self.motor.rated_speed, self.drive_ratio)
 
     def drive_torque(self, omega: np.ndarray | float) -> np.ndarray | float:
-        """Motor torque reduced to the crank, (a + b u omega) u [N·m] (seed 004 eq. 26)."""
+        """Motor torque reduced to the crank, M_drive = (a + b u omega) u.
+
+        Parameters
+        ----------
+        omega : float or numpy.ndarray
+            Crank speed [1/s].
+
+        Returns
+        -------
+        float or numpy.ndarray
+            M_drive [N·m].
+
+        References
+        ----------
+        [SK8Rotation2013] eq. 26.
+        """
         return self.motor.torque(self.drive_ratio * omega) * self.drive_ratio
 
 
@@ -106,9 +185,24 @@ class Machine:
 class Coefficients:
     """The coefficients of the equation of motion at given crank angles (arrays).
 
-    inertia I [kg·m^2] and inertia_rate dI/dtheta [kg·m^2/rad]; gravity_torque
-    M_gravity, load_torque M_load = P TF [N·m]; rod_load P [N]; torque_factor TF [m];
-    upstroke mask; the four-bar motion.
+    Attributes
+    ----------
+    inertia : numpy.ndarray
+        Reduced moment of inertia I [kg·m²].
+    inertia_rate : numpy.ndarray
+        dI/dtheta [kg·m²/rad].
+    gravity_torque : numpy.ndarray
+        M_gravity = dV/dtheta [N·m].
+    load_torque : numpy.ndarray
+        M_load = P TF [N·m].
+    rod_load : numpy.ndarray
+        P [N].
+    torque_factor : numpy.ndarray
+        TF = A psi' [m] ([API11E]).
+    upstroke : numpy.ndarray
+        Boolean mask of the upstroke.
+    motion : Motion
+        The four-bar motion at these angles.
     """
 
     inertia: np.ndarray
@@ -122,7 +216,7 @@ class Coefficients:
 
 
 def _pitman_cg_derivatives(linkage: Linkage, masses: MassModel, m: Motion) -> tuple[np.ndarray, np.ndarray]:
-    """dS/dtheta and d2S/dtheta2 of the pitman's centre of mass S = (1 - f) A + f B, f = AS / P.
+    """dS/dtheta [m/rad] and d2S/dtheta2 [m/rad²] of the pitman's centre of mass S = (1 - f) A + f B, f = AS / P.
 
     A the crank pin and B the equalizer bearing, their derivatives from the mechanism
     (:meth:`~pumpjack_cli.core.beam.geometry.Linkage.pin_rates`). Shape (2, N) each [m/rad, m/rad^2].
@@ -134,14 +228,48 @@ def _pitman_cg_derivatives(linkage: Linkage, masses: MassModel, m: Motion) -> tu
 
 def reduced_inertia(linkage: Linkage, masses: MassModel, m: Motion, rod_mass: np.ndarray | float,
                     constant: float) -> tuple[np.ndarray, np.ndarray]:
-    """Reduced moment of inertia I(theta) [kg·m^2] and dI/dtheta (seed 004 eq. 9).
+    """Reduced moment of inertia I(theta) and dI/dtheta, from the kinetic energy T = I omega^2 / 2.
 
-    I = constant + 2 [m_2 |dS_2/dtheta|^2 + J_2 chi'^2] + I_C psi'^2 + m_rod (A psi')^2,
+        I = constant + 2 [m_2 |dS_2/dtheta|^2 + J_2 chi'^2] + I_C psi'^2 + m_rod (A psi')^2,
+
     with the two pitmans (mass m_2, centroidal inertia J_2, centre S_2), the beam group
     about the centre bearing I_C = J_beam + m_beam x_beam^2 + J_head + m_head x_head^2
-    + J_eq + m_eq C^2 (equalizer at D, turning with the beam), and rod_mass [kg] the
-    mass moving with the polished rod. constant [kg·m^2]: drive, crank arms and
-    counterweights. dI/dtheta differentiates each square: d(x^2)/dtheta = 2 x x'.
+    + J_eq + m_eq C^2 (equalizer at D, turning with the beam), and m_rod the mass moving
+    with the polished rod. dI/dtheta differentiates each square: d(x^2)/dtheta = 2 x x'.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    masses : MassModel
+        The moving links [kg, m, kg·m²].
+    m : Motion
+        The four-bar motion at the crank angles of interest.
+    rod_mass : float or numpy.ndarray
+        m_rod, mass moving with the polished rod [kg].
+    constant : float
+        Constant part: drive, crank arms and counterweights [kg·m²].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        I [kg·m²] and dI/dtheta [kg·m²/rad].
+
+    References
+    ----------
+    [SK8Rotation2013] eq. 9; [Artobolevsky1951] (reduction of masses).
+
+    Examples
+    --------
+    A mass alone on the polished rod counts m TF^2: 1000 kg on C-114D-133-54 at 90
+    degrees, where TF = 26.45 in = 0.672 m ([Guo2007]), gives about 451 kg·m².
+
+    >>> from pumpjack_cli.core.beam.linkage import motion
+    >>> inch = 0.0254
+    >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
+    >>> inertia, _ = reduced_inertia(c114, MassModel(*[0.0] * 18), motion(c114, np.radians([90.0])), 1000.0, 0.0)
+    >>> round(float(inertia[0]))
+    451
     """
     s1, s2 = _pitman_cg_derivatives(linkage, masses, m)
     beam = (masses.beam_inertia + masses.beam_mass * masses.beam_cg**2
@@ -156,12 +284,48 @@ def reduced_inertia(linkage: Linkage, masses: MassModel, m: Motion, rod_mass: np
 
 
 def gravity_torque(linkage: Linkage, masses: MassModel, m: Motion, gravity: float = STANDARD_GRAVITY) -> np.ndarray:
-    """M_gravity = dV/dtheta [N·m] of all links (seed 004 eq. 18).
+    """Gravity torque of all links reduced to the crank, M_gravity = dV/dtheta.
 
-    V = g [2 m_1 r_1 cos theta + m_cw r_cw cos(theta + phase) + 2 m_2 y_S2
-    + (m_beam x_beam + m_head x_head - m_eq C) sin psi]: crank arms and counterweights at
-    their radii (heights from the shaft), pitmans at their centres, the beam group on
-    the beam line (equalizer at D, a distance C behind the centre bearing).
+        V = g [2 m_1 r_1 cos theta + m_cw r_cw cos(theta + phase) + 2 m_2 y_S2
+               + (m_beam x_beam + m_head x_head - m_eq C) sin psi]:
+
+    crank arms and counterweights at their radii (heights from the shaft), pitmans at
+    their centres, the beam group on the beam line (equalizer at D, a distance C behind
+    the centre bearing).
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    masses : MassModel
+        The moving links [kg, m, rad].
+    m : Motion
+        The four-bar motion at the crank angles of interest.
+    gravity : float
+        g [m/s²] ([BIPM2019]).
+
+    Returns
+    -------
+    numpy.ndarray
+        M_gravity [N·m], the torque the weights resist the crank with.
+
+    References
+    ----------
+    [SK8Rotation2013] eq. 18.
+
+    Examples
+    --------
+    SK8-3,5-4000 crank arms (2 x 1373 kg at 0.45 m) and counterweights (5200 kg at
+    0.83 m) of [SK8Rotation2013], crank at 3 o'clock: dV/dtheta = -g (2 m_1 r_1 + m_cw r_cw)
+    = -9.80665 x 5551.7 = -54 443.6 N·m.
+
+    >>> import dataclasses
+    >>> from pumpjack_cli.core.beam.linkage import motion
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> masses = dataclasses.replace(MassModel(*[0.0] * 18), crank_arm_mass=1373.0, crank_arm_cg=0.45,
+    ...                              counterweight_mass=5200.0, counterweight_radius=0.83)
+    >>> round(float(gravity_torque(sk8, masses, motion(sk8, np.radians([90.0])))[0]), 1)
+    -54443.6
     """
     theta = m.crank_angle
     s1, _ = _pitman_cg_derivatives(linkage, masses, m)
@@ -176,7 +340,30 @@ def gravity_torque(linkage: Linkage, masses: MassModel, m: Motion, gravity: floa
 
 
 def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray) -> Coefficients:
-    """All coefficients of the equation of motion at the given crank angles [rad], one array pass."""
+    """All coefficients of the equation of motion at the given crank angles, one array pass.
+
+    I and dI/dtheta (:func:`reduced_inertia`, with the rod load's mass of the stroke),
+    M_gravity (:func:`gravity_torque`), P from the rod-load model, TF = A psi' and
+    M_load = P TF.
+
+    Parameters
+    ----------
+    machine : Machine
+        The unit, its drive and its rod load (SI).
+    crank_angle : numpy.ndarray
+        theta [rad].
+    upstroke : numpy.ndarray
+        Boolean mask of the points on the upstroke.
+
+    Returns
+    -------
+    Coefficients
+        I [kg·m²], dI/dtheta [kg·m²/rad], torques [N·m], P [N], TF [m].
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 9, 18-23; [API11E] (torque factor).
+    """
     theta = np.asarray(crank_angle, dtype=float)
     up = np.asarray(upstroke, dtype=bool)
     m = machine.linkage.motion(theta)
@@ -198,7 +385,34 @@ def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray
 
 
 def mean_rod_speeds(linkage: Linkage, omega: float) -> tuple[float, float]:
-    """Mean polished-rod speeds [m/s] of the upstroke and the downstroke at uniform crank speed omega [1/s]:
-    stroke / time of the stroke, the time being the stroke's crank travel / omega."""
+    """Mean polished-rod speeds of the upstroke and the downstroke at uniform crank speed.
+
+    v = S / t, with t = (crank travel of the stroke) / omega.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    tuple of float
+        Upstroke and downstroke mean speeds [m/s].
+
+    References
+    ----------
+    [SK8Rotation2013] ("v_cp, mean velocity").
+
+    Examples
+    --------
+    The two strokes take one revolution together, S/v_up + S/v_down = 2 pi / omega:
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> up, down = mean_rod_speeds(sk8, 1.0)
+    >>> round(sk8.stroke / up + sk8.stroke / down, 12) == round(2 * np.pi, 12)
+    True
+    """
     dead = linkage.dead_positions()
     return dead.stroke * omega / dead.upstroke_crank_travel, dead.stroke * omega / dead.downstroke_crank_travel

@@ -55,8 +55,19 @@ class _Stroke:
 
 @dataclass(frozen=True)
 class Convergence:
-    """How the shooting went: start speeds tried [1/s] and their residuals
-    omega_end - omega_start [1/s], integrator tolerances and right-hand-side evaluations."""
+    """How the shooting went.
+
+    Attributes
+    ----------
+    start_speeds : tuple of float
+        Start speeds omega_0 tried [1/s].
+    residuals : tuple of float
+        Their residuals omega_end - omega_0 [1/s].
+    rtol : float
+        Relative tolerance of the integration and of the periodicity (dimensionless).
+    evaluations : int
+        Right-hand-side evaluations of the integrator.
+    """
 
     start_speeds: tuple[float, ...]
     residuals: tuple[float, ...]
@@ -65,17 +76,58 @@ class Convergence:
 
     @property
     def iterations(self) -> int:
+        """Number of shots (start speeds tried)."""
         return len(self.start_speeds)
 
     @property
     def periodicity_error(self) -> float:
-        """|omega_end - omega_start| / omega_start of the accepted solution."""
+        """|omega_end - omega_start| / omega_start of the accepted solution (dimensionless)."""
         return abs(self.residuals[-1]) / self.start_speeds[-1]
 
 
 @dataclass(frozen=True)
 class DynamicsSummary:
-    """Scalar results of the periodic solution (SI, angles in rad)."""
+    """Scalar results of the periodic solution.
+
+    Attributes
+    ----------
+    start_speed : float
+        omega_1 at the start of the upstroke [1/s].
+    mean_speed : float
+        2 pi / period [1/s].
+    max_speed, min_speed : Extreme
+        omega_1 [1/s] at crank angle [rad].
+    speed_fluctuation : float
+        delta = (omega_max - omega_min) / omega_mean (dimensionless).
+    max_acceleration, min_acceleration : Extreme
+        epsilon_1 [1/s²] at [rad].
+    max_motor_torque, min_motor_torque : Extreme
+        At the motor shaft [N·m] at [rad].
+    max_power, min_power : Extreme
+        Motor power [W] at [rad].
+    period : float
+        Cycle time [s].
+    energy_per_cycle : float
+        Motor energy per cycle [J].
+    rod_work_per_cycle : float
+        Cycle work of M_load + M_gravity [J].
+    rated_crank_speed : float
+        omega_n / u [1/s].
+    constant_inertia : float
+        Constant part of the reduced inertia [kg·m²].
+    peak_static_torque : Extreme
+        Largest M_load + M_gravity [N·m] at [rad].
+    starting_torque : float
+        Motor starting torque reduced to the crank [N·m].
+    breakdown_torque_margin : float
+        Pull-out torque / peak motor torque (dimensionless).
+    convergence : Convergence
+        The shooting record.
+
+    References
+    ----------
+    [SK8Rotation2013].
+    """
 
     start_speed: float
     mean_speed: float
@@ -100,21 +152,41 @@ class DynamicsSummary:
 
     @property
     def mean_power(self) -> float:
-        """Mean motor power over the cycle [W]: energy per cycle / cycle time."""
+        """Mean motor power over the cycle, energy per cycle / cycle time [W]."""
         return self.energy_per_cycle / self.period
 
 
 @dataclass(frozen=True)
 class SteadyState:
-    """Per-crank-angle periodic motion of the unit (SI, arrays on ``crank_angle``).
+    """Per-crank-angle periodic motion of the unit (arrays on ``crank_angle``).
 
-    time from crank angle 0; omega, epsilon: crank speed [1/s] and acceleration
-    [1/s^2]; motor_speed [rad/s], motor_torque [N·m], power [W] at the motor shaft;
-    load_torque M_load and gravity_torque M_gravity [N·m]; inertia_torque
-    I epsilon + 1/2 I' omega^2 [N·m], the torque spent on accelerating the moving
-    masses (the d'Alembert inertia moment on the crank shaft is its negative);
-    constant_inertia_torque I_const epsilon (seed 004's M_i1); rod: polished-rod motion
-    with this rotation, rod_uniform: with uniform rotation at the rated crank speed.
+    Attributes
+    ----------
+    crank_angle : numpy.ndarray
+        theta [rad].
+    time : numpy.ndarray
+        From crank angle 0 [s].
+    omega, epsilon : numpy.ndarray
+        Crank speed [1/s] and acceleration [1/s²].
+    motor_speed, motor_torque, power : numpy.ndarray
+        At the motor shaft [rad/s], [N·m], [W].
+    rod_load : numpy.ndarray
+        P [N].
+    load_torque, gravity_torque : numpy.ndarray
+        M_load, M_gravity [N·m].
+    reduced_inertia, reduced_inertia_rate : numpy.ndarray
+        I [kg·m²], dI/dtheta [kg·m²/rad].
+    inertia_torque : numpy.ndarray
+        I epsilon + 1/2 I' omega^2 [N·m], the torque spent on accelerating the moving
+        masses (the d'Alembert inertia moment on the crank shaft is its negative).
+    constant_inertia_torque : numpy.ndarray
+        I_const epsilon [N·m] (M_i1 of [SK8Rotation2013]).
+    rod : RodMotion
+        Polished-rod motion with this rotation [m, m/s, m/s²].
+    rod_uniform : RodMotion
+        The same with uniform rotation at the rated crank speed.
+    summary : DynamicsSummary
+        Extremes, energies and the motor checks.
     """
 
     crank_angle: np.ndarray
@@ -261,12 +333,43 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
                  max_iterations: int = MAX_ITERATIONS) -> SteadyState:
     """The periodic motion of the unit under its motor, load and weights.
 
-    crank_angle [rad]: where to report (default 360 steps from 0); rtol: relative
-    tolerance of the integration and of the periodicity |omega_end - omega_0| <= rtol
-    omega_0. Raises :class:`~pumpjack_cli.errors.DynamicsError` for a non-positive
-    reduced inertia, a load the motor cannot carry (stall, or a torque beyond its
-    pull-out torque), a load that takes energy out of the unit over a cycle, or a
-    shooting that does not converge in ``max_iterations``.
+    Integrates, over the upstroke and then the downstroke,
+
+        d(omega)/dtheta = (M_drive - M_load - M_gravity - 1/2 omega^2 I') / (I omega),
+        dt/dtheta = 1/omega,
+
+    and finds the start speed omega_0 with omega_end = omega_0 by secant iteration from
+    the mean speed of the energy balance, <omega>_theta = (E / 2 pi - a u) / (b u^2).
+
+    Parameters
+    ----------
+    machine : Machine
+        The unit, its drive and its rod load (SI).
+    crank_angle : numpy.ndarray, optional
+        Where to report [rad] (default 360 steps from 0).
+    rtol : float
+        Relative tolerance of the integration and of the periodicity
+        |omega_end - omega_0| <= rtol omega_0 (dimensionless), 1e-13 to 1e-3.
+    max_iterations : int
+        Bound on the secant iterations.
+
+    Returns
+    -------
+    SteadyState
+        The periodic motion [rad, s, 1/s, 1/s², N·m, W, kg·m²] and its summary.
+
+    Raises
+    ------
+    DynamicsError
+        ``rtol`` out of range, a non-positive reduced inertia, a load the motor cannot
+        carry (stall, or a torque beyond its pull-out torque), a load that takes energy
+        out of the unit over a cycle, or a shooting that does not converge in
+        ``max_iterations``.
+
+    References
+    ----------
+    [SK8Rotation2013] eqs. 1, 27 and 29 (the equation of motion and its periodic
+    solution); [Artobolevsky1951].
     """
     if not 1e-13 <= rtol <= 1e-3:
         raise DynamicsError(f"rtol {rtol:g} is outside 1e-13 .. 1e-3")

@@ -1,7 +1,7 @@
 """Slider-crank (reciprocating pump) motion: exact, textbook approximations, and their errors.
 
 Mechanism: crank O-A of radius r turning at uniform angular velocity omega, connecting
-rod A-B of length l (seed 001: l2), slider B on a straight line of stroke at distance e
+rod A-B of length l ([InertiaUNB600A]: l2), slider B on a straight line of stroke at distance e
 (the offset; e = 0 for a centric mechanism) from the crank shaft O.
 
 Frame (used for every function here): x along the line of stroke from O towards the
@@ -14,19 +14,19 @@ Exact slider position (loop closure A + (B - A) = B with |B - A| = l):
 
     x = r cos phi + sqrt(l^2 - (r sin phi - e)^2)
 
-(seed 001 eq. 1, its ref. [3], is the case e = 0). Velocity and
+([InertiaUNB600A] eq. 1, its ref. 3, is the case e = 0). Velocity and
 acceleration are its first two time derivatives at uniform rotation; the inertia force
 of the reciprocating mass m (piston, rod and crosshead) is Phi = -m a (d'Alembert),
-positive away from the crank: Phi = m r omega^2 (1 + lambda) at phi = 0 (seed eq. 2).
+positive away from the crank: Phi = m r omega^2 (1 + lambda) at phi = 0 ([InertiaUNB600A] eq. 2).
 
 Approximate laws (centric mechanism, lambda = r/l), all of the form
 a = -r omega^2 [cos phi + sum_j c_j cos 2j phi]:
 
-* ``harmonic``: c = 0, the sinusoidal law (seed 001 eq. 3, Phi_c = m r omega^2);
+* ``harmonic``: c = 0, the sinusoidal law ([InertiaUNB600A] eq. 3, Phi_c = m r omega^2);
 * ``two_term``: c_1 = lambda, the first approximation of the trigonometric series
-  (seed 001 eq. 4, Phi_1 = m r omega^2 (1 + lambda));
+  ([InertiaUNB600A] eq. 4, Phi_1 = m r omega^2 (1 + lambda));
 * ``series4``, ``series6``: the next terms of the same series, harmonics up to 4 phi and
-  6 phi (see :func:`series_coefficients`).
+  6 phi (see :func:`series_coefficients`; [NPTEL112101096]).
 
 For an offset mechanism the approximate laws are the centric ones with the same r and l
 (what the textbook formulas give); their error then includes the neglected offset.
@@ -46,8 +46,17 @@ from .geometry import DeadCentres, SliderCrank, check_slider_crank, dead_centres
 
 @dataclass(frozen=True)
 class SliderMotion:
-    """Slider position x [m] from the crank shaft along the line of stroke, velocity
-    [m/s] and acceleration [m/s^2] (positive away from the crank)."""
+    """Slider motion along the line of stroke, positive away from the crank.
+
+    Attributes
+    ----------
+    position : numpy.ndarray
+        x, from the crank shaft [m].
+    velocity : numpy.ndarray
+        [m/s].
+    acceleration : numpy.ndarray
+        [m/s²].
+    """
 
     position: np.ndarray
     velocity: np.ndarray
@@ -55,15 +64,46 @@ class SliderMotion:
 
 
 def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> SliderMotion:
-    """Exact slider motion for uniform crank rotation at ``omega`` [1/s].
+    """Exact slider motion for uniform crank rotation.
 
     With u = r sin phi - e, u' = r cos phi, q = sqrt(l^2 - u^2):
-    x = r cos phi + q; dx/dphi = -r sin phi - u u'/q;
-    d2x/dphi2 = -r cos phi - (u'^2 - u r sin phi)/q - u^2 u'^2/q^3;
+
+        x = r cos phi + q,  dx/dphi = -r sin phi - u u'/q,
+        d2x/dphi2 = -r cos phi - (u'^2 - u r sin phi)/q - u^2 u'^2/q^3,
+
     v = omega dx/dphi, a = omega^2 d2x/dphi2 (chain rule, uniform rotation).
     For e = 0 this is the classical exact acceleration
-    a = -r omega^2 [cos phi + lambda cos 2phi / s + lambda^3 sin^2 2phi / (4 s^3)],
-    s = sqrt(1 - lambda^2 sin^2 phi) (seed 001 eq. 1).
+
+        a = -r omega^2 [cos phi + lambda cos 2phi / s + lambda^3 sin^2 2phi / (4 s^3)],
+        s = sqrt(1 - lambda^2 sin^2 phi).
+
+    Parameters
+    ----------
+    mechanism : SliderCrank
+        r, l, e [m].
+    crank_angle : numpy.ndarray
+        phi [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    SliderMotion
+        x [m], v [m/s], a [m/s²].
+
+    Raises
+    ------
+    GeometryError
+        The crank cannot turn.
+
+    References
+    ----------
+    [InertiaUNB600A] eq. 1 (e = 0).
+
+    Examples
+    --------
+    UNB-600A ([InertiaUNB600A], r = 0.2 m, l = 1.19 m) at omega = 1 1/s: at the dead centres
+    a = -r omega^2 (1 + r/l) = -0.233613 and r omega^2 (1 - r/l) = 0.166387 m/s².
 
     >>> m = exact_motion(SliderCrank(0.2, 1.19), np.array([0.0, np.pi]), 1.0)
     >>> [round(v, 6) for v in m.acceleration.tolist()]   # -r(1 + r/l), r(1 - r/l)
@@ -84,18 +124,63 @@ def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) 
 
 
 def travel_from_outer_dead_centre(mechanism: SliderCrank, crank_angle: np.ndarray) -> np.ndarray:
-    """Slider travel s [m] from the outer dead centre towards the crank: s = x_outer - x(phi)."""
+    """Slider travel from the outer dead centre towards the crank, s = x_outer - x(phi).
+
+    Parameters
+    ----------
+    mechanism : SliderCrank
+        r, l, e [m].
+    crank_angle : numpy.ndarray
+        phi [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        s [m].
+
+    Examples
+    --------
+    A centric drive travels the whole stroke 2r from phi = 0 to phi = pi:
+
+    >>> travel_from_outer_dead_centre(SliderCrank(0.2, 1.19), np.array([0.0, np.pi])).round(12).tolist()
+    [0.0, 0.4]
+    """
     return dead_centres(mechanism).position_outer - exact_motion(mechanism, crank_angle, 1.0).position
 
 
 def inertia_force(mass: float, acceleration):
-    """d'Alembert inertia force Phi = -m a [N] of a mass m [kg] with acceleration a [m/s^2]
-    ([InertiaUNB600A] eq. 1), positive along the axis of the acceleration."""
+    """d'Alembert inertia force Phi = -m a, positive along the axis of the acceleration.
+
+    Parameters
+    ----------
+    mass : float
+        m [kg].
+    acceleration : float or numpy.ndarray
+        a [m/s²].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Phi [N].
+
+    References
+    ----------
+    [InertiaUNB600A] eqs. 1-2.
+
+    Examples
+    --------
+    The largest force of [InertiaUNB600A] eq. 2, Phi_max = m omega^2 (r + r^2/l2), for UNB-600A with
+    the estimated 240 kg at 65 rpm (omega = 6.8068 1/s): 240 x 46.332 x 0.233613 = 2597.7 N.
+
+    >>> omega = 65 * np.pi / 30
+    >>> round(float(inertia_force(240.0, -omega**2 * (0.2 + 0.2**2 / 1.19))), 1)
+    2597.7
+    """
     return -mass * acceleration
 
 
 def series_coefficients(crank_ratio: float, terms: int) -> np.ndarray:
-    """Coefficients c_1..c_terms of a = -r omega^2 [cos phi + sum_j c_j cos 2j phi].
+    """Coefficients c_1..c_terms of the even-harmonic series a = -r omega^2 [cos phi + sum_j c_j cos 2j phi].
 
     The series comes from expanding the radical of the exact position,
     l sqrt(1 - lambda^2 sin^2 phi) = l sum_k binom(1/2, k) (-lambda^2 sin^2 phi)^k,
@@ -106,12 +191,30 @@ def series_coefficients(crank_ratio: float, terms: int) -> np.ndarray:
         c_j = (2j)^2 (-1)^(k+j) 2 binom(1/2, k) binom(2k, k - j) lambda^(2k-1) / 4^k,
 
     summed over k = j..terms. ``terms`` = 1 is the first approximation c_1 = lambda
-    (seed 001 eq. 4); ``terms`` = 3 gives the textbook harmonic coefficients
+    ([InertiaUNB600A] eq. 4); ``terms`` = 3 gives the textbook harmonic coefficients
     A2 = lambda + lambda^3/4 + 15 lambda^5/128, A4 = lambda^3/4 + 3 lambda^5/16,
     A6 = 9 lambda^5/128 as c = (A2, -A4, A6) (the standard even-harmonic series of the
-    reciprocating mass, e.g. NPTEL course 112101096, Dynamics of Machines, module 4
-    lecture 1, which derives the first term and notes the higher harmonics).
+    reciprocating mass, e.g. [NPTEL112101096], module 4 lecture 1, which derives the
+    first term and notes the higher harmonics).
 
+    Parameters
+    ----------
+    crank_ratio : float
+        lambda = r / l (dimensionless).
+    terms : int
+        Number of terms k of the binomial series kept.
+
+    Returns
+    -------
+    numpy.ndarray
+        c_1 .. c_terms (dimensionless).
+
+    References
+    ----------
+    [InertiaUNB600A] eq. 4; [NPTEL112101096].
+
+    Examples
+    --------
     >>> series_coefficients(0.5, 2).tolist()   # A2 = 0.5 + 0.125/4, -A4 = -0.125/4
     [0.53125, -0.03125]
     """
@@ -128,16 +231,55 @@ LAW_TERMS: dict[str, int] = {"harmonic": 0, "two_term": 1, "series4": 2, "series
 
 
 def law_methods() -> tuple[str, ...]:
-    """Names of the approximate slider laws, simplest first."""
+    """Names of the approximate slider laws, simplest first.
+
+    Returns
+    -------
+    tuple of str
+        ``harmonic`` ([InertiaUNB600A] eq. 3), ``two_term`` (eq. 4), ``series4``, ``series6``.
+
+    Examples
+    --------
+    >>> law_methods()
+    ('harmonic', 'two_term', 'series4', 'series6')
+    """
     return tuple(LAW_TERMS)
 
 
 def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> np.ndarray:
-    """Slider acceleration [m/s^2] by an approximate law of :func:`law_methods`.
+    """Slider acceleration by an approximate law of :func:`law_methods`.
 
-    a = -r omega^2 [cos phi + sum_j c_j cos 2j phi] with c from
-    :func:`series_coefficients` (no terms: the sinusoidal law, seed 001 eq. 3).
+        a = -r omega^2 [cos phi + sum_j c_j cos 2j phi]
 
+    with c from :func:`series_coefficients` (no terms: the sinusoidal law).
+
+    Parameters
+    ----------
+    method : str
+        A name of :func:`law_methods`.
+    mechanism : SliderCrank
+        r, l [m] (the offset is ignored: the laws are those of the centric drive).
+    crank_angle : numpy.ndarray
+        phi [rad].
+    omega : float
+        Crank speed [1/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        a [m/s²].
+
+    Raises
+    ------
+    ValueError
+        Unknown ``method``.
+
+    References
+    ----------
+    [InertiaUNB600A] eqs. 3-4; [NPTEL112101096].
+
+    Examples
+    --------
     >>> a = approximate_acceleration("two_term", SliderCrank(0.2, 1.0), np.array([0.0, np.pi]), 1.0)
     >>> [round(v, 12) for v in a.tolist()]   # -r (1 + lambda), r (1 - lambda)
     [-0.24, 0.16]
@@ -155,15 +297,28 @@ def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: n
 class LawError:
     """Error of an approximate acceleration (or inertia-force) law against the exact one.
 
-    All errors are fractions (printed in %). With P = max |a| over the cycle:
+    All errors are dimensionless fractions (printed in %); P = max |a| over the cycle.
 
-    * ``peak_error`` = |1 - P_law / P_exact|, the seed 001 definition
-      delta = 100 |1 - Phi_approx,max / Phi_exact,max|;
-    * ``peak_error_of_law`` = |1 - P_exact / P_law|, the same difference as a share of
-      the approximate peak;
-    * ``max_deviation`` = max |a_law - a| / P_exact over the cycle;
-    * ``rms_deviation`` = rms(a_law - a) / rms(a) over the cycle (uniform rotation, so
-      the mean over equal crank steps is the time mean).
+    Attributes
+    ----------
+    peak : float
+        P_law [m/s²].
+    peak_crank_angle : float
+        Where the law peaks [rad].
+    peak_error : float
+        |1 - P_law / P_exact|, the definition of [InertiaUNB600A],
+        delta = 100 |1 - Phi_approx,max / Phi_exact,max|.
+    peak_error_of_law : float
+        |1 - P_exact / P_law|, the same difference as a share of the approximate peak.
+    max_deviation : float
+        max |a_law - a| / P_exact over the cycle.
+    rms_deviation : float
+        rms(a_law - a) / rms(a) over the cycle (uniform rotation, so the mean over equal
+        crank steps is the time mean).
+
+    References
+    ----------
+    [InertiaUNB600A] (the error delta at the maximum).
     """
 
     peak: float
@@ -178,6 +333,29 @@ def law_errors(crank_angle: np.ndarray, exact: np.ndarray, laws: Mapping[str, np
     """:class:`LawError` of each law, from samples over one uniform revolution.
 
     Inertia forces are -m times the accelerations, so the errors are the same for both.
+
+    Parameters
+    ----------
+    crank_angle : numpy.ndarray
+        Uniform grid over one revolution [rad].
+    exact : numpy.ndarray
+        Exact acceleration on it [m/s²] (or any quantity proportional to it).
+    laws : mapping of str to numpy.ndarray
+        Each law's acceleration on the same grid [m/s²].
+
+    Returns
+    -------
+    dict of str to LawError
+        Dimensionless errors and the law's peak [m/s²] at [rad].
+
+    Examples
+    --------
+    A law that is 10 % low everywhere: 10 % at the peak, 1/0.9 - 1 of its own peak.
+
+    >>> theta = np.linspace(0.0, 2 * np.pi, 8, endpoint=False)
+    >>> e = law_errors(theta, np.cos(theta), {"low": 0.9 * np.cos(theta)})["low"]
+    >>> round(e.peak_error, 12), round(e.peak_error_of_law, 6), round(e.rms_deviation, 12)
+    (0.1, 0.111111, 0.1)
     """
     exact_peak = largest_magnitude(crank_angle, exact).value
     exact_rms = np.sqrt(np.mean(exact**2))
@@ -203,9 +381,23 @@ class InertiaComparison:
     ``position`` is measured from the reference dead position (slider: inner dead
     centre, away from the crank positive; beam unit: bottom of the stroke, up positive);
     velocity and acceleration are along the same axis, so the inertia force is
-    Phi = -m a. ``laws`` holds the acceleration of each approximate law [m/s^2] on the
-    output grid; ``errors`` and the exact peak come from a fixed dense grid of
+    Phi = -m a. ``errors`` and the exact peak come from a fixed dense grid of
     :data:`DENSE_STEPS` crank positions, so they do not depend on the output resolution.
+
+    Attributes
+    ----------
+    crank_angle : numpy.ndarray
+        Output grid [rad].
+    position, velocity, acceleration : numpy.ndarray
+        Exact motion [m, m/s, m/s²].
+    laws : dict of str to numpy.ndarray
+        Acceleration of each approximate law on the output grid [m/s²].
+    stroke : float
+        [m].
+    peak, peak_crank_angle : float
+        Exact max |a| [m/s²] and where [rad].
+    errors : dict of str to LawError
+        Per law (dimensionless).
     """
 
     crank_angle: np.ndarray
@@ -225,12 +417,40 @@ DENSE_STEPS = 7200
 
 
 def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
-    """Exact slider motion and every approximate law on ``crank_angle`` [rad], for
-    uniform rotation at ``omega`` [1/s]; peaks and errors on the dense grid.
+    """Exact slider motion and every approximate law, with their errors, for uniform rotation.
 
-    Position is x - x_inner [m], from the inner dead centre, away from the crank
-    positive, so at phi = 0 the inertia force -m a is seed 001's
-    Phi_max = m omega^2 (r + r^2/l2) (eq. 2).
+    Position is x - x_inner, from the inner dead centre, away from the crank positive,
+    so at phi = 0 the inertia force -m a is Phi_max = m omega^2 (r + r^2/l2)
+    ([InertiaUNB600A] eq. 2). Peaks and errors are taken on the dense grid.
+
+    Parameters
+    ----------
+    mechanism : SliderCrank
+        r, l, e [m].
+    omega : float
+        Crank speed [1/s], positive.
+    crank_angle : numpy.ndarray
+        Output grid [rad].
+
+    Returns
+    -------
+    InertiaComparison
+        Exact motion [m, m/s, m/s²], each law's acceleration [m/s²], errors
+        (dimensionless).
+
+    Raises
+    ------
+    ValueError
+        ``omega`` is not positive.
+
+    References
+    ----------
+    [InertiaUNB600A] eqs. 1-4.
+
+    Examples
+    --------
+    For lambda = 0.2 the exact peak is r omega^2 (1 + lambda) and the sinusoidal law
+    misses it by lambda / (1 + lambda):
 
     >>> c = slider_inertia_laws(SliderCrank(0.2, 1.0), 1.0, crank_grid(4))
     >>> round(c.peak, 12), round(c.errors["harmonic"].peak_error, 12)   # r(1 + lambda), lambda/(1 + lambda)

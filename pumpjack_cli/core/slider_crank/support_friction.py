@@ -1,6 +1,6 @@
-"""Friction in a prismatic pair loaded by redundant supports of a stepped slider (seed 001, part 2).
+"""Friction in a prismatic pair loaded by redundant supports of a stepped slider ([InertiaUNB600A], part 2).
 
-Model (our reading of seed 001, figs. 1-4; the printed equations are lost in the
+Model (our reading of [InertiaUNB600A], figs. 1-4; the printed equations are lost in the
 extracted text, so they are re-derived here with the force method):
 
 * The reciprocating link (piston, rod, extension rod, crosshead) is a straight beam of
@@ -8,22 +8,22 @@ extracted text, so they are re-derived here with the force method):
   z runs along the link from A (z = 0) to B (z = L = sum l_i).
 * End A is clamped: deflection and slope zero; its guide defines the reference axis.
 * At end B the link sits in a guide of length l_n whose axis has settled by Delta_B and
-  turned by theta_B relative to A's axis (seed: "support B has shifted relative to A by
+  turned by theta_B relative to A's axis ([InertiaUNB600A]: "support B has shifted relative to A by
   Delta_B and its line of symmetry has turned by theta_B"). The guide imposes
   w(L) = Delta_B + theta_B s and w'(L) = theta_B, where s is the travel of the link
   along the guide from the reference position (a turned guide is a sloping line, so
   the height under B changes as B slides along it). The guide's reactions are a force
   R_B and a moment M_B at B, or two edge forces R' (outer edge, z = L + l_n/2) and R''
   (inner edge, z = L - l_n/2) with R' + R'' = R_B, (R' - R'') l_n/2 = M_B:
-  R' = R_B/2 + M_B/l_n, R'' = R_B/2 - M_B/l_n (seed 001, text after fig. 2).
+  R' = R_B/2 + M_B/l_n, R'' = R_B/2 - M_B/l_n ([InertiaUNB600A], text after fig. 2).
 * Optionally an intermediate support C fixed to the frame (a seal or gland on the rod)
-  at height delta_C off A's axis (seed fig. 4: "not on one level"), touching the link at
+  at height delta_C off A's axis ([InertiaUNB600A] fig. 4: "not on one level"), touching the link at
   z_C = z_C0 - s, so it moves along the link as the link travels; it gives a force Y_C.
-* Friction in the guide B: F = f (|R'| + |R''|) (seed 001, formula after fig. 2); at C
-  f |Y_C|. Weights are neglected and contacts have no clearance (seed's assumptions).
+* Friction in the guide B: F = f (|R'| + |R''|) ([InertiaUNB600A], formula after fig. 2); at C
+  f |Y_C|. Weights are neglected and contacts have no clearance (the paper's assumptions).
 
 Stepped sections are reduced to an equivalent beam of constant section J_0 with the
-coefficients alpha_i = J_i / J_0 (seed 001, after fig. 3): in every flexibility integral
+coefficients alpha_i = J_i / J_0 ([InertiaUNB600A], after fig. 3): in every flexibility integral
 dz / (E J_i) = dz / (E J_0 alpha_i). The unknowns R_B, M_B, Y_C follow from the
 compatibility conditions of the force method (Maxwell-Mohr):
 
@@ -31,9 +31,9 @@ compatibility conditions of the force method (Maxwell-Mohr):
 
 with the primary system the cantilever clamped at A and m_i the bending moment of a
 unit redundant: a unit force at z = a gives m(z) = a - z for z < a (0 beyond), a unit
-moment at B gives m(z) = 1. (Force method: e.g. NPTEL course 105101085, Structural
-Analysis, IIT Kharagpur, module 5 "Force method"; Okonkwo, Structural Analysis,
-LibreTexts, ch. 10 "Force method of analysis of indeterminate structures".)
+moment at B gives m(z) = 1. (Force method: e.g. [NPTEL105101085], module 5 "Force
+method"; [OkonkwoLibreTexts], ch. 10 "Force method of analysis of indeterminate
+structures".)
 Sign convention: w up, moments counterclockwise, forces up on the link.
 """
 
@@ -46,11 +46,27 @@ import numpy as np
 
 
 def reduction_coefficients(second_moments: np.ndarray) -> np.ndarray:
-    """alpha_i = J_i / J_0 (seed 001), with J_0 the smallest section.
+    """Reduction coefficients alpha_i = J_i / J_0 of a stepped beam, J_0 the smallest section.
 
-    The seed takes J_0 = J_2, the piston rod, which is the smallest section of its
-    slider; any choice gives the same reactions, since E J_0 alpha_i = E J_i.
+    [InertiaUNB600A] takes J_0 = J_2, the piston rod, which is the smallest section of its slider;
+    any choice gives the same reactions, since E J_0 alpha_i = E J_i.
 
+    Parameters
+    ----------
+    second_moments : numpy.ndarray
+        J_i of the sections [m⁴].
+
+    Returns
+    -------
+    numpy.ndarray
+        alpha_i (dimensionless).
+
+    References
+    ----------
+    [InertiaUNB600A] (after fig. 3).
+
+    Examples
+    --------
     >>> reduction_coefficients(np.array([4.0, 1.0, 2.0])).tolist()
     [4.0, 1.0, 2.0]
     """
@@ -78,9 +94,31 @@ def flexibility_matrix(lengths: np.ndarray, second_moments: np.ndarray, elastic_
     d_Lc = int_0^c (L - z)(c - z), d_Mc = int_0^c (c - z), d_cc = int_0^c (c - z)^2;
     symmetric by Maxwell's reciprocity.
 
-    Parameters: section lengths [m] and second moments of area [m^4] from A, Young's
-    modulus [Pa], support positions c [m] from A (array of N) or None.
-    Returns shape (2, 2) without a support, (N, 3, 3) with one [m/N, 1/N, rad/(N m)].
+    Parameters
+    ----------
+    lengths : numpy.ndarray
+        Section lengths l_i from A [m].
+    second_moments : numpy.ndarray
+        Section second moments of area J_i [m⁴].
+    elastic_modulus : float
+        E [Pa].
+    support_position : numpy.ndarray, optional
+        Intermediate support positions c from A, (N,) [m], or None.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (2, 2) without a support, (N, 3, 3) with one; entries [m/N] (deflection
+        per force), [1/N] (slope per force = deflection per moment), [1/(N·m)] (slope
+        per moment).
+
+    References
+    ----------
+    [NPTEL105101085], module 5 (force method); [InertiaUNB600A] (reduction coefficients).
+
+    Examples
+    --------
+    A uniform cantilever of length L = 2 m with EI = 1 N·m²: L³/3EI, L²/2EI, L/EI.
 
     >>> flexibility_matrix([2.0], [1.0], 1.0).tolist()   # cantilever: L^3/3, L^2/2, L
     [[2.6666666666666665, 2.0], [2.0, 2.0]]
@@ -110,10 +148,23 @@ def flexibility_matrix(lengths: np.ndarray, second_moments: np.ndarray, elastic_
 
 @dataclass(frozen=True)
 class SupportReactions:
-    """Reactions on the link, per link position: guide B force [N] and moment [N·m],
-    edge forces R' (outer edge) and R'' (inner edge) [N], intermediate support force
-    Y_C [N] (zero without one), and the friction forces [N] in the guide B, at C, and
-    their sum."""
+    """Reactions of the redundant supports on the link, per link position.
+
+    Attributes
+    ----------
+    force, moment : numpy.ndarray
+        R_B [N] and M_B [N·m] of guide B.
+    outer_edge, inner_edge : numpy.ndarray
+        Edge forces R' (outer edge) and R'' (inner edge) [N].
+    intermediate : numpy.ndarray
+        Y_C [N] (zero without an intermediate support).
+    guide_friction, intermediate_friction, total_friction : numpy.ndarray
+        Friction in guide B, at C, and their sum [N].
+
+    References
+    ----------
+    [InertiaUNB600A] (part 2).
+    """
 
     force: np.ndarray
     moment: np.ndarray
@@ -126,11 +177,33 @@ class SupportReactions:
 
 
 def guide_edge_reactions(force: np.ndarray, moment: np.ndarray, guide_length: float) -> tuple[np.ndarray, np.ndarray]:
-    """R' = R_B/2 + M_B/l_n, R'' = R_B/2 - M_B/l_n [N] (seed 001, after fig. 2).
+    """Edge forces of a guide of length l_n carrying R_B and M_B, R' = R_B/2 + M_B/l_n, R'' = R_B/2 - M_B/l_n.
 
     Same sign when |M_B| <= R_B l_n / 2; otherwise opposite, and the friction
     f(|R'| + |R''|) = 2 f |M_B| / l_n exceeds f |R_B| by the factor 2 |M_B| / (l_n |R_B|)
-    (the seed's remark).
+    (the remark of [InertiaUNB600A]).
+
+    Parameters
+    ----------
+    force : numpy.ndarray
+        R_B [N].
+    moment : numpy.ndarray
+        M_B [N·m].
+    guide_length : float
+        l_n, distance between the edge contacts [m].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        R' (outer edge) and R'' (inner edge) [N].
+
+    References
+    ----------
+    [InertiaUNB600A] (after fig. 2).
+
+    Examples
+    --------
+    100 N and 5 N·m over 0.2 m: 50 + 25 and 50 - 25 N.
 
     >>> guide_edge_reactions(np.array([100.0]), np.array([5.0]), 0.2)
     (array([75.]), array([25.]))
@@ -145,23 +218,51 @@ def redundant_support_friction(
     friction_coefficient: float, settlement: float, turn: float, travel: np.ndarray,
     support_position: float | None = None, support_offset: float = 0.0,
 ) -> SupportReactions:
-    """Reactions and friction forces of the redundant supports for each link travel s [m].
+    """Reactions and friction forces of the redundant supports for each link travel.
 
     Solves, per position, the force-method system D X = (Delta_B + theta_B s, theta_B,
     delta_C) for X = (R_B, M_B, Y_C) in one batched solve (D from
     :func:`flexibility_matrix`, the intermediate support at z_C = z_C0 - s), or the 2x2
-    system without Y_C when there is no intermediate support.
+    system without Y_C when there is no intermediate support; then the edge forces
+    (:func:`guide_edge_reactions`) and the friction f (|R'| + |R''|) + f |Y_C|.
 
     Parameters
     ----------
-    lengths, second_moments : sections from the clamped end A [m], [m^4].
-    elastic_modulus : E [Pa].
-    guide_length : l_n [m], distance between the edge contacts of guide B.
-    friction_coefficient : f, sliding friction in the guides.
-    settlement, turn : Delta_B [m] and theta_B [rad] of guide B against A's axis, at s = 0.
-    travel : s [m], travel of the link from the reference position, towards B.
-    support_position : z_C0 [m] from A at s = 0, or None without an intermediate support.
-    support_offset : delta_C [m], height of the intermediate support off A's axis.
+    lengths : numpy.ndarray
+        Section lengths from the clamped end A [m].
+    second_moments : numpy.ndarray
+        Section second moments of area [m⁴].
+    elastic_modulus : float
+        E [Pa].
+    guide_length : float
+        l_n, distance between the edge contacts of guide B [m].
+    friction_coefficient : float
+        f, sliding friction in the guides (dimensionless).
+    settlement : float
+        Delta_B, guide B's axis off A's axis at s = 0 [m].
+    turn : float
+        theta_B, angle of guide B's axis to A's axis [rad].
+    travel : numpy.ndarray
+        s, travel of the link from the reference position, towards B [m].
+    support_position : float, optional
+        z_C0 from A at s = 0 [m], or None without an intermediate support.
+    support_offset : float
+        delta_C, height of the intermediate support off A's axis [m].
+
+    Returns
+    -------
+    SupportReactions
+        Forces [N] and moments [N·m] per travel.
+
+    References
+    ----------
+    [InertiaUNB600A] (part 2); [NPTEL105101085] (force method).
+
+    Examples
+    --------
+    One section clamped at both ends (L = 1 m, EI = 12 N·m²), end B settled by 1 m: the
+    fixed-end reactions 12 EI Delta / L^3 and -6 EI Delta / L^2 ([NPTEL105101085],
+    module 5, example 5.5).
 
     >>> r = redundant_support_friction([1.0], [1.0], 12.0, 0.5, 0.1, 1.0, 0.0, np.array([0.0]))
     >>> r.force.tolist(), r.moment.tolist()   # fixed-fixed beam, end settled: 12 EI D/L^3, -6 EI D/L^2
@@ -193,13 +294,43 @@ def redundant_support_friction(
 
 
 def slider_length(section_lengths) -> float:
-    """L [m]: clamped end A to guide B, the sum of the section lengths l_i [m]."""
+    """Length of the slider from the clamped end A to guide B, L = sum l_i.
+
+    Parameters
+    ----------
+    section_lengths : iterable of float
+        l_i [m].
+
+    Returns
+    -------
+    float
+        L [m].
+
+    Examples
+    --------
+    The estimated UNB-600A slider (piston, rod, extension rod, crosshead):
+
+    >>> round(slider_length([0.12, 1.0, 0.7, 0.2]), 12)
+    2.02
+    """
     return sum(section_lengths)
 
 
 def solid_round_second_moment(diameter):
-    """J = pi d^4 / 64 [m^4], second moment of area of a solid circle of diameter d [m].
+    """Second moment of area of a solid circle, J = pi d^4 / 64.
 
+    Parameters
+    ----------
+    diameter : float
+        d [m].
+
+    Returns
+    -------
+    float
+        J [m⁴].
+
+    Examples
+    --------
     >>> round(solid_round_second_moment(0.1) * 1e8, 4)   # pi 1e-4 / 64 m^4
     490.8739
     """
