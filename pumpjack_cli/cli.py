@@ -33,6 +33,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "inertia-error": ("inertia_error", "inertia_error",
                       "Error of the approximate inertia-force laws against the exact motion."),
     "dynamics": ("dynamics", "dynamics", "Non-uniform crank rotation from the machine's equation of motion."),
+    "torque": ("torque", "torque", "Gearbox torque, counterbalance and loading of a unit from a dynamometer card."),
 }
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 

@@ -31,7 +31,9 @@ class UnitSystem(str, Enum):
 
 class Rotation(str, Enum):
     uniform = "uniform"
+    card = "card"
     dynamic = "dynamic"
+    auto = "auto"
 
 
 FormatOption = Annotated[
@@ -73,8 +75,10 @@ CardSpmOption = Annotated[float | None, typer.Option(
     min=0.1, max=60, callback=finite)]
 StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
 RotationOption = Annotated[Rotation, typer.Option(
-    "--rotation", help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the periodic "
-    "motion from the machine's equation of motion under this card (as `pumpjack dynamics --card`)")]
+    "--rotation", help="uniform: constant crank speed (the card's time stamps, --spm or the motor's rated speed); "
+    "card: speed and acceleration from the card's time stamps; dynamic: the periodic motion from the machine's "
+    "equation of motion under this card (as `pumpjack dynamics --card`); auto: card if the card has time "
+    "stamps, else uniform")]
 
 
 class Output:

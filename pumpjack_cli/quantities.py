@@ -25,6 +25,8 @@ POUND_MASS = 0.45359237
 POUND_FORCE = 4.4482216152605
 KILOGRAM_FORCE = 9.80665
 HORSEPOWER = 745.69987158227022
+#: Oil barrel, 42 US gallons of 231 in^3 [NIST811].
+BARREL = 42 * 231 * INCH**3
 
 #: Accepted input units for each dimension: normalised unit text -> factor to SI.
 INPUT_UNITS: dict[str, dict[str, float]] = {
@@ -187,6 +189,11 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     },
     "stroke_rate": {"si": OutputUnit("1/min", "spm", 60 / (2 * math.pi)), "field": OutputUnit("1/min", "spm", 60 / (2 * math.pi))},
     "force": {"si": OutputUnit("N", "n", 1.0), "field": OutputUnit("lbf", "lbf", 1 / POUND_FORCE)},
+    "mass": {"si": OutputUnit("kg", "kg", 1.0), "field": OutputUnit("lb", "lb", 1 / POUND_MASS)},
+    "pressure": {"si": OutputUnit("Pa", "pa", 1.0), "field": OutputUnit("psi", "psi", INCH**2 / POUND_FORCE)},
+    "stress": {"si": OutputUnit("MPa", "mpa", 1e-6), "field": OutputUnit("psi", "psi", INCH**2 / POUND_FORCE)},
+    "volume": {"si": OutputUnit("m³", "m3", 1.0), "field": OutputUnit("bbl", "bbl", 1 / BARREL)},
+    "flow_rate": {"si": OutputUnit("m³/d", "m3_d", 86400.0), "field": OutputUnit("bbl/d", "bbl_d", 86400.0 / BARREL)},
     "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
     "percent": {"si": OutputUnit("%", "percent", 100.0), "field": OutputUnit("%", "percent", 100.0)},
     "ratio": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},

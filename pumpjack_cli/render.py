@@ -254,7 +254,8 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
 
 
 def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
-    """Each panel against the first column, dashed curves for approximations, to a binary
+    """Each panel against its x column (default: the first column), dashed curves for
+    approximations and bounds, horizontal lines at the panel's levels, to a binary
     stream in ``file_format`` (png, svg or pdf)."""
     import matplotlib
 
@@ -262,23 +263,30 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    x_col = result.columns[0]
-    x_unit = output_unit(x_col.quantity, system)
-    x = x_unit.convert(np.asarray(x_col.values, dtype=float))
-    fig, axes = plt.subplots(len(result.panels), 1, sharex=True, figsize=(8, 2.6 * len(result.panels)))
+    def shown(name: str):
+        column = result.column(name)
+        unit = output_unit(column.quantity, system)
+        return unit.convert(np.asarray(column.values, dtype=float)), unit
+
+    shares_x = all(panel.x is None for panel in result.panels)
+    fig, axes = plt.subplots(len(result.panels), 1, sharex=shares_x, figsize=(8, 2.6 * len(result.panels)))
     for ax, panel in zip(np.atleast_1d(axes), result.panels):
+        x_name = panel.x or result.columns[0].name
+        x, x_unit = shown(x_name)
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
-                column = result.column(name)
-                unit = output_unit(column.quantity, system)
-                ax.plot(x, unit.convert(np.asarray(column.values, dtype=float)), style, label=name)
+                ax.plot(x, shown(name)[0], style, label=name)
         unit = output_unit(result.column(panel.solid[0]).quantity, system)
+        for label, value in panel.levels:
+            ax.axhline(float(unit.convert(float(value))), color="red", linewidth=0.8, linestyle=":",
+                       label=label or None)
         ax.set_ylabel(f"{panel.title} [{unit.label}]")
         ax.grid(True, alpha=0.3)
-        if len(panel.solid) + len(panel.dashed) > 1:
+        if len(panel.solid) + len(panel.dashed) + len([lv for lv in panel.levels if lv[0]]) > 1:
             ax.legend(fontsize="small")
-    np.atleast_1d(axes)[-1].set_xlabel(f"{x_col.name} [{x_unit.label}]")
-    fig.suptitle(result.title)
+        if not shares_x or ax is np.atleast_1d(axes)[-1]:
+            ax.set_xlabel(f"{x_name} [{x_unit.label}]")
+    fig.suptitle(result.title, fontsize="medium")
     fig.tight_layout()
     fig.savefig(stream, format=file_format)
     plt.close(fig)

@@ -45,11 +45,15 @@ class Scalar:
 
 @dataclass(frozen=True)
 class Panel:
-    """One plot panel: solid curves and dashed curves (column names) against the first column."""
+    """One plot panel: solid curves and dashed curves (column names) against the column
+    ``x`` (default: the first column), and horizontal lines at ``levels`` ((label, SI
+    value) pairs in the quantity of the first solid curve, e.g. a rating)."""
 
     title: str
     solid: tuple[str, ...]
     dashed: tuple[str, ...] = ()
+    x: str | None = None
+    levels: tuple[tuple[str, float], ...] = ()
 
 
 @dataclass(frozen=True)

@@ -18,6 +18,7 @@ import numpy as np
 from ..card_files import CardReading, check_speed, parse_card_columns, read_card
 from ..core.beam.card import card_load
 from ..core.beam.linkage import Linkage
+from ..core.beam.torque import crank_rates_from_time
 from ..core.dynamics.periodic import steady_state
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError
@@ -25,8 +26,15 @@ from ..quantities import parse_quantity
 from .inputs import crank_speed
 from .machine import machine
 
-#: Crank rotation models of the card-driven analyses.
-ROTATIONS = ("uniform", "dynamic")
+#: Harmonics of the time-against-angle fit of a card's time stamps (--rotation card).
+CARD_HARMONICS = 4
+#: Steps of the integration t = int dtheta / omega over one revolution.
+FINE_STEPS = 3600
+
+#: Crank rotation models of the card-driven analyses: constant speed; the speed and
+#: acceleration fitted to the card's time stamps; the machine's equation of motion;
+#: auto: the card's time stamps if it has them, else constant speed.
+ROTATIONS = ("uniform", "card", "dynamic", "auto")
 
 
 @dataclass(frozen=True)
@@ -78,18 +86,39 @@ def uniform_speed(unit, reading: CardReading, spm: float | None) -> float:
     return crank_speed(unit, None) if speed is None else speed
 
 
+def _card_rotation(linkage: Linkage, reading: CardReading, theta: np.ndarray) -> CardRun:
+    """The crank speed and acceleration the card's time stamps give ([Takacs2016]), on a grid."""
+    if reading.time is None:
+        raise PumpjackError(f"{reading.source}: --rotation card needs a card with time stamps")
+    omega_s, alpha_s = crank_rates_from_time(linkage, reading.time, reading.crank_angle, CARD_HARMONICS)
+    order = np.argsort(reading.crank_angle)
+    angles = reading.crank_angle[order]
+    omega = np.interp(theta, angles, omega_s[order], period=2.0 * np.pi)
+    alpha = np.interp(theta, angles, alpha_s[order], period=2.0 * np.pi)
+    fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
+    rate = 1.0 / np.interp(fine, angles, omega_s[order], period=2.0 * np.pi)
+    elapsed = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(fine))])
+    return CardRun(theta, np.interp(theta, fine, elapsed), omega, alpha, card_load(reading.card, theta),
+                   float(elapsed[-1]), "card")
+
+
 def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, grids: tuple[int, ...],
               rotation: str) -> tuple[CardReading, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
     reading = source.read(linkage)
     thetas = [crank_grid(steps) for steps in grids]
+    if rotation == "auto":
+        rotation = "uniform" if reading.time is None else "card"
     if rotation == "uniform":
         omega = uniform_speed(unit, reading, spm)
         runs = [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),
                         card_load(reading.card, theta), cycle_period(omega), rotation) for theta in thetas]
         return reading, runs
     if spm is not None:
-        raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
+        raise PumpjackError(f"--spm sets a uniform crank speed; with --rotation {rotation} the "
+                            f"{'card' if rotation == 'card' else 'motor'} sets the speed")
+    if rotation == "card":
+        return reading, [_card_rotation(linkage, reading, theta) for theta in thetas]
     state = steady_state(machine(unit, reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:

@@ -13,17 +13,18 @@ import dataclasses
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..core.beam.geometry import Linkage, beam_linkage, check_assembly
 from ..core.beam.masses import MassModel, counterweight_set_mass
 from ..core.beam.redundancy import PinTilts, PitmanSection
 from ..core.beam.spatial import SpatialLinkage
+from ..core.designations import parse_designation
 from ..core.dynamics.drive import belt_ratio, rated_crank_speed, total_ratio
-from ..errors import ConfigError, GeometryError
+from ..errors import ConfigError, DesignationError, GeometryError
 from .geometry_names import ROTATION_SIGNS, canonical_geometry
-from .quantities import (Angle, at_least, Area, AreaMoment, Count, Density, Fraction, KinematicViscosity, Length, Mass,
-                         MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section)
+from .quantities import (Angle, Area, AreaMoment, Count, Density, Force, Fraction, KinematicViscosity, Length, Mass,
+                         MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section, Torque, at_least)
 
 
 class Geometry(Section):
@@ -93,6 +94,9 @@ class CrankArm(Section):
 
 class Counterweights(Section):
     """Counterweight blocks on the crank arms, treated as point masses at their centre of mass."""
+
+    radius_range: tuple[Length, Length] | None = Field(
+        default=None, description="smallest and largest radius the blocks can be set to in the crank's slots [m]")
 
     mass: Mass = Field(ge=0, le=5e3, description="one block (m_pr1) [kg]")
     count: Count = Field(ge=0, le=16, description="number of blocks on both arms together (shared equally)")
@@ -315,6 +319,27 @@ class Deviations(Section):
                                    crank_radius_offset=self.crank_radius, pitman_length_offset=self.pitman_length)
 
 
+class Rating(Section):
+    """Ratings of the unit, completing or overriding what its designation gives ([API11E], [GOST5866])."""
+
+    gearbox_torque: Torque | None = Field(default=None, gt=0, le=1e7, description="gearbox (reducer) peak torque rating [N·m]")
+    structure_load: Force | None = Field(default=None, gt=0, le=1e7, description="structure (polished-rod load) rating [N]")
+    max_stroke: Length | None = Field(default=None, gt=0, le=20, description="maximum polished-rod stroke [m]")
+
+
+class CounterbalanceConfig(Section):
+    """The API 11E description of the counterbalance, for units without [masses] ([API11E], [Rowlan2004])."""
+
+    structural_unbalance: Force = Field(
+        default=0.0, ge=-1e6, le=1e6,
+        description="B: force at the polished rod that holds the beam level with the pitmans off the crank pins, "
+        "downward positive [N]")
+    moment: Torque | None = Field(
+        default=None, ge=0, le=1e7, description="M: largest moment of cranks and counterweights about the shaft [N·m]")
+    phase: Angle = Field(default=0.0, gt=-math.pi, le=math.pi,
+                         description="tau: crank offset angle, 0 for conventional units [rad]")
+
+
 class UnitConfig(Section):
     """A whole pumping unit: identification, geometry and optional masses, drive, well."""
 
@@ -322,9 +347,23 @@ class UnitConfig(Section):
     name: str = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
     description: str = Field(default="", description="one line shown by `pumpjack units`")
     sources: tuple[str, ...] = Field(default=(), description="where the data come from")
+    designation: str | None = Field(
+        default=None, description="API 11E or GOST 5866 designation (C-228D-213-86, SK8-3,5-4000); ratings come from it")
+    rating: Rating = Rating()
+    counterbalance: CounterbalanceConfig | None = None
     geometry: Geometry
     masses: Masses | None = None
     drive: Drive | None = None
     well: Well | None = None
     pitman_section: PitmanSectionConfig | None = None
     deviations: Deviations = Deviations()
+
+    @field_validator("designation")
+    @classmethod
+    def _designation(cls, text: str | None) -> str | None:
+        if text is not None:
+            try:
+                parse_designation(text)
+            except DesignationError as exc:
+                raise ValueError(str(exc)) from None
+        return text

@@ -29,6 +29,8 @@ KinematicViscosity = Annotated[float, _quantity("kinematic_viscosity")]
 Fraction = Annotated[float, _quantity("fraction")]
 Angle = Annotated[float, _quantity("angle")]
 Pressure = Annotated[float, _quantity("pressure")]
+Force = Annotated[float, _quantity("force")]
+Torque = Annotated[float, _quantity("torque")]
 AreaMoment = Annotated[float, _quantity("area_moment")]
 Area = Annotated[float, _quantity("area")]
 #: Plain numbers without a unit; strict so that ``true`` is not read as 1.

@@ -65,23 +65,26 @@ def card_work(linkage: Linkage, card: Card) -> float:
     return float(np.sum(0.5 * (w + np.roll(w, -1)) * (np.roll(s, -1) - s)))
 
 
-def cyclic_load_factor(net_torque: np.ndarray) -> float:
-    """CLF = T_rms / T_mean over a uniform crank-angle grid ([DurhamLockard1988]).
+def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None) -> float:
+    """CLF = T_rms / T_mean over a cycle ([DurhamLockard1988]).
 
-    Raises :class:`TorqueError` when the mean torque is not positive (the unit does no
-    net work on the rods: CLF undefined).
+    ``weights`` are the time shares of the samples (dt = dtheta / omega for a crank that
+    does not turn uniformly); without them the samples are a uniform crank-angle grid
+    at uniform speed. Raises :class:`TorqueError` when the mean torque is not positive
+    (the unit does no net work on the rods: CLF undefined).
 
     >>> round(cyclic_load_factor(1.0 + np.sin(np.linspace(0, 2 * np.pi, 360, endpoint=False))), 6)   # sqrt(1.5)
     1.224745
     """
     t = np.asarray(net_torque, dtype=float)
-    if not np.all(np.isfinite(t)):
+    w = np.ones_like(t) if weights is None else np.asarray(weights, dtype=float)
+    if not (np.all(np.isfinite(t)) and np.all(np.isfinite(w))):
         raise TorqueError("cyclic load factor: the net torque is not finite at every crank angle")
-    mean = float(np.mean(t))
+    mean = float(np.sum(w * t) / np.sum(w))
     if not mean > 0:
         raise TorqueError(f"cyclic load factor: the mean net torque is {mean:.6g} N·m; it must be positive "
                           f"(a card that does no work on the rods has no cyclic load factor)")
-    return math.sqrt(float(np.mean(t * t))) / mean
+    return math.sqrt(float(np.sum(w * t * t) / np.sum(w))) / mean
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,285 @@
+"""Gearbox torque, counterbalance and loading from a dynamometer card: the result of `pumpjack torque`.
+
+The API 11E torque-factor method ([API11E], [Rowlan2004]) needs only the geometry,
+the card and the counterbalance (B, M, tau from ``[counterbalance]`` or from the
+masses); the exact method is the spatial kinetostatics of `pumpjack reactions` with
+link weights and inertia ([Spatial7SK12]). The net torque is decomposed as
+[Takacs2016] does, with the crank's speed and acceleration from the card's time stamps
+(``--rotation card``, the default for a time-stamped card), uniform, or from the
+machine's equation of motion. The counterbalance that meets a balance criterion, the
+loading against the ratings of the unit's designation and the permissible load diagram
+([GaultSWPSC]) follow.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.beam.balance import balance_criteria, recommend_counterbalance
+from ..core.beam.counterbalance import (Counterbalance, counterbalance_effect, counterbalance_from_masses,
+                                        counterweight_placement, upstroke_mask)
+from ..core.beam.loading import card_work, cyclic_load_factor
+from ..core.beam.torque import (beam_group_inertia, crank_group_inertia, exact_net_torque, permissible_load,
+                                torque_components, torque_methods)
+from ..core.designations import parse_designation
+from ..core.sampling import extremes, peak
+from ..errors import PumpjackError
+from ..results import Column, Panel, Result, Scalar
+from .card_runs import CardRun, CardSource, card_runs
+from .machine import mass_model
+
+#: Crank positions of the grid on which the summary's extremes, balance and loading are computed.
+SUMMARY_STEPS = 3600
+#: Largest counterweight radius considered when the unit gives no slot range [m] (the schema's limit).
+MAX_RADIUS = 5.0
+#: Crank angle of the counterbalance-effect test (cranks horizontal) [rad].
+TEST_ANGLE = math.pi / 2
+#: Unit classes the linkage model of this package covers (conventional, crank-balanced).
+SUPPORTED_CLASSES = ("conventional",)
+
+
+@dataclass(frozen=True)
+class Ratings:
+    """Gearbox torque [N·m], structure load [N] and maximum stroke [m] ratings; None where unknown."""
+
+    gearbox_torque: float | None
+    structure_load: float | None
+    max_stroke: float | None
+
+
+def ratings(unit) -> Ratings:
+    """The unit's ratings: its ``designation`` (or its name when that is a designation),
+    completed or overridden by ``[rating]``; a class other than conventional is refused."""
+    text = unit.designation if unit.designation is not None else unit.name
+    try:
+        designation = parse_designation(text)
+    except PumpjackError:
+        if unit.designation is not None:
+            raise
+        designation = None
+    if designation is not None and designation.unit_class not in SUPPORTED_CLASSES:
+        raise PumpjackError(f"unit {unit.name}: {text} is a {designation.unit_class} unit; its class is not "
+                            f"supported yet (the linkage model covers conventional units)")
+    rated = unit.rating
+
+    def pick(name: str) -> float | None:
+        given = getattr(rated, name)
+        return given if given is not None else (getattr(designation, name) if designation is not None else None)
+
+    return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
+
+
+def counterbalance(unit, masses) -> tuple[Counterbalance, bool]:
+    """B, M, tau of the API method and whether M is known: ``[counterbalance]`` if given,
+    else from the masses; without either the structural unbalance is taken as 0."""
+    given = unit.counterbalance
+    if given is not None:
+        return Counterbalance(given.structural_unbalance, given.moment or 0.0, given.phase), given.moment is not None
+    if masses is not None:
+        return counterbalance_from_masses(unit.geometry.linkage(), masses), True
+    raise PumpjackError(f"unit {unit.name} has neither [counterbalance] nor [masses]: give at least "
+                        f"[counterbalance] structural_unbalance (and moment for the present net torque)")
+
+
+@dataclass(frozen=True)
+class _Torques:
+    """Torque terms [N·m] on one crank-angle grid and the net torque of the chosen method."""
+
+    run: CardRun
+    components: object
+    api: np.ndarray
+    exact: np.ndarray | None
+    net: np.ndarray
+
+
+def _torques(unit, linkage, masses, balance: Counterbalance, run: CardRun, method: str) -> _Torques:
+    parts = torque_components(linkage, run.crank_angle, run.load, balance,
+                              beam_inertia=beam_group_inertia(linkage, masses) if masses else 0.0,
+                              rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
+                              omega=run.omega, alpha=run.epsilon)
+    api = (parts.rod_load + parts.structural + parts.counterbalance + parts.articulating_inertia
+           + parts.rotary_inertia)
+    exact = None
+    if masses is not None:
+        exact = exact_net_torque(unit.geometry.spatial(unit.name), masses, run.crank_angle, run.load, run.omega,
+                                 run.epsilon)
+    return _Torques(run, parts, api, exact, exact if method == "exact" else api)
+
+
+def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str, method: str, criterion: str,
+           drive_efficiency: float = 1.0) -> Result:
+    """The torque analysis of one card (see the module docstring)."""
+    if method not in torque_methods():
+        raise PumpjackError(f"--method {method}: use one of {', '.join(torque_methods())}")
+    if criterion not in balance_criteria():
+        raise PumpjackError(f"--balance {criterion}: use one of {', '.join(balance_criteria())}")
+    rated = ratings(unit)
+    linkage = unit.geometry.linkage()
+    masses = mass_model(unit) if unit.masses is not None else None
+    if method == "exact" and masses is None:
+        raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
+                            f"(--method api needs only [counterbalance])")
+    balance, moment_known = counterbalance(unit, masses)
+    reading, runs = card_runs(unit, linkage, card, spm, (steps, SUMMARY_STEPS), rotation)
+    out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
+    theta = dense.run.crank_angle
+    dt = 1.0 / dense.run.omega  # time share of each point of the uniform crank-angle grid
+    sine = np.sin(theta - balance.offset)
+    rod_torque = linkage.front_arm * linkage.motion(theta).beam_rate * (dense.run.load - balance.structural_unbalance)
+    recommendation = recommend_counterbalance(criterion, linkage, theta, dense.run.load, balance,
+                                              extra_torque=dense.net - rod_torque + balance.moment * sine,
+                                              weights=dt, test_angle=TEST_ANGLE)
+    if recommendation.moment is None:
+        raise PumpjackError(f"--balance {criterion}: {recommendation.note}; try --balance min-peak or min-rms")
+
+    def shifted(t: _Torques, moment: float) -> np.ndarray:
+        return t.net + (balance.moment - moment) * np.sin(t.run.crank_angle - balance.offset)
+
+    tf_test = float(linkage.front_arm * linkage.motion(np.array([TEST_ANGLE])).beam_rate[0])
+    work = card_work(linkage, reading.card)
+    frequency = 1.0 / out.run.period
+    summary = [Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi * frequency, "pumping speed of the run"),
+               Scalar("structural_unbalance", "force", balance.structural_unbalance, "B, downward positive"),
+               Scalar("crank_offset", "angle", balance.offset, "tau, counterweights lagging the crank pin")]
+    current = dense.net if moment_known else None
+    if moment_known:
+        found = peak(theta, current)
+        summary += [Scalar("counterbalance_moment", "torque", balance.moment, "M, present counterbalance"),
+                    Scalar("counterbalance_effect", "force", counterbalance_effect(tf_test, balance, TEST_ANGLE),
+                           "CBE at the polished rod with the cranks horizontal, present counterbalance"),
+                    Scalar("peak_net_torque", "torque", found.value, f"largest |net torque|, {method} method"),
+                    Scalar("peak_net_torque_crank_angle", "angle", found.crank_angle, "crank angle of the peak")]
+        summary += [Scalar(f"{label}_net_torque", "torque", extreme.value, f"{label} net torque")
+                    for label, extreme in zip(("max", "min"), extremes(theta, current))]
+    recommended = shifted(dense, recommendation.moment)
+    summary += [
+        Scalar("recommended_counterbalance_moment", "torque", recommendation.moment, f"M for --balance {criterion}"),
+        Scalar("recommended_counterbalance_effect", "force", recommendation.counterbalance_effect,
+               "CBE at the polished rod, cranks horizontal, recommended counterbalance"),
+        Scalar("recommended_peak_net_torque", "torque", peak(theta, recommended).value,
+               "largest |net torque| with the recommended counterbalance"),
+        Scalar("recommended_upstroke_peak_torque", "torque", recommendation.upstroke_peak,
+               "largest net torque of the upstroke, recommended counterbalance"),
+        Scalar("recommended_downstroke_peak_torque", "torque", recommendation.downstroke_peak,
+               "largest net torque of the downstroke, recommended counterbalance"),
+    ]
+    if masses is not None:
+        placement = counterweight_placement(recommendation.moment, masses,
+                                            unit.masses.counterweights.radius_range or (0.0, MAX_RADIUS))
+        if placement.radius is not None:
+            summary.append(Scalar("recommended_counterweight_radius", "length", placement.radius,
+                                  "radius of the present blocks that gives the recommended M"))
+        if placement.mass is not None:
+            summary.append(Scalar("recommended_counterweight_mass", "mass", placement.mass,
+                                  "mass of all blocks at the present radius that gives the recommended M"))
+        if placement.note:
+            sys.stderr.write(f"pumpjack: warning: {placement.note}\n")
+    base = current if current is not None else recommended
+    clf = cyclic_load_factor(base, dt)
+    mean = float(np.sum(base * dt) / np.sum(dt))
+    rms = clf * mean
+    summary += [
+        Scalar("card_work", "energy", work, "work on the rods per cycle (card area)"),
+        Scalar("polished_rod_power", "power", work * frequency, "card work x cycles per second"),
+        Scalar("rms_net_torque", "torque", rms, "RMS (equivalent) net torque over time"),
+        Scalar("cyclic_load_factor", "ratio", clf, "RMS / mean net torque ([DurhamLockard1988])"),
+        Scalar("motor_power", "power", rms * 2.0 * np.pi * frequency / drive_efficiency,
+               "motor power for the RMS torque at the mean speed, / drive efficiency ([DurhamLockard1988])"),
+    ]
+    summary += _loading(rated, reading.card.load.max(), linkage.stroke, current, recommended, theta)
+    if dense.exact is not None:
+        summary.append(Scalar("peak_exact_minus_api_torque", "torque", peak(theta, dense.exact - dense.api).value,
+                              "largest |exact - API net torque|"))
+    columns = _columns(linkage, out, balance, moment_known, shifted(out, recommendation.moment), rated)
+    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
+             f"balance {criterion}")
+    return Result(title, tuple(summary), tuple(columns), _panels(columns, rated, moment_known))
+
+
+def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommended, theta) -> list[Scalar]:
+    """Loading against the ratings that are known (fractions, shown in %)."""
+    found = []
+    if rated.gearbox_torque is not None:
+        found.append(Scalar("gearbox_rating", "torque", rated.gearbox_torque, "gearbox peak torque rating"))
+        if current is not None:
+            found.append(Scalar("gearbox_loading", "percent", peak(theta, current).value / rated.gearbox_torque,
+                                "peak net torque / gearbox rating, present counterbalance"))
+        found.append(Scalar("recommended_gearbox_loading", "percent",
+                            peak(theta, recommended).value / rated.gearbox_torque,
+                            "peak net torque / gearbox rating, recommended counterbalance"))
+    if rated.structure_load is not None:
+        found += [Scalar("structure_rating", "force", rated.structure_load, "structure (polished-rod load) rating"),
+                  Scalar("structure_loading", "percent", peak_load / rated.structure_load,
+                         "peak polished-rod load / structure rating")]
+    if rated.max_stroke is not None:
+        found += [Scalar("max_stroke", "length", rated.max_stroke, "maximum stroke of the unit"),
+                  Scalar("stroke_loading", "percent", stroke / rated.max_stroke, "stroke / maximum stroke")]
+    return found
+
+
+def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, recommended, rated: Ratings):
+    run, parts = t.run, t.components
+    m = linkage.motion(run.crank_angle)
+    dead = linkage.dead_positions()
+    columns = [
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", run.crank_angle),
+        Column("time", "time", "time from crank angle 0", run.time),
+        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", run.omega),
+        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", run.epsilon),
+        Column("position", "length", "polished-rod position above the bottom of the stroke",
+               linkage.front_arm * (m.beam_angle - dead.beam_angle_bottom)),
+        Column("rod_load", "force", "polished-rod load from the card", run.load),
+        Column("torque_factor", "length", "API 11E torque factor", linkage.front_arm * m.beam_rate),
+        Column("rod_load_torque", "torque", "TF W: torque of the polished-rod load", parts.rod_load),
+        Column("structural_torque", "torque", "-TF B: torque of the structural unbalance", parts.structural),
+        Column("articulating_inertia_torque", "torque", "inertia of the beam group ([Takacs2016])",
+               parts.articulating_inertia),
+        Column("rotary_inertia_torque", "torque", "inertia of cranks and counterweights, I_r alpha",
+               parts.rotary_inertia),
+    ]
+    if moment_known:
+        columns += [Column("counterbalance_torque", "torque", "-M sin(theta - tau): torque of the counterbalance",
+                           parts.counterbalance),
+                    Column("net_torque", "torque", "net gearbox torque, present counterbalance (+ driving)", t.net)]
+    if t.exact is not None:
+        columns += [Column("api_net_torque", "torque", "net torque by the API 11E method", t.api),
+                    Column("exact_net_torque", "torque", "net torque by the spatial kinetostatics", t.exact),
+                    Column("exact_minus_api_torque", "torque", "exact - API net torque", t.exact - t.api)]
+    columns.append(Column("recommended_net_torque", "torque", "net gearbox torque, recommended counterbalance",
+                          recommended))
+    if rated.gearbox_torque is not None and moment_known:
+        low, high = permissible_load(run.crank_angle, linkage.front_arm * m.beam_rate, balance, rated.gearbox_torque)
+        columns += [Column("permissible_load_min", "force", "smallest polished-rod load within the gearbox rating",
+                           _clip(low, run.load)),
+                    Column("permissible_load_max", "force", "largest polished-rod load within the gearbox rating",
+                           _clip(high, run.load))]
+    return columns
+
+
+def _clip(bound: np.ndarray, load: np.ndarray) -> np.ndarray:
+    """A permissible-load bound kept finite for output: near a dead position (TF -> 0) it
+    grows without limit; it is cut at ten times the card's load range from the card."""
+    span = 10.0 * (np.max(load) - np.min(load) + 1.0)
+    return np.clip(bound, np.min(load) - span, np.max(load) + span)
+
+
+def _panels(columns: list[Column], rated: Ratings, moment_known: bool) -> tuple[Panel, ...]:
+    names = {c.name for c in columns}
+    levels = () if rated.gearbox_torque is None else (("gearbox rating", rated.gearbox_torque),
+                                                      ("", -rated.gearbox_torque))
+    panels = []
+    if "permissible_load_min" in names:
+        panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),
+                            x="position"))
+    else:
+        panels.append(Panel("card", ("rod_load",), x="position"))
+    panels.append(Panel("net torque", ("net_torque",) if moment_known else ("recommended_net_torque",),
+                        ("recommended_net_torque",) if moment_known else (), levels=levels))
+    panels.append(Panel("torque components", ("rod_load_torque", "structural_torque", "articulating_inertia_torque",
+                                              "rotary_inertia_torque")
+                        + (("counterbalance_torque",) if moment_known else ())))
+    return tuple(panels)
