@@ -21,3 +21,7 @@ class GeometryError(PumpjackError, ValueError):
 
 class DynamicsError(PumpjackError, ValueError):
     """A machine whose motion cannot be computed: inertia, motor, well data or a failed solve."""
+
+
+class PredictionError(PumpjackError, ValueError):
+    """A well whose cards cannot be predicted: rod string, pump or fluid data, or a solve that does not converge."""

@@ -1,0 +1,443 @@
+"""Predicted dynamometer cards: the damped wave equation of the rod string between the
+polished rod and the pump (uniform crank rotation).
+
+Model ([Gibbs1963]; derivations in ``docs/predict.md``):
+
+* rods: per taper ``u_tt = a_i^2 u_xx - c u_t``, c = pi a nu / (2 L) (Gibbs' damping
+  factor nu), displacement and force continuous at the joints; solved in modal form
+  with exact steps (:mod:`.predict_modes`);
+* top: the polished rod's position s(t) on a uniform time grid over one period;
+* bottom: the pump's valves, chamber and tubing (:mod:`.pump`);
+* gravity and buoyancy: only through the static effective-tension profile, so the
+  polished-rod load is P = W_rf + F(0, t) with W_rf = g sum m_i L_i (1 - rho_f / rho_r),
+  the buoyant weight of the rods with couplings, and F the dynamic force; the pump
+  load is the net plunger load (p_d - p_c) A_p, 0 with the travelling valve open and
+  F_o with the standing valve open. Fluid inertia and Coulomb friction are not modelled.
+
+Periodic steady state: the pump is marched sample by sample, cycle after cycle, from
+the periodic response to the rigid-rod load (F_o on the upstroke), until the pump load
+and plunger position repeat to ``tolerance``; the rods' response to the polished rod
+is periodic from the start (exact), and to the pump load it is carried between cycles
+in the modal states. The cards are then evaluated from the periodic pump load.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ...errors import PredictionError
+from ..constants import STANDARD_GRAVITY
+from .predict_modes import RodModes, StepResponse, damping_coefficient, periodic_states, rod_modes, step_response
+from .pump import Pump, PumpChamber
+from .string import RodString
+
+#: Density of steel rods for their buoyancy [kg/m^3] (RP 11L's 490 lb/ft^3 is 7849 kg/m^3).
+STEEL_DENSITY = 7850.0
+DEFAULT_TOLERANCE = 1e-8
+MAX_CYCLES = 400
+#: Modes are kept up to this multiple of the Nyquist frequency pi / h; above, quasi-statically.
+MODE_CUTOFF = 2.0
+
+
+@dataclass(frozen=True)
+class Convergence:
+    """How the periodic state was found: cycles marched, the largest change per cycle
+    (pump load / F_o and plunger position / polished-rod stroke), the tolerance, modes kept."""
+
+    cycles: int
+    changes: tuple[float, ...]
+    tolerance: float
+    modes: int
+
+    @property
+    def change(self) -> float:
+        """Largest relative change of the last cycle."""
+        return self.changes[-1]
+
+
+@dataclass(frozen=True)
+class CardExtreme:
+    """An extreme of a card: value, time [s] and crank angle [rad] (NaN without one)."""
+
+    value: float
+    time: float
+    crank_angle: float
+
+
+@dataclass(frozen=True)
+class PredictionSummary:
+    """Scalar results (SI).
+
+    Loads [N]: peak and minimum polished-rod load, buoyant rod weight W_rf, fluid load
+    F_o. Strokes [m]: polished rod; gross plunger (the rod end's travel); net plunger
+    (liquid discharged / A_p); static_stretch F_o (sum L/EA + 1/k_t). Pump displacement
+    per cycle [m^3] and rate [m^3/s]. Works per cycle [J]: surface card (polished-rod
+    work), pump card (work on the fluid), damping dissipation; energy_residual = (surface
+    - pump - damping) / surface; polished_rod_power [W] = surface work / period [s].
+    """
+
+    peak_polished_rod_load: CardExtreme
+    minimum_polished_rod_load: CardExtreme
+    buoyant_rod_weight: float
+    fluid_load: float
+    polished_rod_stroke: float
+    gross_plunger_stroke: float
+    net_plunger_stroke: float
+    static_stretch: float
+    pump_displacement: float
+    pump_rate: float
+    surface_card_work: float
+    pump_card_work: float
+    damping_dissipation: float
+    energy_residual: float
+    polished_rod_power: float
+    period: float
+    convergence: Convergence
+
+
+@dataclass(frozen=True)
+class Prediction:
+    """Surface and pump cards on the uniform time grid t_k = k T / N (SI).
+
+    time [s]; crank_angle [rad] (NaN where unknown); polished_rod_position [m] (up,
+    as given) and polished_rod_velocity [m/s]; polished_rod_load P [N]; plunger_position
+    [m] (up: the rod end, from where it hangs with the polished rod at the bottom of its
+    stroke and no fluid load); pump_load [N] (net plunger load); chamber_pressure [Pa];
+    taper_top_load and taper_bottom_load [N], shape (tapers, N): effective axial force
+    (buoyant weight below plus dynamic force; divided by the area it is the von Mises
+    stress of the rod under axial load and fluid pressure).
+    """
+
+    time: np.ndarray
+    crank_angle: np.ndarray
+    polished_rod_position: np.ndarray
+    polished_rod_velocity: np.ndarray
+    polished_rod_load: np.ndarray
+    plunger_position: np.ndarray
+    pump_load: np.ndarray
+    chamber_pressure: np.ndarray
+    taper_top_load: np.ndarray
+    taper_bottom_load: np.ndarray
+    summary: PredictionSummary
+
+
+@dataclass(frozen=True)
+class WellModel:
+    """The rod string, pump and fluid of one well, reduced to what the solvers need (SI).
+
+    modes of the string; response: exact steps of length ``response.step`` [s];
+    velocity_kernel[n] [m/(s N)]: the rod end's downward velocity (limit from the left)
+    at lag n after a unit hat-shaped pump-load sample, residual compliance included;
+    buoyant_weight W_rf [N]; weight_below [N]: buoyant weight below each joint (top .. pump).
+    """
+
+    rods: RodString
+    pump: Pump
+    modes: RodModes
+    response: StepResponse
+    velocity_kernel: np.ndarray
+    buoyant_weight: float
+    weight_below: np.ndarray
+
+    @property
+    def tubing_rate(self) -> float:
+        """1 / (k_t h) [m/(s N)]: the barrel's velocity per unit change of pump load in one step."""
+        return 1.0 / (self.pump.tubing_stiffness * self.response.step)
+
+    @property
+    def compliance(self) -> float:
+        """Plunger travel relative to the barrel per unit pump load within one step, h (Y_0 + 1/(k_t h)) [m/N]."""
+        return self.response.step * (float(self.velocity_kernel[0]) + self.tubing_rate)
+
+
+def check_rods(rods: RodString) -> None:
+    """Raise :class:`PredictionError` unless every section is positive and finite."""
+    arrays = [np.asarray(getattr(rods, name), dtype=float) for name in
+              ("length", "area", "youngs_modulus", "mass_per_length")]
+    if arrays[0].ndim != 1 or arrays[0].size == 0 or any(a.shape != arrays[0].shape for a in arrays):
+        raise PredictionError("rod string arrays must be one-dimensional, non-empty and of equal length")
+    for name, values in zip(("length", "area", "Young's modulus", "mass per length"), arrays):
+        if not (np.all(np.isfinite(values)) and np.all(values > 0)):
+            raise PredictionError(f"rod {name} must be positive and finite in every section, got {values.tolist()}")
+
+
+def modal_velocity(modes: RodModes, states: np.ndarray) -> np.ndarray:
+    """Modal velocities q_k' = Re(eta_k) - (c/2) Im(eta_k) / omega_dk from the complex states (any trailing shape)."""
+    return states.real - 0.5 * modes.damping * states.imag / modes.damped_frequency[:, None]
+
+
+def well_model(rods: RodString, pump: Pump, *, damping: float, step: float, samples: int,
+               fluid_density: float, rod_density: float = STEEL_DENSITY,
+               gravity: float = STANDARD_GRAVITY) -> WellModel:
+    """Modes, exact steps and the static datum of a well, for a time step [s] and ``samples`` steps.
+
+    damping: Gibbs' nu [-]; densities [kg/m^3] of the fluid and of the rod material (for
+    the buoyant weight W_rf = g sum m_i L_i (1 - rho_f / rho_r), [Gibbs1963]).
+    """
+    check_rods(rods)
+    pump.check()
+    if not (np.isfinite(damping) and damping > 0):
+        raise PredictionError(f"damping factor must be positive and finite, got {damping}")
+    if not (np.isfinite(fluid_density) and 0 <= fluid_density < rod_density):
+        raise PredictionError(f"fluid density {fluid_density} kg/m³ must lie between 0 and the rod density {rod_density}")
+    modes = rod_modes(rods, damping, MODE_CUTOFF * np.pi / step)
+    masses = rods.mass_per_length * rods.length * gravity * (1.0 - fluid_density / rod_density)
+    below = np.append(np.cumsum(masses[::-1])[::-1], 0.0)
+    return with_step(WellModel(rods, pump, modes, step_response(modes, step, 1), np.zeros(2), float(below[0]), below),
+                     step, samples)
+
+
+def with_step(model: WellModel, step: float, samples: int) -> WellModel:
+    """The same well (same modes) stepped with ``step`` [s] for ``samples`` steps. The
+    residual compliance responds to the pump load's slope, C_rem (F_n - F_{n-1}) / h."""
+    modes = model.modes
+    response = step_response(modes, step, samples)
+    kernel = modes.bottom**2 @ modal_velocity(modes, response.hat)
+    kernel[0] += modes.residual_compliance / step
+    kernel[1] -= modes.residual_compliance / step
+    return replace(model, response=response, velocity_kernel=kernel)
+
+
+def spectral_derivatives(values: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """First and second time derivatives of periodic samples on t_k = k T / N, by FFT
+    (exact for a trigonometric polynomial; the Nyquist term is dropped from the first)."""
+    n = values.size
+    spectrum = np.fft.rfft(values)
+    omega = 2.0 * np.pi * np.fft.rfftfreq(n, period / n)
+    first = 1j * omega * spectrum
+    if n % 2 == 0:
+        first[-1] = 0.0
+    return np.fft.irfft(first, n), np.fft.irfft(-omega**2 * spectrum, n)
+
+
+@dataclass(frozen=True)
+class Fields:
+    """The periodic solution at the samples: dynamic joint forces [N], shape (joints, N),
+    the rod end's downward displacement [m] and velocity [m/s], damping dissipation per cycle [J]."""
+
+    joint_force: np.ndarray
+    plunger_down: np.ndarray
+    plunger_velocity_down: np.ndarray
+    dissipation: float
+
+
+def periodic_fields(model: WellModel, pump_load: np.ndarray, top_down: np.ndarray, top_velocity_down: np.ndarray,
+                    top_drive: np.ndarray) -> Fields:
+    """Joint forces, plunger motion and damping dissipation per cycle for periodic inputs.
+
+    top_down u_top [m], its velocity [m/s] and top_drive a = u_top'' + c u_top' [m/s^2],
+    all down positive; pump_load F_L [N]. Dissipation int int c m u_t^2 dx dt [J] with
+    u_t = u_top' + sum phi_k q_k' (the residual modes' share, of order (omega / omega_cut)^2,
+    left out); the sum over a cycle of samples is exact for a trigonometric polynomial.
+    """
+    m = model.modes
+    forcing = m.bottom[:, None] * pump_load[None, :] - m.participation[:, None] * top_drive[None, :]
+    states = periodic_states(model.response, forcing)
+    q = states.imag / m.damped_frequency[:, None]
+    qdot = modal_velocity(m, states)
+    joint = (np.outer(m.residual_transmission, pump_load) - np.outer(m.residual_mass, top_drive)
+             + (m.joint_participation * m.frequency**2) @ q)
+    plunger = top_down + m.bottom @ q + m.residual_compliance * pump_load
+    slope = (pump_load - np.roll(pump_load, 1)) / model.response.step
+    velocity = top_velocity_down + m.bottom @ qdot + m.residual_compliance * slope
+    total_mass = float(np.sum(model.rods.mass_per_length * model.rods.length))
+    power = m.damping * (total_mass * top_velocity_down**2 + 2.0 * top_velocity_down * (m.participation @ qdot)
+                         + np.sum(qdot**2, axis=0))
+    return Fields(joint, plunger, velocity, float(np.sum(power) * model.response.step))
+
+
+class PumpMarch:
+    """The pump marched against the rods, one cycle of N samples at a time (module docstring).
+
+    At each sample the rod end's left-limit velocity is affine in the new pump load,
+    v = known - Y_0 F; the pump integrates its relative position by the backward Euler
+    rule, zeta_n = zeta_{n-1} + h zeta'_n, and applies its valve laws (the plunger held
+    still means zero velocity, so the load is set by the incoming waves without the
+    ringing of a position constraint). Holds the modal states carried from earlier
+    cycles (``carry``), the last pump load and the chamber.
+    """
+
+    def __init__(self, model: WellModel, chamber: PumpChamber, carry: np.ndarray, last_load: float):
+        self.model, self.chamber, self.carry, self.last_load = model, chamber, carry, last_load
+        n = model.response.hat.shape[1] - 1
+        self.reversed_kernel = model.velocity_kernel[::-1].copy()
+        self.tail = model.response.hat[:, n:0:-1].copy()
+        self.samples = n
+
+    def carried(self) -> np.ndarray:
+        """Downward velocity [m/s] of the rod end at the cycle's samples due to earlier pump loads."""
+        m = self.model.modes
+        states = (m.bottom * self.carry)[:, None] * self.model.response.powers[:, :self.samples]
+        return np.sum(modal_velocity(m, states), axis=0)
+
+    def cycle(self, known_velocity: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Pump load [N] and plunger position relative to the barrel [m] over one cycle;
+        ``known_velocity`` is the rod end's downward velocity [m/s] due to the top motion."""
+        n, model = self.samples, self.model
+        h, tubing = model.response.step, model.tubing_rate
+        base = known_velocity + self.carried()
+        base[0] -= model.modes.residual_compliance / h * self.last_load
+        base = base.tolist()
+        kernel, chamber = self.reversed_kernel, self.chamber
+        load = np.zeros(n)
+        position = np.empty(n)
+        previous = self.last_load
+        for k in range(n):
+            rate = tubing * previous - base[k] - float(np.dot(kernel[n - k:n], load[:k]))
+            previous, position[k] = chamber.step(chamber.position + h * rate)
+            load[k] = previous
+        m = model.modes
+        self.carry = model.response.powers[:, n] * self.carry + m.bottom * (self.tail @ load)
+        self.last_load = previous
+        return load, position
+
+
+def periodic_carry(model: WellModel, pump_load: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Modal states at the first sample from the pump-load samples before it, if the pump load
+    ``pump_load`` had always repeated, and the periodic modal states themselves."""
+    m = model.modes
+    states = periodic_states(model.response, m.bottom[:, None] * pump_load[None, :])
+    return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0], states
+
+
+def converge(march: PumpMarch, known_velocity: np.ndarray, load_scale: float, position_scale: float,
+             tolerance: float, max_cycles: int) -> tuple[np.ndarray, np.ndarray, float, Convergence]:
+    """March cycles until the largest relative change of pump load and plunger position is below
+    tolerance; returns the last cycle's load and position, the liquid it discharged [m^3], and how."""
+    changes: list[float] = []
+    previous = None
+    for _ in range(max_cycles):
+        discharged = march.chamber.discharge
+        load, position = march.cycle(known_velocity)
+        if previous is not None:
+            shift = position - previous[1]
+            changes.append(max(float(np.max(np.abs(load - previous[0]))) / load_scale,
+                               float(np.max(np.abs(shift - np.mean(shift)))) / position_scale))
+            if changes[-1] <= tolerance:
+                return (load, position, march.chamber.discharge - discharged,
+                        Convergence(len(changes) + 1, tuple(changes), tolerance, march.model.modes.count))
+        if march.model.pump.gas_exponent is not None:
+            march.chamber.rebase(float(position.min()))
+        previous = (load, position)
+    raise PredictionError(
+        f"the periodic pump cycle did not converge in {max_cycles} cycles (last change {changes[-1]:.3g}, "
+        f"tolerance {tolerance:g}); raise the damping factor or loosen the tolerance"
+    )
+
+
+def _extreme(values: np.ndarray, time: np.ndarray, angle: np.ndarray, pick) -> CardExtreme:
+    i = int(pick(values))
+    return CardExtreme(float(values[i]), float(time[i]), float(angle[i]))
+
+
+def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *, damping: float,
+            fluid_density: float, rod_density: float = STEEL_DENSITY, crank_angle: np.ndarray | None = None,
+            tolerance: float = DEFAULT_TOLERANCE, max_cycles: int = MAX_CYCLES,
+            gravity: float = STANDARD_GRAVITY) -> Prediction:
+    """Surface and pump cards of a well driven at uniform crank speed.
+
+    Parameters
+    ----------
+    rods : RodString
+        Tapers from the top down (mass per length with couplings).
+    pump : Pump
+        Plunger, pressures, fillage, gas, tubing (:class:`~.pump.Pump`).
+    position : numpy.ndarray
+        Polished-rod position s(t_k) [m], up positive, on t_k = k T / N, k = 0 .. N-1.
+    period : float
+        T [s], one pumping cycle.
+    damping : float
+        Gibbs' dimensionless damping factor nu [-], c = pi a nu / (2 L).
+    fluid_density, rod_density : float
+        [kg/m^3], for the buoyant rod weight.
+    crank_angle : numpy.ndarray, optional
+        Crank angle [rad] at the samples, carried into the result.
+
+    Returns
+    -------
+    Prediction
+        Cards on the same time grid and the summary.
+
+    References
+    ----------
+    [Gibbs1963] (wave equation, damping, buoyancy datum); [APIRP11L] (tubing stretch).
+    """
+    s = np.asarray(position, dtype=float)
+    if s.ndim != 1 or s.size < 16:
+        raise PredictionError(f"polished-rod position must be a 1-D array of at least 16 samples, got shape {s.shape}")
+    if not np.all(np.isfinite(s)):
+        raise PredictionError("polished-rod position holds non-finite values")
+    if not (np.isfinite(period) and period > 0):
+        raise PredictionError(f"period must be positive and finite, got {period} s")
+    if not 0 < tolerance < 1e-2:
+        raise PredictionError(f"tolerance must lie in (0, 0.01), got {tolerance}")
+    samples = s.size
+    stroke = float(np.ptp(s))
+    if not stroke > 0:
+        raise PredictionError("the polished rod does not move")
+    model = well_model(rods, pump, damping=damping, step=period / samples, samples=samples,
+                       fluid_density=fluid_density, rod_density=rod_density, gravity=gravity)
+    velocity, acceleration = spectral_derivatives(s, period)
+    top_drive = -(acceleration + model.modes.damping * velocity)
+    f_o = pump.fluid_load
+    driven = periodic_fields(model, np.zeros(samples), -s, -velocity, top_drive)
+    guess = np.where(velocity > 0.0, f_o, 0.0)
+    carry, _ = periodic_carry(model, guess)
+    start = periodic_fields(model, guess, -s, -velocity, top_drive).plunger_down[-1]
+    chamber = PumpChamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start)
+    march = PumpMarch(model, chamber, carry, float(guess[-1]))
+    load, _, discharged, convergence = converge(march, driven.plunger_velocity_down, max(f_o, 1.0), stroke,
+                                                tolerance, max_cycles)
+    angle = np.full(samples, np.nan) if crank_angle is None else np.asarray(crank_angle, dtype=float)
+    time = np.arange(samples) * (period / samples)
+    return assemble(model, time, angle, s, velocity, top_drive, load, discharged, period, convergence)
+
+
+def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np.ndarray, velocity: np.ndarray,
+             top_drive: np.ndarray, load: np.ndarray, discharged: float, period: float,
+             convergence: Convergence) -> Prediction:
+    """Cards and summary from the periodic pump load and the polished-rod motion (up positive)."""
+    pump = model.pump
+    fields = periodic_fields(model, load, -position, -velocity, top_drive)
+    joint = fields.joint_force + model.weight_below[:, None]
+    polished = joint[0]
+    plunger = -fields.plunger_down
+    step = period / position.size
+    surface = float(np.sum(fields.joint_force[0] * velocity) * step)
+    pump_work = float(np.sum(0.5 * (load + np.roll(load, -1)) * (np.roll(plunger, -1) - plunger)))
+    net = discharged / pump.plunger_area
+    f_o = pump.fluid_load
+    summary = PredictionSummary(
+        peak_polished_rod_load=_extreme(polished, time, angle, np.argmax),
+        minimum_polished_rod_load=_extreme(polished, time, angle, np.argmin),
+        buoyant_rod_weight=model.buoyant_weight,
+        fluid_load=f_o,
+        polished_rod_stroke=float(np.ptp(position)),
+        gross_plunger_stroke=float(np.ptp(plunger)),
+        net_plunger_stroke=net,
+        static_stretch=f_o * (model.modes.static_compliance + 1.0 / pump.tubing_stiffness),
+        pump_displacement=discharged,
+        pump_rate=discharged / period,
+        surface_card_work=surface,
+        pump_card_work=pump_work,
+        damping_dissipation=fields.dissipation,
+        energy_residual=(surface - pump_work - fields.dissipation) / surface if surface != 0 else 0.0,
+        polished_rod_power=surface / period,
+        period=period,
+        convergence=convergence,
+    )
+    return Prediction(
+        time=time,
+        crank_angle=angle,
+        polished_rod_position=position,
+        polished_rod_velocity=velocity,
+        polished_rod_load=polished,
+        plunger_position=plunger,
+        pump_load=load,
+        chamber_pressure=pump.discharge_pressure - load / pump.plunger_area,
+        taper_top_load=joint[:-1],
+        taper_bottom_load=joint[1:],
+        summary=summary,
+    )
