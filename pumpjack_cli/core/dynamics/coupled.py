@@ -38,8 +38,8 @@ from .coefficients import Machine, gravity_torque, reduced_inertia
 TABLE_STEPS = 8192
 #: Revolutions marched at most.
 MAX_REVOLUTIONS = 200
-#: Fixed-point passes of the machine's step.
-_PASSES = 8
+#: Newton steps at most in the machine's implicit step.
+_PASSES = 12
 
 
 @dataclass(frozen=True)
@@ -109,17 +109,19 @@ class _Tables:
         self.rows = columns.tolist()
         self.scale = TABLE_STEPS / (2.0 * np.pi)
 
-    def at(self, theta: float) -> list[float]:
+    def at(self, theta: float) -> tuple[float, float, float, float, float, float]:
         x = (theta % (2.0 * np.pi)) * self.scale
         i = min(int(x), TABLE_STEPS - 1)
         f = x - i
-        lo, hi = self.rows[i], self.rows[i + 1]
-        return [a + f * (b - a) for a, b in zip(lo, hi)]
+        (s0, t0, d0, i0, r0, g0), (s1, t1, d1, i1, r1, g1) = self.rows[i], self.rows[i + 1]
+        return (s0 + f * (s1 - s0), t0 + f * (t1 - t0), d0 + f * (d1 - d0), i0 + f * (i1 - i0), r0 + f * (r1 - r0),
+                g0 + f * (g1 - g0))
 
 
 class _Channels:
-    """Scalar kernels of one step size: the rod end's downward velocity and the top's dynamic
-    force per unit hat-shaped sample of pump load F and top drive a, and the modal bookkeeping."""
+    """Scalar kernels of one step size: the rod end's downward velocity and displacement and the
+    top's dynamic force per unit hat-shaped sample of pump load F and top drive a, and the
+    modal bookkeeping."""
 
     def __init__(self, model: WellModel, step: float, samples: int):
         m = model.modes
@@ -136,17 +138,19 @@ class _Channels:
         self.force_load[0] += m.residual_transmission[0]
         self.force_drive = -(stiffness * m.participation) @ q
         self.force_drive[0] -= m.residual_mass[0]
+        self.position_load = m.bottom**2 @ q
+        self.position_load[0] += m.residual_compliance
+        self.position_drive = -(m.bottom * m.participation) @ q
         self.reversed = [k[::-1].copy() for k in (self.velocity_load, self.velocity_drive, self.force_load,
-                                                   self.force_drive)]
+                                                   self.force_drive, self.position_load, self.position_drive)]
         self.tail = response.hat[:, samples:0:-1].copy()
 
-    def carried(self, model: WellModel, carry: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray]:
-        """Rod-end velocity and top force at the block's samples from the modal states carried in."""
+    def carried(self, model: WellModel, carry: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Rod-end velocity and displacement and top force at the block's samples from the modal states carried in."""
         m = model.modes
         states = carry[:, None] * self.response.powers[:, :samples]
-        velocity = m.bottom @ modal_velocity(m, states)
-        force = (m.participation * m.frequency**2) @ (states.imag / m.damped_frequency[:, None])
-        return velocity, force
+        q = states.imag / m.damped_frequency[:, None]
+        return m.bottom @ modal_velocity(m, states), m.bottom @ q, (m.participation * m.frequency**2) @ q
 
 
 def _extreme(values, time, angle, pick) -> CardExtreme:
@@ -226,7 +230,7 @@ class _CoupledMarch:
         forcing = m.bottom[:, None] * load[None, :] - m.participation[:, None] * drive[None, :]
         states = periodic_states(model.response, forcing)
         self.carry = states[:, 1] - model.response.hat[:, 0] * forcing[:, 1]
-        self.last_load = float(load[0])
+        self.last_load, self.last_position = float(load[0]), -float(uniform.plunger_position[0])
         f_o = model.pump.fluid_load
         self.chamber = PumpChamber(model.pump, 0.0, (f_o - load[0]) / model.pump.tubing_stiffness
                                    + uniform.plunger_position[0])
@@ -263,16 +267,18 @@ class _CoupledMarch:
         ch = _Channels(model, h, n)
         tubing = 1.0 / (model.pump.tubing_stiffness * h)
         self.chamber.compliance = h * (float(ch.velocity_load[0]) + tubing)
-        carry_velocity, carry_force = ch.carried(model, self.carry, n)
+        carry_velocity, carry_position, carry_force = ch.carried(model, self.carry, n)
         carry_velocity[0] -= m.residual_compliance / h * self.last_load
-        carry_velocity, carry_force = carry_velocity.tolist(), (carry_force + model.buoyant_weight).tolist()
-        r_vl, r_vd, r_fl, r_fd = ch.reversed
+        carry_velocity, carry_position = carry_velocity.tolist(), carry_position.tolist()
+        carry_force = (carry_force + model.buoyant_weight).tolist()
+        r_vl, r_vd, r_fl, r_fd, r_pl, r_pd = ch.reversed
+        stretch, give = model.pump.fluid_load / model.pump.tubing_stiffness, 1.0 / model.pump.tubing_stiffness
         vd0, fl0, fd0 = float(ch.velocity_drive[0]), float(ch.force_load[0]), float(ch.force_drive[0])
         c = m.damping
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
         load, drive = np.zeros(n), np.zeros(n)
         rows = np.empty((n, 8))
-        theta_p, omega_p, eps_p, load_p = self.theta, self.omega, self.epsilon, self.last_load
+        theta_p, omega_p, eps_p, load_p, down = self.theta, self.omega, self.epsilon, self.last_load, self.last_position
         start = theta_p
         chamber = self.chamber
         for k in range(n):
@@ -281,31 +287,34 @@ class _CoupledMarch:
                        + float(np.dot(r_vd[n - k:n], past_drive)))
             f_known = (carry_force[k] + float(np.dot(r_fl[n - k:n], past_load))
                        + float(np.dot(r_fd[n - k:n], past_drive)))
-            theta, omega, eps = theta_p + h * omega_p + 0.5 * h * h * eps_p, omega_p + h * eps_p, eps_p
+            omega = omega_p + h * eps_p
             f_k = load_p
             for sweep in range(2):
                 for _ in range(_PASSES):
+                    theta = theta_p + 0.5 * h * (omega_p + omega)
                     s, tf, tf1, inertia, rate, grav = tables.at(theta)
+                    mass = inertia - fd0 * tf * tf
                     force = f_known + fl0 * f_k - fd0 * (tf1 * omega * omega + c * tf * omega)
-                    eps = ((a_u + b_u2 * omega - grav - tf * force - 0.5 * rate * omega * omega)
-                           / (inertia - fd0 * tf * tf))
-                    omega_new = omega_p + 0.5 * h * (eps_p + eps)
-                    theta_new = theta_p + 0.5 * h * (omega_p + omega_new)
-                    settled = abs(omega_new - omega) <= 1e-15 * omega
-                    theta, omega = theta_new, omega_new
-                    if settled:
+                    eps = (a_u + b_u2 * omega - grav - tf * force - 0.5 * rate * omega * omega) / mass
+                    slope = (b_u2 + tf * fd0 * (2.0 * tf1 * omega + c * tf) - rate * omega) / mass
+                    residual = omega - omega_p - 0.5 * h * (eps_p + eps)
+                    omega -= residual / (1.0 - 0.5 * h * slope)
+                    if abs(residual) <= 1e-14 * omega:
                         break
+                omega = omega_p + 0.5 * h * (eps_p + eps)
+                theta = theta_p + 0.5 * h * (omega_p + omega)
                 a_k = -(tf1 * omega * omega + tf * eps + c * tf * omega)
                 if sweep == 0:
                     rate_zeta = tubing * load_p - (v_known - tf * omega + vd0 * a_k)
-                    f_k, zeta = chamber.step(chamber.position + h * rate_zeta)
-            s, tf, tf1, inertia, rate, grav = tables.at(theta)
+                    f_k, zeta = chamber.step(stretch - give * load_p - down + h * rate_zeta)
             load[k], drive[k] = f_k, a_k
+            down = (carry_position[k] - s + float(np.dot(r_pl[n - k:n + 1], load[:k + 1]))
+                    + float(np.dot(r_pd[n - k:n + 1], drive[:k + 1])))
             rows[k] = (theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav)
             theta_p, omega_p, eps_p, load_p = theta, omega, eps, f_k
         forcing_sum = m.bottom * (ch.tail @ load) - m.participation * (ch.tail @ drive)
         self.carry = ch.response.powers[:, n] * self.carry + forcing_sum
-        self.theta, self.omega, self.epsilon, self.last_load = theta_p, omega_p, eps_p, load_p
+        self.theta, self.omega, self.epsilon, self.last_load, self.last_position = theta_p, omega_p, eps_p, load_p, down
         target = 2.0 * np.pi * (revolution + 2) - theta_p
         self.step = h * target / (theta_p - start)
         return _Revolution(h, rows, load, drive)

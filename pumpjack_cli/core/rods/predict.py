@@ -29,7 +29,7 @@ import numpy as np
 
 from ...errors import PredictionError
 from ..constants import STANDARD_GRAVITY
-from .predict_modes import RodModes, StepResponse, damping_coefficient, periodic_states, rod_modes, step_response
+from .predict_modes import RodModes, StepResponse, periodic_states, rod_modes, step_response
 from .pump import Pump, PumpChamber
 from .string import RodString
 
@@ -37,7 +37,8 @@ from .string import RodString
 STEEL_DENSITY = 7850.0
 DEFAULT_TOLERANCE = 1e-8
 MAX_CYCLES = 400
-#: Modes are kept up to this multiple of the Nyquist frequency pi / h; above, quasi-statically.
+#: Modes are kept up to this multiple of the Nyquist frequency pi / h; above, quasi-statically
+#: (none at all when the cycle is slow against the rods' periods: the quasi-static limit).
 MODE_CUTOFF = 2.0
 
 
@@ -128,8 +129,9 @@ class WellModel:
     """The rod string, pump and fluid of one well, reduced to what the solvers need (SI).
 
     modes of the string; response: exact steps of length ``response.step`` [s];
-    velocity_kernel[n] [m/(s N)]: the rod end's downward velocity (limit from the left)
-    at lag n after a unit hat-shaped pump-load sample, residual compliance included;
+    velocity_kernel[n] [m/(s N)] and position_kernel[n] [m/N]: the rod end's downward
+    velocity (limit from the left) and displacement at lag n after a unit hat-shaped
+    pump-load sample, residual compliance included;
     buoyant_weight W_rf [N]; weight_below [N]: buoyant weight below each joint (top .. pump).
     """
 
@@ -138,6 +140,7 @@ class WellModel:
     modes: RodModes
     response: StepResponse
     velocity_kernel: np.ndarray
+    position_kernel: np.ndarray
     buoyant_weight: float
     weight_below: np.ndarray
 
@@ -185,8 +188,8 @@ def well_model(rods: RodString, pump: Pump, *, damping: float, step: float, samp
     modes = rod_modes(rods, damping, MODE_CUTOFF * np.pi / step)
     masses = rods.mass_per_length * rods.length * gravity * (1.0 - fluid_density / rod_density)
     below = np.append(np.cumsum(masses[::-1])[::-1], 0.0)
-    return with_step(WellModel(rods, pump, modes, step_response(modes, step, 1), np.zeros(2), float(below[0]), below),
-                     step, samples)
+    return with_step(WellModel(rods, pump, modes, step_response(modes, step, 1), np.zeros(2), np.zeros(2),
+                               float(below[0]), below), step, samples)
 
 
 def with_step(model: WellModel, step: float, samples: int) -> WellModel:
@@ -197,7 +200,9 @@ def with_step(model: WellModel, step: float, samples: int) -> WellModel:
     kernel = modes.bottom**2 @ modal_velocity(modes, response.hat)
     kernel[0] += modes.residual_compliance / step
     kernel[1] -= modes.residual_compliance / step
-    return replace(model, response=response, velocity_kernel=kernel)
+    position = (modes.bottom**2 / modes.damped_frequency) @ response.hat.imag
+    position[0] += modes.residual_compliance
+    return replace(model, response=response, velocity_kernel=kernel, position_kernel=position)
 
 
 def spectral_derivatives(values: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
@@ -252,45 +257,56 @@ class PumpMarch:
     """The pump marched against the rods, one cycle of N samples at a time (module docstring).
 
     At each sample the rod end's left-limit velocity is affine in the new pump load,
-    v = known - Y_0 F; the pump integrates its relative position by the backward Euler
-    rule, zeta_n = zeta_{n-1} + h zeta'_n, and applies its valve laws (the plunger held
-    still means zero velocity, so the load is set by the incoming waves without the
-    ringing of a position constraint). Holds the modal states carried from earlier
-    cycles (``carry``), the last pump load and the chamber.
+    v = known - Y_0 F. The pump predicts the plunger position relative to the barrel
+    from the exact position of the last sample, zeta_n = zeta_{n-1} + h zeta'_n (backward
+    Euler), and applies its valve laws: held still, the plunger's velocity is zero and
+    any slide of the exact position since the plunger was stopped is steered back in
+    the next step (a position constraint on the samples alone would ring: a load
+    alternating from sample to sample moves a wave-like rod end by nothing there).
+    Holds the modal states carried from earlier cycles (``carry``), the last pump load,
+    the rod end's last exact downward position and the chamber.
     """
 
-    def __init__(self, model: WellModel, chamber: PumpChamber, carry: np.ndarray, last_load: float):
-        self.model, self.chamber, self.carry, self.last_load = model, chamber, carry, last_load
+    def __init__(self, model: WellModel, chamber: PumpChamber, carry: np.ndarray, last_load: float,
+                 last_position: float):
+        self.model, self.chamber, self.carry = model, chamber, carry
+        self.last_load, self.last_position = last_load, last_position
         n = model.response.hat.shape[1] - 1
-        self.reversed_kernel = model.velocity_kernel[::-1].copy()
+        self.reversed_velocity = model.velocity_kernel[::-1].copy()
+        self.reversed_position = model.position_kernel[::-1].copy()
         self.tail = model.response.hat[:, n:0:-1].copy()
         self.samples = n
 
-    def carried(self) -> np.ndarray:
-        """Downward velocity [m/s] of the rod end at the cycle's samples due to earlier pump loads."""
+    def carried(self) -> tuple[np.ndarray, np.ndarray]:
+        """Downward velocity [m/s] and displacement [m] of the rod end at the cycle's samples
+        due to earlier pump loads."""
         m = self.model.modes
         states = (m.bottom * self.carry)[:, None] * self.model.response.powers[:, :self.samples]
-        return np.sum(modal_velocity(m, states), axis=0)
+        return np.sum(modal_velocity(m, states), axis=0), (states.imag / m.damped_frequency[:, None]).sum(axis=0)
 
-    def cycle(self, known_velocity: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def cycle(self, known_velocity: np.ndarray, known_position: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Pump load [N] and plunger position relative to the barrel [m] over one cycle;
-        ``known_velocity`` is the rod end's downward velocity [m/s] due to the top motion."""
+        ``known_velocity`` and ``known_position`` are the rod end's downward velocity [m/s] and
+        displacement [m] due to the top motion."""
         n, model = self.samples, self.model
         h, tubing = model.response.step, model.tubing_rate
-        base = known_velocity + self.carried()
-        base[0] -= model.modes.residual_compliance / h * self.last_load
-        base = base.tolist()
-        kernel, chamber = self.reversed_kernel, self.chamber
+        carried_velocity, carried_position = self.carried()
+        velocity = known_velocity + carried_velocity
+        velocity[0] -= model.modes.residual_compliance / h * self.last_load
+        velocity, position_base = velocity.tolist(), (known_position + carried_position).tolist()
+        r_velocity, r_position, chamber = self.reversed_velocity, self.reversed_position, self.chamber
+        stretch, give = model.pump.fluid_load / model.pump.tubing_stiffness, 1.0 / model.pump.tubing_stiffness
         load = np.zeros(n)
         position = np.empty(n)
-        previous = self.last_load
+        previous, down = self.last_load, self.last_position
         for k in range(n):
-            rate = tubing * previous - base[k] - float(np.dot(kernel[n - k:n], load[:k]))
-            previous, position[k] = chamber.step(chamber.position + h * rate)
+            rate = tubing * previous - velocity[k] - float(np.dot(r_velocity[n - k:n], load[:k]))
+            previous, position[k] = chamber.step(stretch - give * previous - down + h * rate)
             load[k] = previous
+            down = position_base[k] + float(np.dot(r_position[n - k:n + 1], load[:k + 1]))
         m = model.modes
         self.carry = model.response.powers[:, n] * self.carry + m.bottom * (self.tail @ load)
-        self.last_load = previous
+        self.last_load, self.last_position = previous, down
         return load, position
 
 
@@ -302,7 +318,7 @@ def periodic_carry(model: WellModel, pump_load: np.ndarray) -> tuple[np.ndarray,
     return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0], states
 
 
-def converge(march: PumpMarch, known_velocity: np.ndarray, load_scale: float, position_scale: float,
+def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float,
              tolerance: float, max_cycles: int) -> tuple[np.ndarray, np.ndarray, float, Convergence]:
     """March cycles until the largest relative change of pump load and plunger position is below
     tolerance; returns the last cycle's load and position, the liquid it discharged [m^3], and how."""
@@ -310,7 +326,7 @@ def converge(march: PumpMarch, known_velocity: np.ndarray, load_scale: float, po
     previous = None
     for _ in range(max_cycles):
         discharged = march.chamber.discharge
-        load, position = march.cycle(known_velocity)
+        load, position = march.cycle(known.plunger_velocity_down, known.plunger_down)
         if previous is not None:
             shift = position - previous[1]
             changes.append(max(float(np.max(np.abs(load - previous[0]))) / load_scale,
@@ -387,9 +403,8 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
     carry, _ = periodic_carry(model, guess)
     start = periodic_fields(model, guess, -s, -velocity, top_drive).plunger_down[-1]
     chamber = PumpChamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start)
-    march = PumpMarch(model, chamber, carry, float(guess[-1]))
-    load, _, discharged, convergence = converge(march, driven.plunger_velocity_down, max(f_o, 1.0), stroke,
-                                                tolerance, max_cycles)
+    march = PumpMarch(model, chamber, carry, float(guess[-1]), float(start))
+    load, _, discharged, convergence = converge(march, driven, max(f_o, 1.0), stroke, tolerance, max_cycles)
     angle = np.full(samples, np.nan) if crank_angle is None else np.asarray(crank_angle, dtype=float)
     time = np.arange(samples) * (period / samples)
     return assemble(model, time, angle, s, velocity, top_drive, load, discharged, period, convergence)

@@ -133,7 +133,8 @@ def _frequencies(rods: RodString, omega_cut: float) -> np.ndarray:
 
 
 def rod_modes(rods: RodString, damping: float, omega_cut: float) -> RodModes:
-    """The modes of the string up to omega_cut [rad/s] with Gibbs damping nu (module docstring).
+    """The modes of the string up to omega_cut [rad/s] with Gibbs damping nu (module docstring);
+    none if omega_cut is below the first: the string is then quasi-static.
 
     Each taper's shape is phi = A cos(k xi) + B sin(k xi), k = omega / a_i, xi from the
     taper top; the integrals int m phi^2 and int m phi over a taper are elementary.
@@ -145,13 +146,13 @@ def rod_modes(rods: RodString, damping: float, omega_cut: float) -> RodModes:
     [1.0, 3.0, 5.0]
     """
     c = damping_coefficient(rods, damping)
-    omega = _frequencies(rods, omega_cut)
-    if omega.size == 0 or not omega[0] > 0.5 * c:
-        first = float(_frequencies(rods, 4.0 * np.pi / travel_time(rods))[0])
+    first = float(_frequencies(rods, 4.0 * np.pi / travel_time(rods))[0])
+    if not first > 0.5 * c:
         raise PredictionError(
             f"damping factor {damping:g} is too large: c = {c:.4g} 1/s makes the first mode "
             f"({first:.4g} rad/s) overdamped (needs c / 2 < omega_1)"
         )
+    omega = _frequencies(rods, omega_cut)
     tops_phi, tops_force, bottom_phi, _ = _transfer(rods, omega)
     norm = np.zeros_like(omega)
     taper_integrals = []

@@ -14,8 +14,9 @@ pressure below it, A_p the gross plunger area. This net plunger load F lies in
   chamber holds the plunger still while the load transfers. The part 1 - f of the
   swept volume the liquid does not fill (fillage f) is either vapour at the intake
   pressure that collapses without resistance (fluid pound: the load stays F_o until
-  the plunger hits the liquid) or, as an option, a polytropic gas p V^n = const
-  (gas interference), expelled first when the travelling valve opens.
+  the plunger hits the liquid; at zero fillage it never does, so the column stays on
+  the plunger and the load never transfers) or, as an option, a polytropic gas
+  p V^n = const (gas interference), expelled first when the travelling valve opens.
 
 Unanchored tubing is a spring k_t = E_t A_t / L_t at the pump: it carries F_o - F (the
 part of the fluid load not on the plunger) and moves the barrel by -(F_o - F)/k_t, so
@@ -195,7 +196,7 @@ class PumpChamber:
     def step(self, known: float) -> tuple[float, float]:
         """Pump load F [N] and plunger position zeta [m] of the new sample."""
         gas_volume = self.volume - self.liquid
-        if gas_volume > 0.0:
+        if gas_volume > 0.0 or self.fillage == 0.0 == self.exponent:
             if self.exponent == 0.0:
                 load, position = self._vapour(known, gas_volume)
             else:
@@ -237,13 +238,14 @@ class PumpChamber:
         return trial, self.position
 
     def _vapour(self, known: float, vapour: float) -> tuple[float, float]:
-        """Vapour at the intake pressure: full load until the plunger meets the liquid."""
+        """Vapour at the intake pressure: full load until the plunger meets the liquid (never,
+        at zero fillage: no liquid enters, the travelling valve never opens)."""
         position = known - self.compliance * self.fluid_load
         swept = self.area * (position - self.position)
         if swept >= 0.0:
             self._admit(swept)
             return self.fluid_load, position
-        if vapour + swept >= 0.0:
+        if vapour + swept >= 0.0 or self.fillage == 0.0:
             self.volume += swept
             return self.fluid_load, position
         self.position -= vapour / self.area
