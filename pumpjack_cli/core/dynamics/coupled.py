@@ -50,7 +50,9 @@ class CoupledSummary:
     at the motor shaft (motor_torque) and on the crank shaft from the gearbox
     (gearbox_torque = M_drive - I_drive epsilon); inertia torque I epsilon + 1/2 I' omega^2
     of links and drive; motor_work and polished_rod_work per cycle [J] and their relative
-    difference energy_residual; revolutions marched and their largest relative change.
+    difference energy_residual; breakdown_torque_margin = pull-out torque / largest motor
+    torque (below 1 the linear motor characteristic is used beyond its validity: the motor
+    would stall); revolutions marched and their largest relative change.
     """
 
     mean_speed: float
@@ -69,6 +71,7 @@ class CoupledSummary:
     motor_work: float
     polished_rod_work: float
     energy_residual: float
+    breakdown_torque_margin: float
     convergence: Convergence
 
 
@@ -356,6 +359,7 @@ class _CoupledMarch:
             motor_work=motor_work,
             polished_rod_work=rod_work,
             energy_residual=(motor_work - rod_work) / motor_work,
+            breakdown_torque_margin=machine.motor.breakdown_torque / float(np.max(np.abs(drive_torque)) / machine.drive_ratio),
             convergence=convergence,
         )
         return CoupledPrediction(cards, omega, eps, drive_torque / machine.drive_ratio, gearbox, load_torque,
