@@ -26,11 +26,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import PredictionError
-from ..rods.predict import (DEFAULT_TOLERANCE, STEEL_DENSITY, CardExtreme, Convergence, Prediction, PumpChamber,
-                            WellModel, assemble, modal_velocity, predict, spectral_derivatives, well_model,
-                            with_step)
+from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.pump import Pump
+from ..rods.predict_solver import (STEEL_DENSITY, Convergence, WellModel, modal_velocity, spectral_derivatives,
+                                   well_model, with_step)
+from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString
 from .coefficients import Machine, gravity_torque, reduced_inertia
 
@@ -154,11 +154,6 @@ class _Channels:
         states = carry[:, None] * self.response.powers[:, :samples]
         q = states.imag / m.damped_frequency[:, None]
         return m.bottom @ modal_velocity(m, states), m.bottom @ q, (m.participation * m.frequency**2) @ q
-
-
-def _extreme(values, time, angle, pick) -> CardExtreme:
-    i = int(pick(values))
-    return CardExtreme(float(values[i]), float(time[i]), float(angle[i]))
 
 
 def predict_coupled(machine: Machine, rods: RodString, pump: Pump, *, damping: float, fluid_density: float,
@@ -344,17 +339,17 @@ class _CoupledMarch:
         mean = 2.0 * np.pi / period
         summary = CoupledSummary(
             mean_speed=mean,
-            max_speed=_extreme(omega, time, angle, np.argmax),
-            min_speed=_extreme(omega, time, angle, np.argmin),
+            max_speed=card_extreme(omega, time, angle, np.argmax),
+            min_speed=card_extreme(omega, time, angle, np.argmin),
             speed_fluctuation=float(np.ptp(omega)) / mean,
-            max_acceleration=_extreme(eps, time, angle, np.argmax),
-            min_acceleration=_extreme(eps, time, angle, np.argmin),
-            peak_motor_torque=_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmax),
-            min_motor_torque=_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmin),
-            peak_gearbox_torque=_extreme(gearbox, time, angle, np.argmax),
-            min_gearbox_torque=_extreme(gearbox, time, angle, np.argmin),
-            peak_inertia_torque=_extreme(inertia_torque, time, angle, np.argmax),
-            min_inertia_torque=_extreme(inertia_torque, time, angle, np.argmin),
+            max_acceleration=card_extreme(eps, time, angle, np.argmax),
+            min_acceleration=card_extreme(eps, time, angle, np.argmin),
+            peak_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmax),
+            min_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmin),
+            peak_gearbox_torque=card_extreme(gearbox, time, angle, np.argmax),
+            min_gearbox_torque=card_extreme(gearbox, time, angle, np.argmin),
+            peak_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmax),
+            min_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmin),
             period=period,
             motor_work=motor_work,
             polished_rod_work=rod_work,

@@ -142,7 +142,7 @@ def rod_modes(rods: RodString, damping: float, omega_cut: float) -> RodModes:
     >>> rods = RodString(np.array([1000.0]), np.array([2.85e-4]), np.array([2.05e11]), np.array([2.0]))
     >>> m = rod_modes(rods, 0.1, 100.0)
     >>> a = float(rods.wave_speed[0])
-    >>> [round(w * 2 * 1000.0 / (np.pi * a), 9) for w in m.frequency[:3]]   # (2k - 1) pi a / (2 L)
+    >>> [round(float(w) * 2 * 1000.0 / (np.pi * a), 9) for w in m.frequency[:3]]   # (2k - 1) pi a / (2 L)
     [1.0, 3.0, 5.0]
     """
     c = damping_coefficient(rods, damping)
