@@ -28,7 +28,7 @@ import numpy as np
 from ...errors import PredictionError
 from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.predict_solver import (STEEL_DENSITY, Convergence, WellModel, modal_velocity, spectral_derivatives,
+from ..rods.predict_solver import (STEEL_DENSITY, STEERING, Convergence, WellModel, modal_velocity, spectral_derivatives,
                                    well_model, with_step)
 from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString
@@ -304,7 +304,8 @@ class _CoupledMarch:
                 a_k = -(tf1 * omega * omega + tf * eps + c * tf * omega)
                 if sweep == 0:
                     rate_zeta = tubing * load_p - (v_known - tf * omega + vd0 * a_k)
-                    f_k, zeta = chamber.step(stretch - give * load_p - down + h * rate_zeta)
+                    exact = stretch - give * load_p - down
+                    f_k, zeta = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate_zeta)
             load[k], drive[k] = f_k, a_k
             down = (carry_position[k] - s + float(np.dot(r_pl[n - k:n + 1], load[:k + 1]))
                     + float(np.dot(r_pd[n - k:n + 1], drive[:k + 1])))

@@ -19,6 +19,8 @@ from .string import RodString
 
 #: Density of steel rods for their buoyancy [kg/m^3] (RP 11L's 490 lb/ft^3 is 7849 kg/m^3).
 STEEL_DENSITY = 7850.0
+#: Share of the held rod end's slide fed back to the pump at each step (PumpMarch).
+STEERING = 0.5
 #: Modes are kept up to this multiple of the Nyquist frequency pi / h; above, quasi-statically
 #: (none at all when the cycle is slow against the rods' periods: the quasi-static limit).
 MODE_CUTOFF = 2.0
@@ -173,12 +175,14 @@ class PumpMarch:
     """The pump marched against the rods, one cycle of N samples at a time (module docstring).
 
     At each sample the rod end's left-limit velocity is affine in the new pump load,
-    v = known - Y_0 F. The pump predicts the plunger position relative to the barrel
-    from the exact position of the last sample, zeta_n = zeta_{n-1} + h zeta'_n (backward
-    Euler), and applies its valve laws: held still, the plunger's velocity is zero and
-    any slide of the exact position since the plunger was stopped is steered back in
-    the next step (a position constraint on the samples alone would ring: a load
-    alternating from sample to sample moves a wave-like rod end by nothing there).
+    v = known - Y_0 F. The pump predicts the plunger position relative to the barrel,
+    zeta_n = zeta_{n-1} + h zeta'_n (backward Euler), and applies its valve laws: held
+    still, the plunger's velocity is zero (a position constraint on the samples alone
+    would ring: a load alternating from sample to sample moves a wave-like rod end by
+    nothing there). Between samples the held rod end still slides a little; half of the
+    difference between the exact position of the last sample and the pump's own is fed
+    back at each step (``STEERING``), which keeps the slide second order in the step;
+    a full correction rings in long, lightly damped holds.
     Holds the modal states carried from earlier cycles (``carry``), the last pump load,
     the rod end's last exact downward position and the chamber.
     """
@@ -217,7 +221,8 @@ class PumpMarch:
         previous, down = self.last_load, self.last_position
         for k in range(n):
             rate = tubing * previous - velocity[k] - float(np.dot(r_velocity[n - k:n], load[:k]))
-            previous, position[k] = chamber.step(stretch - give * previous - down + h * rate)
+            exact = stretch - give * previous - down
+            previous, position[k] = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate)
             load[k] = previous
             down = position_base[k] + float(np.dot(r_position[n - k:n + 1], load[:k + 1]))
         m = model.modes
