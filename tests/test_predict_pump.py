@@ -123,6 +123,8 @@ def _position(n=64):
      "overdamped"),
     (lambda: predict(_rods(), Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=9000.0),
      "fluid density 9000"),
+    (lambda: predict(_rods(), Pump(AREA, P_D, P_I), _position(40000), 5.0, damping=0.1, fluid_density=800.0),
+     "use fewer samples per cycle"),
     (lambda: predict(RodString(np.array([1.0, 2.0]), np.array([1e-4]), np.array([2e11]), np.array([1.0])),
                      Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=800.0),
      "equal length"),

@@ -19,6 +19,8 @@ from .string import RodString
 
 #: Density of steel rods for their buoyancy [kg/m^3] (RP 11L's 490 lb/ft^3 is 7849 kg/m^3).
 STEEL_DENSITY = 7850.0
+#: Largest modes x samples the kernels may hold (complex arrays of this size are kept).
+MAX_KERNEL_SIZE = 10_000_000
 #: Share of the held rod end's slide fed back to the pump at each step (PumpMarch).
 STEERING = 0.5
 #: Modes are kept up to this multiple of the Nyquist frequency pi / h; above, quasi-statically
@@ -104,6 +106,10 @@ def well_model(rods: RodString, pump: Pump, *, damping: float, step: float, samp
     if not (np.isfinite(fluid_density) and 0 <= fluid_density < rod_density):
         raise PredictionError(f"fluid density {fluid_density} kg/m³ must lie between 0 and the rod density {rod_density}")
     modes = rod_modes(rods, damping, MODE_CUTOFF * np.pi / step)
+    if modes.count * (samples + 1) > MAX_KERNEL_SIZE:
+        raise PredictionError(
+            f"{samples} samples per cycle keep {modes.count} modes of this string, more than the solver's "
+            f"{MAX_KERNEL_SIZE:.0e} kernel entries: use fewer samples per cycle")
     masses = rods.mass_per_length * rods.length * gravity * (1.0 - fluid_density / rod_density)
     below = np.append(np.cumsum(masses[::-1])[::-1], 0.0)
     return with_step(WellModel(rods, pump, modes, step_response(modes, step, 1), np.zeros(2), np.zeros(2),
