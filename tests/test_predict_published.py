@@ -22,8 +22,8 @@ loads"); the sheet reads RP 11L's figures through its own curve fits; and the da
 and the unit's exact motion are not RP 11L inputs. The polished-rod motion used here is
 that of the API conventional unit C-114D-133-54 (Guo et al. 2007, Table 12.1) scaled to
 86 in (the kinematics is homogeneous in length), clockwise. Each quantity is asserted
-within 10 % for Gibbs damping 0.05 and 0.1 (measured: PPRL +4 to +5 %, MPRL -7 to -9 %,
-Sp -4 to -6 %); docs/predict.md tabulates more.
+within 10 % for Gibbs damping 0.05 and 0.1 (measured: PPRL +4.3 and +5.2 %, MPRL -6.3 and
+-8.9 %, Sp -3.1 and -4.8 %); docs/predict.md tabulates more.
 """
 
 from __future__ import annotations

@@ -185,10 +185,11 @@ class PumpMarch:
     zeta_n = zeta_{n-1} + h zeta'_n (backward Euler), and applies its valve laws: held
     still, the plunger's velocity is zero (a position constraint on the samples alone
     would ring: a load alternating from sample to sample moves a wave-like rod end by
-    nothing there). Between samples the held rod end still slides a little; half of the
-    difference between the exact position of the last sample and the pump's own is fed
-    back at each step (``STEERING``), which keeps the slide second order in the step;
-    a full correction rings in long, lightly damped holds.
+    nothing there, the trapezoidal rule's weakness on constraints [HairerWanner1996]).
+    Between samples the held rod end still slides a little; half of the difference
+    between the exact position of the last sample and the pump's own is fed back at each
+    step (``STEERING``, a constraint stabilisation after [Baumgarte1972]), which keeps the
+    slide second order in the step; a full correction rings in long, lightly damped holds.
     Holds the modal states carried from earlier cycles (``carry``), the last pump load,
     the rod end's last exact downward position and the chamber.
     """
