@@ -7,6 +7,9 @@ Independent references:
 * the motor's linear characteristic M = a u + b u^2 omega: its work per revolution over
   2 pi is the crank-angle mean of M, a u + b u^2 <omega>_theta, with
   <omega>_theta = int omega dtheta / 2 pi = int omega^2 dt / 2 pi;
+* energy: over a periodic cycle the links' kinetic energy and the weights' potential
+  energy return, so the motor's work equals the polished-rod work, and at every sample
+  the torques balance;
 * seed 004's SK8-3,5-4000 data ([SK8Rotation2013]), built from configs/ as `pumpjack
   dynamics` does, with the seed well's rods 25/22/19 mm (23/26/51 %, largest at the top).
 
@@ -51,6 +54,11 @@ def sk8():
     return build_machine(load_unit("sk8-3.5-4000"))
 
 
+@pytest.fixture(scope="module")
+def coupled(sk8):
+    return predict_coupled(sk8, _rods(), _pump(), damping=0.1, fluid_density=820.0, samples=512)
+
+
 def test_stiff_motor_gives_the_uniform_rotation_cards(sk8):
     # Slip 0.5 rpm: b u^2 = 4.3e7 N m s, so the torque swing of ~50 kN m moves the crank speed
     # by ~1e-3 of its mean (measured 1.3e-3). The cards then match the uniform-rotation
@@ -69,10 +77,9 @@ def test_stiff_motor_gives_the_uniform_rotation_cards(sk8):
     assert coupled.cards.summary.net_plunger_stroke == pytest.approx(uniform.summary.net_plunger_stroke, rel=1e-3)
 
 
-def test_mean_motor_torque_fixes_the_mean_speed(sk8):
+def test_mean_motor_torque_fixes_the_mean_speed(sk8, coupled):
     # Motor work per revolution / 2 pi = a u + b u^2 <omega>_theta, <omega>_theta = sum omega^2 h / 2 pi
     # (measured 1.3e-10; the same sums on both sides, so only the bookkeeping is tested to 1e-8).
-    coupled = predict_coupled(sk8, _rods(), _pump(), damping=0.1, fluid_density=820.0, samples=512)
     s = coupled.summary
     h = s.period / 512
     a_u, b_u2 = sk8.motor.a * sk8.drive_ratio, sk8.motor.b * sk8.drive_ratio**2
@@ -84,3 +91,25 @@ def test_mean_motor_torque_fixes_the_mean_speed(sk8):
         coupled.cards.crank_angle[0] == pytest.approx(2 * np.pi, abs=1e-9)
     # This well overloads the 30 kW motor of seed 004 when the rods are elastic (docs/predict.md).
     assert s.breakdown_torque_margin < 1.0
+
+
+def test_coupled_motor_work_is_polished_rod_work(coupled):
+    # Measured 6e-7 at 512 samples per revolution (trapezoidal rule on the machine).
+    s = coupled.summary
+    assert s.motor_work == pytest.approx(s.polished_rod_work, rel=1e-4)
+    # The cards' surface work leaves out W_rf x (sum of the velocity samples x h), ~2e-6 m over a cycle.
+    assert s.polished_rod_work == pytest.approx(coupled.cards.summary.surface_card_work, rel=1e-5)
+    cards = coupled.cards.summary
+    assert cards.surface_card_work == pytest.approx(cards.pump_card_work + cards.damping_dissipation, rel=1e-4)
+
+
+def test_coupled_torques_balance_at_every_sample(sk8, coupled):
+    # M_drive = I eps + 1/2 I' omega^2 + M_gravity + P TF, sample by sample, from the reported
+    # columns (gearbox torque = M_drive - I_drive eps; load torque P TF; polished-rod velocity TF omega).
+    machine = sk8
+    drive = coupled.motor_torque * machine.drive_ratio
+    balance = coupled.inertia_torque + coupled.gravity_torque + coupled.load_torque
+    assert np.max(np.abs(drive - balance)) < 1e-6 * np.max(np.abs(drive))
+    assert np.allclose(coupled.gearbox_torque, drive - machine.drive_inertia * coupled.crank_acceleration, rtol=1e-12)
+    tf = coupled.load_torque / coupled.cards.polished_rod_load
+    assert np.allclose(coupled.cards.polished_rod_velocity, tf * coupled.crank_speed, rtol=1e-9, atol=1e-12)

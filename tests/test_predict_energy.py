@@ -9,8 +9,7 @@ surface work from the polished-rod load and velocity, the pump work from the pum
 and the plunger's motion (or from the liquid the pump discharged), the dissipation
 from the modal velocities along the whole string.
 
-With the machine, the kinetic energy of the links and the potential energy of the
-weights return as well, so the motor's work per cycle equals the polished-rod work.
+The machine's energy closure (motor work = polished-rod work) is in test_predict_coupled.py.
 
 Rod data: API rods with couplings, RP 11L Table 4.1 weights 1 in 2.904, 7/8 in 2.224,
 3/4 in 1.634 lb/ft; E = 30.5e6 psi. The SK8-3,5-4000 unit from configs/ (seed 004).
@@ -23,10 +22,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from pumpjack_cli.commands.dynamics import build_machine
-from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.geometry import Linkage
-from pumpjack_cli.core.dynamics.coupled import predict_coupled
 from pumpjack_cli.core.rods.predict import predict
 from pumpjack_cli.core.rods.pump import Pump, pump_pressures, tubing_stiffness
 from pumpjack_cli.core.rods.string import RodString
@@ -84,31 +80,3 @@ def test_surface_work_is_pump_card_work_plus_damping(samples, changes):
     assert s.surface_card_work == pytest.approx(s.pump_card_work + s.damping_dissipation, rel=1e-4)
     if "gas_exponent" in changes:
         assert s.pump_card_work > 1.1 * s.fluid_load * s.net_plunger_stroke
-
-
-@pytest.fixture(scope="module")
-def coupled():
-    machine = build_machine(load_unit("sk8-3.5-4000"))
-    return predict_coupled(machine, _rods(), _pump(), damping=0.1, fluid_density=DENSITY, samples=512)
-
-
-def test_coupled_motor_work_is_polished_rod_work(coupled):
-    # Measured 6e-7 at 512 samples per revolution (trapezoidal rule on the machine).
-    s = coupled.summary
-    assert s.motor_work == pytest.approx(s.polished_rod_work, rel=1e-4)
-    # The cards' surface work leaves out W_rf x (sum of the velocity samples x h), ~2e-6 m over a cycle.
-    assert s.polished_rod_work == pytest.approx(coupled.cards.summary.surface_card_work, rel=1e-5)
-    cards = coupled.cards.summary
-    assert cards.surface_card_work == pytest.approx(cards.pump_card_work + cards.damping_dissipation, rel=1e-4)
-
-
-def test_coupled_torques_balance_at_every_sample(coupled):
-    # M_drive = I eps + 1/2 I' omega^2 + M_gravity + P TF, sample by sample, from the reported
-    # columns (gearbox torque = M_drive - I_drive eps; load torque P TF; polished-rod velocity TF omega).
-    machine = build_machine(load_unit("sk8-3.5-4000"))
-    drive = coupled.motor_torque * machine.drive_ratio
-    balance = coupled.inertia_torque + coupled.gravity_torque + coupled.load_torque
-    assert np.max(np.abs(drive - balance)) < 1e-6 * np.max(np.abs(drive))
-    assert np.allclose(coupled.gearbox_torque, drive - machine.drive_inertia * coupled.crank_acceleration, rtol=1e-12)
-    tf = coupled.load_torque / coupled.cards.polished_rod_load
-    assert np.allclose(coupled.cards.polished_rod_velocity, tf * coupled.crank_speed, rtol=1e-9, atol=1e-12)

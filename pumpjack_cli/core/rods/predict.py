@@ -165,7 +165,7 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
     f_o = pump.fluid_load
     driven = periodic_fields(model, np.zeros(samples), -s, -velocity, top_drive)
     guess = np.where(velocity > 0.0, f_o, 0.0)
-    carry, _ = periodic_carry(model, guess)
+    carry = periodic_carry(model, guess)
     start = periodic_fields(model, guess, -s, -velocity, top_drive).plunger_down[-1]
     chamber = PumpChamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start)
     march = PumpMarch(model, chamber, carry, float(guess[-1]), float(start))

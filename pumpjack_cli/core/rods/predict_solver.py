@@ -238,12 +238,12 @@ class PumpMarch:
         return load, position
 
 
-def periodic_carry(model: WellModel, pump_load: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def periodic_carry(model: WellModel, pump_load: np.ndarray) -> np.ndarray:
     """Modal states at the first sample from the pump-load samples before it, if the pump load
-    ``pump_load`` had always repeated, and the periodic modal states themselves."""
+    ``pump_load`` had always repeated."""
     m = model.modes
     states = periodic_states(model.response, m.bottom[:, None] * pump_load[None, :])
-    return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0], states
+    return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0]
 
 
 def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float,
