@@ -32,6 +32,7 @@ from pumpjack_cli.core.dynamics.drive import motor_characteristic
 from pumpjack_cli.core.rods.predict import predict
 from pumpjack_cli.core.rods.pump import Pump, pump_pressures
 from pumpjack_cli.core.rods.string import RodString
+from pumpjack_cli.errors import PredictionError
 
 LB_PER_FT = 0.45359237 / 0.3048
 E_STEEL = 30.5e6 * 6894.757293168
@@ -113,3 +114,11 @@ def test_coupled_torques_balance_at_every_sample(sk8, coupled):
     assert np.allclose(coupled.gearbox_torque, drive - machine.drive_inertia * coupled.crank_acceleration, rtol=1e-12)
     tf = coupled.load_torque / coupled.cards.polished_rod_load
     assert np.allclose(coupled.cards.polished_rod_velocity, tf * coupled.crank_speed, rtol=1e-9, atol=1e-12)
+
+
+def test_a_motor_too_weak_for_the_well_stalls_the_crank(sk8):
+    # 0.6 kW instead of 30 kW: the linear characteristic still turns the crank on average, but the
+    # upstroke's torque stops it within the first revolution; the solver says so in one line.
+    weak = dataclasses.replace(sk8, motor=motor_characteristic(600.0, 1500 * RPM, 1460 * RPM, 2.0, 2.2))
+    with pytest.raises(PredictionError, match="the crank stalls"):
+        predict_coupled(weak, _rods(), _pump(), damping=0.1, fluid_density=820.0, samples=256)

@@ -38,6 +38,8 @@ from .coefficients import Machine, gravity_torque, reduced_inertia
 TABLE_STEPS = 8192
 #: Revolutions marched at most.
 MAX_REVOLUTIONS = 200
+#: The crank counts as stalled below this fraction of the speed the revolution started with.
+STALL_FRACTION = 1e-3
 #: Newton steps at most in the machine's implicit step.
 _PASSES = 12
 
@@ -215,7 +217,7 @@ def _positions(tables: _Tables, samples: int) -> np.ndarray:
 
 class _CoupledMarch:
     """State carried between revolutions: crank angle, speed and acceleration, modal states,
-    the last pump load and top drive, the chamber and the time step."""
+    the last pump load, the rod end's last exact position, the chamber and the time step."""
 
     def __init__(self, machine: Machine, model: WellModel, tables: _Tables, samples: int, uniform: Prediction,
                  omega: float):
@@ -306,6 +308,10 @@ class _CoupledMarch:
                     rate_zeta = tubing * load_p - (v_known - tf * omega + vd0 * a_k)
                     exact = stretch - give * load_p - down
                     f_k, zeta = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate_zeta)
+            if not omega > STALL_FRACTION * self.omega:
+                raise PredictionError(
+                    f"the crank stalls (omega1 {omega:.3g} 1/s at crank angle {np.degrees(theta) % 360:.1f} deg): "
+                    f"the motor cannot turn the unit with this well")
             load[k], drive[k] = f_k, a_k
             down = (carry_position[k] - s + float(np.dot(r_pl[n - k:n + 1], load[:k + 1]))
                     + float(np.dot(r_pd[n - k:n + 1], drive[:k + 1])))
