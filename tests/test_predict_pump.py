@@ -125,6 +125,10 @@ def _position(n=64):
      "fluid density 9000"),
     (lambda: predict(_rods(), Pump(AREA, P_D, P_I), _position(40000), 5.0, damping=0.1, fluid_density=800.0),
      "use fewer samples per cycle"),
+    (lambda: predict(_rods(), Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=800.0,
+                     crank_angle=np.zeros(3)), "one value per position sample"),
+    (lambda: predict(_rods(), Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=800.0,
+                     max_cycles=1), "at least 2 cycles"),
     (lambda: predict(RodString(np.array([1.0, 2.0]), np.array([1e-4]), np.array([2e11]), np.array([1.0])),
                      Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=800.0),
      "equal length"),
@@ -136,6 +140,12 @@ def test_bad_input_is_a_one_line_user_error(call, message):
     with pytest.raises(PredictionError, match=message) as caught:
         call()
     assert isinstance(caught.value, PumpjackError) and "\n" not in str(caught.value)
+
+
+def test_rod_sections_given_as_lists_work():
+    rods = RodString([1000.0], [2.85e-4], [2.1e11], [2.43])
+    result = predict(rods, Pump(AREA, P_D, P_I), _position(), 5.0, damping=0.1, fluid_density=800.0)
+    assert result.summary.fluid_load == pytest.approx(F_O)
 
 
 def test_anchored_tubing_is_infinite_stiffness():

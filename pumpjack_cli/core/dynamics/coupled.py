@@ -238,6 +238,8 @@ class _CoupledMarch:
         self.step = period / samples
 
     def run(self, tolerance: float, max_revolutions: int) -> CoupledPrediction:
+        if not max_revolutions >= 2:
+            raise PredictionError(f"at least 2 revolutions are needed to see the state repeat, got {max_revolutions}")
         changes: list[float] = []
         previous = None
         f_o = max(self.model.pump.fluid_load, 1.0)

@@ -155,6 +155,9 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
     if not 0 < tolerance < 1e-2:
         raise PredictionError(f"tolerance must lie in (0, 0.01), got {tolerance}")
     samples = s.size
+    angle = np.full(samples, np.nan) if crank_angle is None else np.asarray(crank_angle, dtype=float)
+    if angle.shape != s.shape:
+        raise PredictionError(f"crank angle must have one value per position sample ({samples}), got shape {angle.shape}")
     stroke = float(np.ptp(s))
     if not stroke > 0:
         raise PredictionError("the polished rod does not move")
@@ -170,7 +173,6 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
     chamber = PumpChamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start)
     march = PumpMarch(model, chamber, carry, float(guess[-1]), float(start))
     load, _, discharged, convergence = converge(march, driven, max(f_o, 1.0), stroke, tolerance, max_cycles)
-    angle = np.full(samples, np.nan) if crank_angle is None else np.asarray(crank_angle, dtype=float)
     time = np.arange(samples) * (period / samples)
     return assemble(model, time, angle, s, velocity, top_drive, load, discharged, period, convergence)
 

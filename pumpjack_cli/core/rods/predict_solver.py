@@ -75,15 +75,16 @@ class WellModel:
         return self.response.step * (float(self.velocity_kernel[0]) + self.tubing_rate)
 
 
-def check_rods(rods: RodString) -> None:
-    """Raise :class:`PredictionError` unless every section is positive and finite."""
-    arrays = [np.asarray(getattr(rods, name), dtype=float) for name in
+def check_rods(rods: RodString) -> RodString:
+    """The string with float arrays; :class:`PredictionError` unless every section is positive and finite."""
+    arrays = [np.atleast_1d(np.asarray(getattr(rods, name), dtype=float)) for name in
               ("length", "area", "youngs_modulus", "mass_per_length")]
     if arrays[0].ndim != 1 or arrays[0].size == 0 or any(a.shape != arrays[0].shape for a in arrays):
         raise PredictionError("rod string arrays must be one-dimensional, non-empty and of equal length")
     for name, values in zip(("length", "area", "Young's modulus", "mass per length"), arrays):
         if not (np.all(np.isfinite(values)) and np.all(values > 0)):
             raise PredictionError(f"rod {name} must be positive and finite in every section, got {values.tolist()}")
+    return RodString(*arrays)
 
 
 def modal_velocity(modes: RodModes, states: np.ndarray) -> np.ndarray:
@@ -99,7 +100,7 @@ def well_model(rods: RodString, pump: Pump, *, damping: float, step: float, samp
     damping: Gibbs' nu [-]; densities [kg/m^3] of the fluid and of the rod material (for
     the buoyant weight W_rf = g sum m_i L_i (1 - rho_f / rho_r), [Gibbs1963]).
     """
-    check_rods(rods)
+    rods = check_rods(rods)
     pump.check()
     if not (np.isfinite(damping) and damping > 0):
         raise PredictionError(f"damping factor must be positive and finite, got {damping}")
@@ -250,6 +251,8 @@ def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale:
              tolerance: float, max_cycles: int) -> tuple[np.ndarray, np.ndarray, float, Convergence]:
     """March cycles until the largest relative change of pump load and plunger position is below
     tolerance; returns the last cycle's load and position, the liquid it discharged [m^3], and how."""
+    if not max_cycles >= 2:
+        raise PredictionError(f"at least 2 cycles are needed to see the state repeat, got max_cycles {max_cycles}")
     changes: list[float] = []
     previous = None
     for _ in range(max_cycles):
