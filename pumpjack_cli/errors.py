@@ -37,3 +37,7 @@ class DownholeError(PumpjackError, ValueError):
 
 class CardError(PumpjackError, ValueError):
     """A dynamometer card that cannot be read, contradicts itself or does not fit the unit."""
+
+
+class PredictionError(PumpjackError, ValueError):
+    """A well whose cards cannot be predicted: rod string, pump or fluid data, or a solve that does not converge."""

@@ -3,7 +3,7 @@
 Independent references used here:
 * [SK8Rotation2013] eqs. 25-26 and its printed numbers (motor 4AR180M4U3: 30 kW, 1500/1460 rpm;
   u = 37.18 x 900/250; omega1 = pi 1460 / (30 u) = 1.1422 1/s), evaluated by hand;
-* the rational-mechanism kinetostatics of issue 3 (pumpjack_cli.core.kinetostatics),
+* the rational-mechanism kinetostatics of issue 3 (pumpjack_cli.core.beam.kinetostatics),
   a separate spatial d'Alembert solution: by virtual work its balancing torque equals
   the gravity torque dV/dtheta (weights only) and I epsilon + 1/2 I' omega^2 (inertia only);
 * energy and periodicity: over a periodic cycle kinetic and potential energy return, so

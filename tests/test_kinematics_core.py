@@ -1,4 +1,4 @@
-"""Tests of pumpjack_cli.core.kinematics: exact polished-rod motion and approximations.
+"""Tests of pumpjack_cli.core.beam.kinematics: exact polished-rod motion and approximations.
 
 Reference values are derivatives computed here by central finite differences, the
 textbook closed forms (harmonic motion; slider-crank displacement), and dense-grid /

@@ -1,4 +1,4 @@
-"""Tests of pumpjack_cli.core.linkage against an independent vector-loop formulation.
+"""Tests of pumpjack_cli.core.beam.linkage against an independent vector-loop formulation.
 
 The reference solution here does NOT use the cosine rule of the package. It solves the
 planar vector loop of the four-bar numerically (Newton's method on two unknowns) and
