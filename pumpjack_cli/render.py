@@ -276,6 +276,10 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
                 ax.plot(x, shown(name)[0], style, label=name)
+        if panel.clip:
+            values = np.concatenate([shown(name)[0] for name in panel.solid])
+            low, high = float(values.min()), float(values.max())
+            ax.set_ylim(low - 0.5 * (high - low), high + 0.5 * (high - low))
         unit = output_unit(result.column(panel.solid[0]).quantity, system)
         for label, value in panel.levels:
             ax.axhline(float(unit.convert(float(value))), color="red", linewidth=0.8, linestyle=":",

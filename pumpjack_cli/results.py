@@ -47,13 +47,16 @@ class Scalar:
 class Panel:
     """One plot panel: solid curves and dashed curves (column names) against the column
     ``x`` (default: the first column), and horizontal lines at ``levels`` ((label, SI
-    value) pairs in the quantity of the first solid curve, e.g. a rating)."""
+    value) pairs in the quantity of the first solid curve, e.g. a rating). With ``clip``
+    the vertical range follows the solid curves (half their range beyond each side), so
+    that a dashed bound that grows without limit does not hide them."""
 
     title: str
     solid: tuple[str, ...]
     dashed: tuple[str, ...] = ()
     x: str | None = None
     levels: tuple[tuple[str, float], ...] = ()
+    clip: bool = False
 
 
 @dataclass(frozen=True)

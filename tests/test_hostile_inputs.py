@@ -33,6 +33,7 @@ COMMANDS = {
                                         "--crank-phase", "0.1 deg"],
     "dynamics": lambda unit: ["dynamics", unit, "--steps", "8"],
     "inertia-error": lambda unit: ["inertia-error", unit, "--steps", "8"],
+    "torque": lambda unit: ["torque", unit, "--card", SK8_CARD, "--steps", "8"],
 }
 
 
@@ -137,7 +138,7 @@ def _commands_for(path: tuple[str, ...]) -> list[str]:
     if path[0] == "geometry":
         return ["kinematics", "reactions"]
     if path[0] == "masses":
-        return ["reactions", "dynamics"]
+        return ["reactions", "dynamics", "torque"]
     if path[0] == "pitman_section":
         return ["compare-redundancy"]
     return ["dynamics"]

@@ -274,7 +274,7 @@ def _panels(columns: list[Column], rated: Ratings, moment_known: bool) -> tuple[
     panels = []
     if "permissible_load_min" in names:
         panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),
-                            x="position"))
+                            x="position", clip=True))
     else:
         panels.append(Panel("card", ("rod_load",), x="position"))
     panels.append(Panel("net torque", ("net_torque",) if moment_known else ("recommended_net_torque",),

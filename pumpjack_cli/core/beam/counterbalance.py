@@ -212,6 +212,8 @@ def counterweight_placement(moment: float, masses: MassModel, radius_range: tupl
     target = moment / gravity
     radius = _magnitude_root(arms, masses.counterweight_phase, target, masses.counterweight_mass)
     mass = _magnitude_root(arms, masses.counterweight_phase, target, masses.counterweight_radius)
+    radius = radius if radius is not None and math.isfinite(radius) else None
+    mass = mass if mass is not None and math.isfinite(mass) else None
     if radius is None:
         note = (f"no counterweight radius gives {moment:.6g} N·m with {masses.counterweight_mass:.6g} kg of blocks: "
                 f"the crank arms alone give {gravity * arms:.6g} N·m")
