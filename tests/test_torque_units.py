@@ -20,7 +20,7 @@ from pumpjack_cli.card_files import read_card
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.balance import balance_criteria, recommend_counterbalance
 from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position, upstroke_points
-from pumpjack_cli.core.beam.counterbalance import counterbalance_from_masses, upstroke_mask
+from pumpjack_cli.core.beam.counterbalance import Counterbalance, counterbalance_from_masses, upstroke_mask
 from pumpjack_cli.core.beam.loading import card_work
 from pumpjack_cli.core.beam.torque import api_net_torque, crank_rates_from_time, torque_factor
 from pumpjack_cli.core.sampling import crank_grid
@@ -60,13 +60,25 @@ def torques(base: np.ndarray, sine: np.ndarray, moments: np.ndarray) -> np.ndarr
     return base[None, :] - moments[:, None] * sine[None, :]
 
 
-@pytest.mark.parametrize("name", CARDS)
+def balance_of(name: str):
+    """Linkage, B M tau and card of a bundled unit: from the masses, or from the
+    [counterbalance] of a unit described without them (C-80D-133-48)."""
+    config = load_unit(name)
+    linkage = config.geometry.linkage()
+    units = CARDS.get(name, ("field",))[0]
+    card = read_card(REPO / "samples" / f"{name}-card.csv", linkage, units).card
+    if config.masses is not None:
+        return linkage, counterbalance_from_masses(linkage, config.masses.model()), card
+    given = config.counterbalance
+    return linkage, Counterbalance(given.structural_unbalance, given.moment, given.phase), card
+
+
+@pytest.mark.parametrize("name", [*CARDS, "c-80d-133-48"])
 def test_optimisers_agree_with_brute_force_scans(name):
     """Each criterion's M and peak torque equal those of a scan of the same objective
     on the same crank grid to 1e-6 relative (the scan's final window is ~1e-20 of the
     range, so the tolerance checks the optimiser, not the scan)."""
-    linkage, masses, card = bundled(name)
-    bal = counterbalance_from_masses(linkage, masses)
+    linkage, bal, card = balance_of(name)
     w = card_load(card, THETA)
     base = torque_factor(linkage, THETA) * (w - bal.structural_unbalance)
     sine = np.sin(THETA - bal.offset)
