@@ -68,14 +68,18 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     "fraction": {"%": 1e-2},
     "area": {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6, "in2": INCH**2},
     "area_moment": {"m4": 1.0, "cm4": 1e-8, "mm4": 1e-12, "in4": INCH**4},
-    "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "psi": POUND_FORCE / INCH**2},
+    "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "bar": 1e5, "psi": POUND_FORCE / INCH**2},
+    # weight per unit length of a rod (couplings included); "lb/ft" and "kg/m" are the
+    # weights of a pound and a kilogram per unit length, as rod tables print them
+    "weight_per_length": {"n/m": 1.0, "kn/m": 1e3, "lbf/ft": POUND_FORCE / FOOT, "lb/ft": POUND_FORCE / FOOT,
+                          "kgf/m": KILOGRAM_FORCE, "kg/m": KILOGRAM_FORCE},
 }
 
 #: A unit to suggest when one is missing, per dimension.
 _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
                   "rotational_speed": "rpm", "angle": "deg", "power": "kW", "density": "kg/m3",
                   "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
-                  "pressure": "MPa"}
+                  "pressure": "MPa", "weight_per_length": "lbf/ft"}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 

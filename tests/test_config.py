@@ -285,7 +285,7 @@ INVALID = [
     ("unknown-top-level-key", _set("colour", "red"), "colour", "unknown key"),
     ("unknown-key-in-geometry", _set("geometry.stroke", "3 m"), "geometry.stroke", "unknown key"),
     ("unknown-key-in-motor", _set("drive.motor.voltage", 380), "drive.motor.voltage", "unknown key"),
-    ("unknown-key-in-rod", _set("well.rod_string.1.grade", "D"), "well.rod_string.1.grade", "unknown key"),
+    ("unknown-key-in-rod", _set("well.rod_string.1.colour", "D"), "well.rod_string.1.colour", "unknown key"),
     ("mass-for-length", _set("geometry.k1", "3500 kg"), "geometry.front_arm", "is a mass, not a length"),
     ("length-for-mass", _set("masses.pitman.mass", "130 m"), "masses.pitman.mass", "is a length, not a mass"),
     ("mass-for-speed", _set("drive.motor.rated_speed", "1460 kg"), "drive.motor.rated_speed",

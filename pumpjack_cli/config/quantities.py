@@ -31,6 +31,7 @@ Angle = Annotated[float, _quantity("angle")]
 Pressure = Annotated[float, _quantity("pressure")]
 Force = Annotated[float, _quantity("force")]
 Torque = Annotated[float, _quantity("torque")]
+WeightPerLength = Annotated[float, _quantity("weight_per_length")]
 AreaMoment = Annotated[float, _quantity("area_moment")]
 Area = Annotated[float, _quantity("area")]
 #: Plain numbers without a unit; strict so that ``true`` is not read as 1.
