@@ -34,6 +34,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
                       "Error of the approximate inertia-force laws against the exact motion."),
     "dynamics": ("dynamics", "dynamics", "Non-uniform crank rotation from the machine's equation of motion."),
     "torque": ("torque", "torque", "Gearbox torque, counterbalance and loading of a unit from a dynamometer card."),
+    "downhole": ("downhole", "downhole", "Pump card from a surface dynamometer card through the rod string's wave equation."),
 }
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 

@@ -255,8 +255,8 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
 
 def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
     """Each panel against its x column (default: the first column), dashed curves for
-    approximations and bounds, horizontal lines at the panel's levels, to a binary
-    stream in ``file_format`` (png, svg or pdf)."""
+    approximations and bounds, further curves, horizontal lines at the panel's levels,
+    to a binary stream in ``file_format`` (png, svg or pdf)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -268,28 +268,41 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
         unit = output_unit(column.quantity, system)
         return unit.convert(np.asarray(column.values, dtype=float)), unit
 
-    shares_x = all(panel.x is None for panel in result.panels)
-    fig, axes = plt.subplots(len(result.panels), 1, sharex=shares_x, figsize=(8, 2.6 * len(result.panels)))
+    def values(curve_axis, quantity):
+        if isinstance(curve_axis, str):
+            return shown(curve_axis)
+        unit = output_unit(quantity, system)
+        return unit.convert(np.asarray(curve_axis, dtype=float)), unit
+
+    shares_x = all(panel.x is None and not panel.curves for panel in result.panels)
+    fig, axes = plt.subplots(len(result.panels), 1, sharex=shares_x, figsize=(8, 2.8 * len(result.panels)))
     for ax, panel in zip(np.atleast_1d(axes), result.panels):
         x_name = panel.x or result.columns[0].name
         x, x_unit = shown(x_name)
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
                 ax.plot(x, shown(name)[0], style, label=name)
+        y_unit = output_unit(result.column(panel.solid[0]).quantity, system) if panel.solid else None
+        for curve in panel.curves:
+            (cx, cx_unit), (cy, cy_unit) = values(curve.x, curve.quantity), values(curve.y, curve.quantity)
+            ax.plot(cx, cy, curve.style, label=curve.label)
+            y_unit = y_unit or cy_unit
+            if not panel.solid:
+                x_unit = cx_unit
         if panel.clip:
-            values = np.concatenate([shown(name)[0] for name in panel.solid])
-            low, high = float(values.min()), float(values.max())
+            solid = np.concatenate([shown(name)[0] for name in panel.solid])
+            low, high = float(solid.min()), float(solid.max())
             ax.set_ylim(low - 0.5 * (high - low), high + 0.5 * (high - low))
-        unit = output_unit(result.column(panel.solid[0]).quantity, system)
         for label, value in panel.levels:
-            ax.axhline(float(unit.convert(float(value))), color="red", linewidth=0.8, linestyle=":",
+            ax.axhline(float(y_unit.convert(float(value))), color="red", linewidth=0.8, linestyle=":",
                        label=label or None)
-        ax.set_ylabel(f"{panel.title} [{unit.label}]")
+        ax.set_ylabel(f"{panel.title} [{y_unit.label}]")
         ax.grid(True, alpha=0.3)
-        if len(panel.solid) + len(panel.dashed) + len([lv for lv in panel.levels if lv[0]]) > 1:
+        if len(panel.solid) + len(panel.dashed) + len(panel.curves) + len([lv for lv in panel.levels if lv[0]]) > 1:
             ax.legend(fontsize="small")
         if not shares_x or ax is np.atleast_1d(axes)[-1]:
-            ax.set_xlabel(f"{x_name} [{x_unit.label}]")
+            name = panel.x_label if not panel.solid and panel.x_label else x_name
+            ax.set_xlabel(f"{name} [{x_unit.label}]")
     fig.suptitle(result.title, fontsize="medium")
     fig.tight_layout()
     fig.savefig(stream, format=file_format)

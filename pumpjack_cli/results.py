@@ -44,12 +44,26 @@ class Scalar:
 
 
 @dataclass(frozen=True)
+class Curve:
+    """A further curve of a plot panel: two column names (x, y), or explicit SI values of
+    one ``quantity`` on both axes (e.g. points of a Goodman diagram); ``style`` is a
+    matplotlib format ("-", "--", "o")."""
+
+    label: str
+    x: str | tuple[float, ...]
+    y: str | tuple[float, ...]
+    quantity: str | None = None
+    style: str = "-"
+
+
+@dataclass(frozen=True)
 class Panel:
     """One plot panel: solid curves and dashed curves (column names) against the column
     ``x`` (default: the first column), and horizontal lines at ``levels`` ((label, SI
     value) pairs in the quantity of the first solid curve, e.g. a rating). With ``clip``
     the vertical range follows the solid curves (half their range beyond each side), so
-    that a dashed bound that grows without limit does not hide them."""
+    that a dashed bound that grows without limit does not hide them. ``curves`` are drawn
+    too; a panel of curves only names its x axis ``x_label``."""
 
     title: str
     solid: tuple[str, ...]
@@ -57,6 +71,8 @@ class Panel:
     x: str | None = None
     levels: tuple[tuple[str, float], ...] = ()
     clip: bool = False
+    curves: tuple[Curve, ...] = ()
+    x_label: str | None = None
 
 
 @dataclass(frozen=True)

@@ -30,6 +30,8 @@ from .machine import machine
 CARD_HARMONICS = 4
 #: Steps of the integration t = int dtheta / omega over one revolution.
 FINE_STEPS = 3600
+#: Crank-angle points per time sample when a card is put on a uniform time grid.
+RESAMPLE_FACTOR = 8
 
 #: Crank rotation models of the card-driven analyses: constant speed; the speed and
 #: acceleration fitted to the card's time stamps; the machine's equation of motion;
@@ -127,3 +129,30 @@ def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, gri
                             card_load(reading.card, theta), state.summary.period, rotation))
         start += theta.size
     return reading, runs
+
+
+@dataclass(frozen=True)
+class TimeCard:
+    """A card on a uniform time grid over one period: t_k = k T / N [s], the crank angle
+    [rad], the polished-rod position [m] from the bottom of the stroke (exact kinematics)
+    and the load [N] at each sample."""
+
+    time: np.ndarray
+    crank_angle: np.ndarray
+    position: np.ndarray
+    load: np.ndarray
+    period: float
+
+
+def time_card(unit, linkage: Linkage, source: CardSource, spm: float | None, samples: int,
+              rotation: str) -> tuple[CardReading, TimeCard]:
+    """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
+    from the card's time stamps or from the equation of motion) is resolved on a fine
+    crank-angle grid and inverted, so a card of positions only is usable through the
+    unit's exact kinematics."""
+    reading, (run,) = card_runs(unit, linkage, source, spm, (RESAMPLE_FACTOR * samples,), rotation)
+    time = np.arange(samples) * (run.period / samples)
+    theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
+    dead = linkage.dead_positions()
+    position = linkage.front_arm * (linkage.motion(theta).beam_angle - dead.beam_angle_bottom)
+    return reading, TimeCard(time, theta, position, card_load(reading.card, theta), run.period)

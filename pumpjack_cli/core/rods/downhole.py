@@ -27,7 +27,7 @@ import numpy as np
 from ...errors import DownholeError
 from ..constants import STANDARD_GRAVITY
 from . import everitt_jennings, gibbs
-from .analysis import as_cards, card_work
+from .analysis import as_cards, card_work, summarise_pump_card
 from .string import RodString
 
 #: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
@@ -244,6 +244,46 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
                             f"{(damped + pump_work) / 1e3:.4g}-{(undamped + pump_work) / 1e3:.4g} kJ, the pump "
                             f"work for damping factors {largest:g}-0: no damping factor explains it")
     return float(brentq(excess, 0.0, largest, xtol=1e-10))
+
+
+def damping_from_fluid_load(string: RodString, period: float, position, load, fluid_load: float, *,
+                            fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
+                            tolerance: float = 1e-5, iterations: int = 30) -> float:
+    """The damping factor nu that closes the energy balance of the rods with the pump's hydraulic work [-].
+
+    The useful work of the pump per stroke is the fluid load times the net plunger stroke,
+    F_o S_n; the rest of the surface card's work is dissipated along the rods. The pump
+    card depends on nu, and S_n is read off it (:func:`.analysis.summarise_pump_card`),
+    so nu is found by fixed-point iteration: nu_(k+1) = :func:`damping_for_pump_work` of
+    the target F_o S_n(nu_k), from :data:`DEFAULT_DAMPING_FACTOR` until nu changes by
+    less than ``tolerance``. The damping is chosen so that the pump card's power equals
+    the hydraulic power ([Gibbs1963], [EverittJennings1992]).
+
+    Parameters
+    ----------
+    string, period, position, load, fluid_density, method, gravity
+        As :func:`pump_card`, for ONE card (shape (N,)).
+    fluid_load : float
+        F_o = (p_d - p_i) A_p [N], from the well's pressures at the pump.
+
+    Raises
+    ------
+    DownholeError
+        When no damping factor explains the card with this fluid load (wrong fluid level,
+        wrong rods, or a card of another well), or the iteration does not settle.
+    """
+    nu = DEFAULT_DAMPING_FACTOR
+    for _ in range(iterations):
+        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
+                         method=method, gravity=gravity, check=False)
+        net = float(summarise_pump_card(card.pump_position, card.pump_load).net_stroke)
+        updated = damping_for_pump_work(string, period, position, load, fluid_load * net, fluid_density=fluid_density,
+                                        method=method, gravity=gravity)
+        if abs(updated - nu) < tolerance:
+            return updated
+        nu = updated
+    raise DownholeError(f"the damping factor from the energy balance did not settle in {iterations} iterations "
+                        f"(last {nu:.4g}); give the damping factor")
 
 
 def load_transfer_slope(position, load) -> np.ndarray:

@@ -1,0 +1,139 @@
+"""The pump card from a surface card through the rod string's wave equation: `pumpjack downhole`.
+
+The card is put on a uniform time grid over one period (its time stamps, or the unit's
+exact kinematics and crank speed for a card of positions only); the damped wave
+equation of the tapered string turns it into the pump card ([Gibbs1963],
+[EverittJennings1992]); the pump card is read for strokes, fillage and fluid load, the
+rods for stresses and Goodman loading ([API11BR]).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+import numpy as np
+
+from ..core.rods.analysis import (card_work, displacement_rate, goodman_allowable_stress, goodman_loading,
+                                  intake_pressure, summarise_pump_card, taper_loads)
+from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
+from ..errors import PumpjackError
+from ..results import Column, Curve, Panel, Result, Scalar
+from .card_runs import CardSource, time_card
+from .rods import pressures, rods, well_of
+
+#: Samples per period of the surface card on its uniform time grid.
+DEFAULT_SAMPLES = 200
+
+
+def damping_factor(unit, given: float | None, rod_string, card, method: str) -> tuple[float, str]:
+    """Gibbs' nu and where it comes from: the option, the unit file, or the energy balance
+    with the well's fluid load ([Gibbs1963], [EverittJennings1992])."""
+    well = well_of(unit)
+    if given is not None:
+        return given, "--damping"
+    if well.damping_factor is not None:
+        return well.damping_factor, "well.damping_factor"
+    found = pressures(unit)
+    if found is None:
+        sys.stderr.write(f"pumpjack: warning: unit {unit.name}: no fluid level or intake pressure for the energy "
+                         f"balance; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)\n")
+        return DEFAULT_DAMPING_FACTOR, "assumed"
+    fluid_load = (found[0] - found[1]) * math.pi * well.plunger_diameter**2 / 4.0
+    nu = damping_from_fluid_load(rod_string, card.period, card.position, card.load, fluid_load,
+                                 fluid_density=well.fluid_density, method=method)
+    return nu, "energy balance"
+
+
+def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: str, damping: float | None,
+             samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0) -> Result:
+    """Pump card, pump-card figures and rod stresses of one surface card."""
+    if method not in downhole_methods():
+        raise PumpjackError(f"--method {method}: use one of {', '.join(downhole_methods())}")
+    well = well_of(unit)
+    string = rods(unit)
+    linkage = unit.geometry.linkage()
+    reading, surface = time_card(unit, linkage, card, spm, samples, rotation)
+    nu, source = damping_factor(unit, damping, string, surface, method)
+    pump = pump_card(string, surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
+                     damping_factor=nu, method=method)
+    figures = summarise_pump_card(pump.pump_position, pump.pump_load)
+    loads = taper_loads(string, pump.joint_load)
+    surface_work = float(card_work(surface.position, surface.load))
+    pump_work = float(card_work(pump.pump_position, pump.pump_load))
+    summary = [
+        Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / surface.period, "pumping speed"),
+        Scalar("damping_factor", "ratio", nu, f"Gibbs' nu of the rods ({source})"),
+        Scalar("buoyant_rod_weight", "force", pump.buoyant_weight, "rods with couplings in the well fluid: the datum"),
+        Scalar("gross_pump_stroke", "length", float(figures.gross_stroke), "plunger travel"),
+        Scalar("net_pump_stroke", "length", float(figures.net_stroke),
+               "plunger travel through liquid (from the downstroke's unloading point)"),
+        Scalar("pump_fillage", "percent", float(figures.fillage), "net / gross pump stroke"),
+        Scalar("fluid_load", "force", float(figures.fluid_load), "upstroke minus downstroke load level of the pump card"),
+        Scalar("max_pump_load", "force", float(figures.peak_load), "largest net plunger load"),
+        Scalar("min_pump_load", "force", float(figures.minimum_load),
+               "smallest net plunger load; negative: compression at the pump (buckling tendency)"),
+        Scalar("surface_card_work", "energy", surface_work, "work of the surface card per cycle"),
+        Scalar("pump_card_work", "energy", pump_work, "work of the pump card per cycle"),
+        Scalar("pump_displacement", "flow_rate", float(displacement_rate(figures.net_stroke, surface.period,
+                                                                         well.plunger_diameter)),
+               "net stroke x plunger area x strokes per unit time"),
+    ]
+    found = pressures(unit)
+    if found is not None:
+        summary.append(Scalar("pump_intake_pressure", "pressure",
+                              float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0])),
+                              "discharge pressure minus fluid load / plunger area"))
+    summary += _tapers(string, loads, service_factor)
+    columns = (
+        Column("time", "time", "time from crank angle 0", surface.time),
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", surface.crank_angle),
+        Column("surface_position", "length", "polished-rod position above the bottom of the stroke", surface.position),
+        Column("surface_load", "force", "polished-rod load", surface.load),
+        Column("pump_position", "length", "plunger position, up positive, from the surface datum", pump.pump_position),
+        Column("pump_load", "force", "net plunger load: rod tension at the pump above the buoyant-weight datum",
+               pump.pump_load),
+    )
+    panels = (
+        Panel("surface and pump cards", ("surface_load",), x="surface_position",
+              curves=(Curve("pump card", "pump_position", "pump_load"),)),
+        _goodman_panel(string, loads, service_factor),
+    )
+    title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
+    return Result(title, tuple(summary), columns, panels)
+
+
+def _tapers(string, loads, service_factor: float) -> list[Scalar]:
+    """Per taper (top first): extreme stresses at its ends and its Goodman loading."""
+    found = []
+    graded = not np.isnan(string.tensile_strength).any()
+    if not graded:
+        sys.stderr.write("pumpjack: warning: a rod section has no grade or tensile_strength: the Goodman loading "
+                         "is left out\n")
+    goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
+    for i, name in enumerate(string.names or [f"taper {i + 1}" for i in range(len(string.length))], start=1):
+        for end in ("top", "bottom"):
+            for label in ("max", "min"):
+                found.append(Scalar(f"taper_{i}_{end}_{label}_stress", "stress",
+                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1]),
+                                    f"{label} stress at the {end} of taper {i} ({name})"))
+        if math.isfinite(float(goodman[i - 1])):
+            found.append(Scalar(f"taper_{i}_goodman_loading", "percent", float(goodman[i - 1]),
+                                f"modified Goodman loading of taper {i} ({name}), service factor {service_factor:g}"))
+    return found
+
+
+def _goodman_panel(string, loads, service_factor: float) -> Panel:
+    """The modified Goodman diagram: each taper's (S_min, S_max) and its allowable line."""
+    curves = []
+    for i in range(len(string.length)):
+        low = float(min(loads.top_min_stress[i], loads.bottom_min_stress[i]))
+        high = float(max(loads.top_max_stress[i], loads.bottom_max_stress[i]))
+        curves.append(Curve(f"taper {i + 1}", (low,), (high,), quantity="stress", style="o"))
+        strength = float(string.tensile_strength[i])
+        if math.isfinite(strength):
+            span = np.array([0.0, strength / 2.0])
+            allowable = goodman_allowable_stress(strength, span, service_factor)
+            curves.append(Curve(f"allowable, taper {i + 1}", tuple(span), tuple(allowable), quantity="stress",
+                                style="--"))
+    return Panel("modified Goodman diagram: max stress", (), curves=tuple(curves), x_label="min stress")

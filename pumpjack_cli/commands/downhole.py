@@ -1,0 +1,52 @@
+"""`pumpjack downhole`: the pump card from a surface dynamometer card through the rod string."""
+
+from __future__ import annotations
+
+from enum import Enum
+from typing import Annotated
+
+import typer
+
+from ..analysis.card_runs import CardSource
+from ..analysis.downhole import DEFAULT_SAMPLES
+from ..analysis.downhole import downhole as run
+from ..config import load_unit
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, Rotation, RotationOption, UnitArgument, UnitsOption, UnitSystem, finite)
+
+SHOWN = ("time", "surface_position", "surface_load", "pump_position", "pump_load")
+
+
+class Method(str, Enum):
+    gibbs = "gibbs"
+    everitt_jennings = "everitt-jennings"
+
+
+def downhole(
+    unit: UnitArgument,
+    card: CardOption,
+    card_units: CardUnitsOption = UnitSystem.si,
+    card_columns: CardColumnsOption = None,
+    spm: CardSpmOption = None,
+    rotation: RotationOption = Rotation.auto,
+    method: Annotated[Method, typer.Option(
+        help="gibbs: exact per-harmonic solution; everitt-jennings: finite-difference march in depth")] = Method.gibbs,
+    damping: Annotated[float | None, typer.Option(
+        help="Gibbs' dimensionless damping factor nu of the rods, 0 for none [default: the unit file's, else from "
+             "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
+    samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
+    service_factor: Annotated[float, typer.Option(
+        help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0,
+        callback=finite)] = 1.0,
+    fmt: FormatOption = None,
+    units: UnitsOption = UnitSystem.si,
+    out: OutputOption = None,
+    plot: PlotOption = None,
+) -> None:
+    """Pump card from a surface dynamometer card through the rod string's wave equation.
+
+    Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
+    sink = Output(fmt, units, out, plot)
+    result = run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, rotation.value, method.value,
+                 damping, samples, service_factor)
+    sink.emit(result, SHOWN)
