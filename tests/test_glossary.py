@@ -31,6 +31,7 @@ RUNS = [
     ("inertia-error", "sk8-3.5-4000", "--steps", "8", "--mass", "100 kg"),
     ("torque", "sk8-3.5-4000", "--card", SK8_CARD, "--steps", "8"),
     ("torque", "c-80d-133-48", "--card", "samples/c-80d-133-48-card.csv", "--steps", "8"),
+    ("downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--samples", "64"),
 ]
 
 

@@ -153,6 +153,4 @@ def time_card(unit, linkage: Linkage, source: CardSource, spm: float | None, sam
     reading, (run,) = card_runs(unit, linkage, source, spm, (RESAMPLE_FACTOR * samples,), rotation)
     time = np.arange(samples) * (run.period / samples)
     theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
-    dead = linkage.dead_positions()
-    position = linkage.front_arm * (linkage.motion(theta).beam_angle - dead.beam_angle_bottom)
-    return reading, TimeCard(time, theta, position, card_load(reading.card, theta), run.period)
+    return reading, TimeCard(time, theta, linkage.rod_position(theta), card_load(reading.card, theta), run.period)

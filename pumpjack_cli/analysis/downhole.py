@@ -88,14 +88,14 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     columns = (
         Column("time", "time", "time from crank angle 0", surface.time),
         Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", surface.crank_angle),
-        Column("surface_position", "length", "polished-rod position above the bottom of the stroke", surface.position),
-        Column("surface_load", "force", "polished-rod load", surface.load),
+        Column("position", "length", "polished-rod position above the bottom of the stroke", surface.position),
+        Column("rod_load", "force", "polished-rod load", surface.load),
         Column("pump_position", "length", "plunger position, up positive, from the surface datum", pump.pump_position),
         Column("pump_load", "force", "net plunger load: rod tension at the pump above the buoyant-weight datum",
                pump.pump_load),
     )
     panels = (
-        Panel("surface and pump cards", ("surface_load",), x="surface_position",
+        Panel("surface and pump cards", ("rod_load",), x="position",
               curves=(Curve("pump card", "pump_position", "pump_load"),)),
         _goodman_panel(string, loads, service_factor),
     )

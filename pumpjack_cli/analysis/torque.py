@@ -224,14 +224,13 @@ def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommend
 def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, recommended, rated: Ratings):
     run, parts = t.run, t.components
     m = linkage.motion(run.crank_angle)
-    dead = linkage.dead_positions()
     columns = [
         Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", run.crank_angle),
         Column("time", "time", "time from crank angle 0", run.time),
         Column("crank_speed", "angular_velocity", "crank angular velocity omega1", run.omega),
         Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", run.epsilon),
         Column("position", "length", "polished-rod position above the bottom of the stroke",
-               linkage.front_arm * (m.beam_angle - dead.beam_angle_bottom)),
+               linkage.rod_position(run.crank_angle)),
         Column("rod_load", "force", "polished-rod load from the card", run.load),
         Column("torque_factor", "length", "API 11E torque factor", linkage.front_arm * m.beam_rate),
         Column("rod_load_torque", "torque", "TF W: torque of the polished-rod load", parts.rod_load),

@@ -14,7 +14,7 @@ from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, Rotation, RotationOption, UnitArgument, UnitsOption, UnitSystem, finite)
 
-SHOWN = ("time", "surface_position", "surface_load", "pump_position", "pump_load")
+SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
 
 class Method(str, Enum):

@@ -86,3 +86,7 @@ class Mechanism(Protocol):
     def motion(self, crank_angle: Any) -> Any:
         """Link angles [rad] and their first two crank-angle derivatives at crank angles [rad], arrays."""
         ...
+
+    def rod_position(self, crank_angle: Any) -> Any:
+        """Polished-rod position above the bottom of the stroke [m] at crank angles [rad], arrays."""
+        ...

@@ -163,6 +163,13 @@ class Linkage:
 
         return motion(self, crank_angle)
 
+    def rod_position(self, crank_angle: Any):
+        """Polished-rod position above the bottom of the stroke, s = A (psi - psi_bottom) [m],
+        at crank angles [rad] ([SK8Rotation2013] eq. 6 integrated: the horsehead arc)."""
+        from .linkage import motion
+
+        return self.front_arm * (motion(self, crank_angle).beam_angle - self._dead.beam_angle_bottom)
+
     def pin_rates(self, motion: Any):
         """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.pin_rates`)."""
         from .linkage import pin_rates

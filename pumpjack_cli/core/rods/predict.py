@@ -249,8 +249,7 @@ def predict_cards(linkage: Linkage, crank_speed: float, rods: RodString, pump: P
         raise PredictionError(f"crank speed must be positive and finite, got {crank_speed} 1/s")
     factor = max(1, -(-resolution // samples))
     theta = np.arange(samples * factor) * (2.0 * np.pi / (samples * factor))
-    m = linkage.motion(theta)
-    position = linkage.front_arm * (m.beam_angle - linkage.dead_positions().beam_angle_bottom)
+    position = linkage.rod_position(theta)
     fine = predict(rods, pump, position, 2.0 * np.pi / crank_speed, damping=damping, fluid_density=fluid_density,
                    rod_density=rod_density, crank_angle=theta)
     pick = slice(None, None, factor)
