@@ -2,7 +2,8 @@
 
 Rod sections come from the unit's ``[well]`` (by length or by share of the pump depth);
 their weight with couplings and modulus from the API tables by diameter unless given
-([API11L], [API11B]). A section whose diameter is an API rod size is a steel rod, any
+([API11L], [API11B]); steel displaces the fluid with the well's ``rod_density``, as in
+the rigid-rod well model. A section whose diameter is an API rod size is a steel rod, any
 other a sinker bar, unless its ``kind`` says otherwise.
 """
 
@@ -41,9 +42,11 @@ def rods(unit) -> RodString:
     for section in well.rod_string:
         length = section.length if section.length is not None else section.fraction * well.pump_depth
         mass = None if section.weight_per_length is None else section.weight_per_length / STANDARD_GRAVITY
-        sections.append(RodSection(section.diameter, length, kind=_kind(section), grade=section.grade,
+        kind = _kind(section)
+        sections.append(RodSection(section.diameter, length, kind=kind, grade=section.grade,
                                    youngs_modulus=section.youngs_modulus, mass_per_length=mass,
-                                   tensile_strength=section.tensile_strength))
+                                   tensile_strength=section.tensile_strength,
+                                   material_density=None if kind == "fibreglass" else well.rod_density))
     try:
         return rod_string(sections)
     except DownholeError as exc:

@@ -26,9 +26,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import PredictionError
+from ..constants import STEEL_DENSITY
 from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.predict_solver import (STEEL_DENSITY, STEERING, Convergence, WellModel, modal_velocity, spectral_derivatives,
+from ..rods.predict_solver import (STEERING, Convergence, WellModel, modal_velocity, spectral_derivatives,
                                    well_model, with_step)
 from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString

@@ -29,8 +29,8 @@ import numpy as np
 
 from ...errors import PredictionError
 from ..beam.geometry import Linkage
-from ..constants import STANDARD_GRAVITY
-from .predict_solver import (STEEL_DENSITY, Convergence, PumpMarch, WellModel, converge, periodic_carry,
+from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
+from .predict_solver import (Convergence, PumpMarch, WellModel, converge, periodic_carry,
                              periodic_fields, spectral_derivatives, well_model)
 from .pump import Pump, PumpChamber
 from .string import RodString

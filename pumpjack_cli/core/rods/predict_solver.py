@@ -12,13 +12,11 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...errors import PredictionError
-from ..constants import STANDARD_GRAVITY
+from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
 from .predict_modes import RodModes, StepResponse, periodic_states, rod_modes, step_response
 from .pump import Pump, PumpChamber
 from .string import RodString
 
-#: Density of steel rods for their buoyancy [kg/m^3] (RP 11L's 490 lb/ft^3 is 7849 kg/m^3).
-STEEL_DENSITY = 7850.0
 #: Largest modes x samples the kernels may hold (complex arrays of this size are kept).
 MAX_KERNEL_SIZE = 10_000_000
 #: Share of the held rod end's slide fed back to the pump at each step (PumpMarch).

@@ -22,14 +22,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import DownholeError
-from ..constants import STANDARD_GRAVITY
-
-#: Density of carbon steel [kg/m^3]: unit weight 76.5 kN/m^3 [Shigley2011] (Table A-5)
-#: divided by g_n. RP 11L's buoyancy factor 1 - 0.128 G [API11L] implies 7 805 kg/m^3.
-STEEL_DENSITY = 7800.0
+from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
 
 #: Young's modulus of carbon steel [Pa], 207 GPa (30.0 Mpsi) [Shigley2011] (Table A-5).
-#: With STEEL_DENSITY it gives sqrt(E/rho) = 5 150 m/s = 16 900 ft/s, the "about
+#: With STEEL_DENSITY it gives sqrt(E/rho) = 5 135 m/s = 16 850 ft/s, the "about
 #: 17 000 ft/s" theoretical value of [API11L] (A10).
 STEEL_YOUNGS_MODULUS = 207e9
 
@@ -195,12 +191,12 @@ class RodString:
 
         Examples
         --------
-        RP 11L's buoyancy factor for water (G = 1) is 1 - 0.128 = 0.872; steel rods in
-        water of 999 kg/m^3 (60 degF):
+        RP 11L's buoyancy factor for water (G = 1) is 1 - 0.128 = 0.872, i.e. 1 - 62.4/490
+        = 0.873 for its 490 lb/ft^3 steel; steel rods in water of 999 kg/m^3 (60 degF):
 
         >>> s = RodString([1000.0], [2.85e-4], [2.1e11], [2.43])
         >>> round(float(s.buoyant_weight_per_length(999.0, 1.0)[0] / 2.43), 3)
-        0.872
+        0.873
 
         References
         ----------

@@ -25,7 +25,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import DownholeError
-from .string import STEEL_DENSITY, STEEL_YOUNGS_MODULUS, RodString
+from ..constants import STEEL_DENSITY
+from .string import STEEL_YOUNGS_MODULUS, RodString
 
 _INCH = 0.0254
 _FOOT = 0.3048
@@ -154,10 +155,10 @@ def sinker_bar(diameter: float) -> RodSize:
 
     Examples
     --------
-    1-1/2 in: 7800 kg/m^3 pi (0.0381 m)^2 / 4 = 8.89 kg/m (5.98 lb/ft).
+    1-1/2 in: 7850 kg/m^3 pi (0.0381 m)^2 / 4 = 8.95 kg/m (6.01 lb/ft; [API11B]: 6.0 lb/ft).
 
     >>> round(sinker_bar(0.0381).mass_per_length, 2)
-    8.89
+    8.95
 
     References
     ----------
