@@ -78,7 +78,7 @@ RotationOption = Annotated[Rotation, typer.Option(
     "--rotation", help="uniform: constant crank speed (the card's time stamps, --spm or the motor's rated speed); "
     "card: speed and acceleration from the card's time stamps; dynamic: the periodic motion from the machine's "
     "equation of motion under this card (as `pumpjack dynamics --card`); auto: card if the card has time "
-    "stamps, else uniform")]
+    "stamps and no --spm is given, else uniform")]
 
 
 class Output:

@@ -34,6 +34,7 @@ COMMANDS = {
     "dynamics": lambda unit: ["dynamics", unit, "--steps", "8"],
     "inertia-error": lambda unit: ["inertia-error", unit, "--steps", "8"],
     "torque": lambda unit: ["torque", unit, "--card", SK8_CARD, "--steps", "8"],
+    "downhole": lambda unit: ["downhole", unit, "--card", SK8_CARD, "--samples", "32"],
 }
 
 
@@ -141,6 +142,8 @@ def _commands_for(path: tuple[str, ...]) -> list[str]:
         return ["reactions", "dynamics", "torque"]
     if path[0] == "pitman_section":
         return ["compare-redundancy"]
+    if path[0] == "well":
+        return ["dynamics", "downhole"]
     return ["dynamics"]
 
 
@@ -228,6 +231,13 @@ OPTIONS = [
     (["kinematics", "unb-600a"], "not a beam pumping unit"),
     (["dynamics", "sk8-3.5-4000", "--rtol", "1"], "--rtol"),
     (["dynamics", "sk8-3.5-4000", "--card", "-"], "<stdin>"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--damping", "-0.1"], "--damping"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--damping", "nan"], "--damping"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--method", "fourier"], "--method"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--samples", "4"], "--samples"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--service-factor", "2"], "--service-factor"),
+    (["downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--spm", "6"], "disagrees with the time stamps"),
+    (["downhole", "unb-600a", "--card", SK8_CARD], "not a beam pumping unit"),
     (["no-such-command"], "No such command"),
     (["kinematics", "sk8-3.5-4000", "--no-such-option"], "--no-such-option"),
 ]

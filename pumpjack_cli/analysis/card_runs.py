@@ -35,7 +35,7 @@ RESAMPLE_FACTOR = 8
 
 #: Crank rotation models of the card-driven analyses: constant speed; the speed and
 #: acceleration fitted to the card's time stamps; the machine's equation of motion;
-#: auto: the card's time stamps if it has them, else constant speed.
+#: auto: the card's time stamps if it has them and no --spm is given, else constant speed.
 ROTATIONS = ("uniform", "card", "dynamic", "auto")
 
 
@@ -110,7 +110,7 @@ def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, gri
     reading = source.read(linkage)
     thetas = [crank_grid(steps) for steps in grids]
     if rotation == "auto":
-        rotation = "uniform" if reading.time is None else "card"
+        rotation = "uniform" if reading.time is None or spm is not None else "card"
     if rotation == "uniform":
         omega = uniform_speed(unit, reading, spm)
         runs = [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),

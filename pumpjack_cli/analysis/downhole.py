@@ -17,7 +17,7 @@ import numpy as np
 from ..core.rods.analysis import (card_work, displacement_rate, goodman_allowable_stress, goodman_loading,
                                   intake_pressure, summarise_pump_card, taper_loads)
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
-from ..errors import PumpjackError
+from ..errors import DownholeError, PumpjackError
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
 from .rods import pressures, rods, well_of
@@ -54,9 +54,12 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     string = rods(unit)
     linkage = unit.geometry.linkage()
     reading, surface = time_card(unit, linkage, card, spm, samples, rotation)
-    nu, source = damping_factor(unit, damping, string, surface, method)
-    pump = pump_card(string, surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
-                     damping_factor=nu, method=method)
+    try:
+        nu, source = damping_factor(unit, damping, string, surface, method)
+        pump = pump_card(string, surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
+                         damping_factor=nu, method=method)
+    except DownholeError as exc:
+        raise PumpjackError(f"{card.name} on the rods of unit {unit.name}: {exc}") from None
     figures = summarise_pump_card(pump.pump_position, pump.pump_load)
     loads = taper_loads(string, pump.joint_load)
     surface_work = float(card_work(surface.position, surface.load))

@@ -240,9 +240,9 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
 
     undamped, damped = excess(0.0), excess(largest)
     if not (damped <= 0.0 <= undamped):
-        raise DownholeError(f"pump work {pump_work / 1e3:.4g} kJ per cycle is outside "
-                            f"{(damped + pump_work) / 1e3:.4g}-{(undamped + pump_work) / 1e3:.4g} kJ, the pump "
-                            f"work for damping factors {largest:g}-0: no damping factor explains it")
+        raise DownholeError(f"pump work {pump_work / 1e3:.4g} kJ per cycle is not between "
+                            f"{(damped + pump_work) / 1e3:.4g} and {(undamped + pump_work) / 1e3:.4g} kJ, the pump "
+                            f"work at damping factors {largest:g} and 0: no damping factor explains it")
     return float(brentq(excess, 0.0, largest, xtol=1e-10))
 
 
@@ -272,6 +272,7 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
         When no damping factor explains the card with this fluid load (wrong fluid level,
         wrong rods, or a card of another well), or the iteration does not settle.
     """
+    check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
     nu = DEFAULT_DAMPING_FACTOR
     for _ in range(iterations):
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
