@@ -98,8 +98,8 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
                pump.pump_load),
     )
     panels = (
-        Panel("surface and pump cards", ("rod_load",), x="position",
-              curves=(Curve("pump card", "pump_position", "pump_load"),)),
+        Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
+                                  Curve("pump card", "pump_position", "pump_load")), x_label="position"),
         _goodman_panel(string, loads, service_factor),
     )
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
@@ -127,16 +127,21 @@ def _tapers(string, loads, service_factor: float) -> list[Scalar]:
 
 
 def _goodman_panel(string, loads, service_factor: float) -> Panel:
-    """The modified Goodman diagram: each taper's (S_min, S_max) and its allowable line."""
+    """The modified Goodman diagram ([API11BR]): the (S_min, S_max) of each taper's top and
+    bottom, the allowable line of each grade and the line S_max = S_min below which no
+    point can lie."""
     curves = []
     for i in range(len(string.length)):
-        low = float(min(loads.top_min_stress[i], loads.bottom_min_stress[i]))
-        high = float(max(loads.top_max_stress[i], loads.bottom_max_stress[i]))
-        curves.append(Curve(f"taper {i + 1}", (low,), (high,), quantity="stress", style="o"))
-        strength = float(string.tensile_strength[i])
-        if math.isfinite(strength):
-            span = np.array([0.0, strength / 2.0])
-            allowable = goodman_allowable_stress(strength, span, service_factor)
-            curves.append(Curve(f"allowable, taper {i + 1}", tuple(span), tuple(allowable), quantity="stress",
-                                style="--"))
-    return Panel("modified Goodman diagram: max stress", (), curves=tuple(curves), x_label="min stress")
+        for end, marker in (("top", "o"), ("bottom", "s")):
+            low, high = float(getattr(loads, f"{end}_min_stress")[i]), float(getattr(loads, f"{end}_max_stress")[i])
+            curves.append(Curve(f"taper {i + 1} {end}", (low,), (high,), quantity="stress", style=marker))
+    strengths = sorted({float(t) for t in string.tensile_strength if math.isfinite(float(t))})
+    for strength in strengths:
+        span = np.array([0.0, strength / 2.0])
+        allowable = goodman_allowable_stress(strength, span, service_factor)
+        curves.append(Curve(f"allowable S_A, T = {strength / 1e6:.0f} MPa", tuple(span), tuple(allowable),
+                            quantity="stress", style="--"))
+    if strengths:
+        span = (0.0, strengths[-1] / 2.0)
+        curves.append(Curve("S_max = S_min", span, span, quantity="stress", style=":"))
+    return Panel("max stress", (), curves=tuple(curves), x_label="min stress (modified Goodman diagram)")
