@@ -18,7 +18,6 @@ from typer.core import TyperGroup
 
 from . import __version__
 from .errors import PumpjackError
-from .render import drop_stdout
 
 #: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
 #: The summary is the first line of the function's docstring (a test keeps them equal).
@@ -118,6 +117,8 @@ def main(argv: list[str] | None = None) -> int:
         return _fail(" ".join(message.split()))
     except BrokenPipeError:
         # The reader of a pipe (`| head`) went away: stop quietly, as cat does.
+        from .render import drop_stdout
+
         drop_stdout()
         return 1
     except MemoryError:

@@ -24,7 +24,6 @@ import os
 import shutil
 import stat
 import sys
-import tempfile
 import textwrap
 from pathlib import Path
 from typing import Any, TextIO
@@ -131,13 +130,16 @@ def write_csv(result: Result, system: str, stream: TextIO) -> None:
     worker processes on every core, block by block and written in order.
     """
     global _FORKED
-    import multiprocessing
-
     writer = csv.writer(stream, lineterminator="\n")
     writer.writerow(display_name(c.name, c.quantity, system) for c in result.columns)
     starts = range(0, result.rows, CSV_BLOCK)
     workers = min(os.cpu_count() or 1, len(starts))
-    if result.rows < PARALLEL_ROWS or workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
+    serial = result.rows < PARALLEL_ROWS or workers < 2
+    if not serial:
+        import multiprocessing
+
+        serial = "fork" not in multiprocessing.get_all_start_methods()
+    if serial:
         for start in starts:
             stream.write(_csv_block(result, system, start))
         return
@@ -348,6 +350,8 @@ class Target:
         try:
             if self.in_place:
                 return open(self.path, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
+            import tempfile
+
             fd, name = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.path.suffix, dir=self.path.parent)
             self.tmp = Path(name)
             return os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))

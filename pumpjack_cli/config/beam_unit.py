@@ -11,18 +11,19 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 from pydantic import Field, field_validator, model_validator
 
 from ..core.beam.geometry import Linkage, beam_linkage, check_assembly
-from ..core.beam.masses import MassModel, counterweight_set_mass
-from ..core.beam.redundancy import PinTilts, PitmanSection
-from ..core.beam.spatial import SpatialLinkage
 from ..core.designations import parse_designation
 from ..core.dynamics.drive import belt_ratio, rated_crank_speed, total_ratio
 from ..errors import ConfigError, DesignationError, GeometryError
 from .geometry_names import ROTATION_SIGNS, canonical_geometry
+if TYPE_CHECKING:  # the spatial and mass models are imported when a command uses them
+    from ..core.beam.masses import MassModel
+    from ..core.beam.redundancy import PinTilts, PitmanSection
+    from ..core.beam.spatial import SpatialLinkage
 from .quantities import (Angle, Area, AreaMoment, Count, Density, Force, Fraction, KinematicViscosity, Length, Mass,
                          MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section, Torque,
                          WeightPerLength, at_least)
@@ -78,6 +79,8 @@ class Geometry(Section):
             raise ConfigError(
                 f"{source}: geometry: the spatial model needs crank_half_spacing and equalizer_half_length"
             )
+        from ..core.beam.spatial import SpatialLinkage
+
         return SpatialLinkage(self.linkage(), self.crank_half_spacing, self.equalizer_half_length)
 
 
@@ -161,6 +164,8 @@ class Masses(Section):
 
     def model(self) -> MassModel:
         """The numerical core's view of the masses."""
+        from ..core.beam.masses import MassModel, counterweight_set_mass
+
         return MassModel(
             crank_arm_mass=self.crank_arm.mass,
             crank_arm_cg=self.crank_arm.cg_radius,
@@ -329,6 +334,8 @@ class PitmanSectionConfig(Section):
     torsion_constant: Annotated[AreaMoment, at_least(1e-8, "1 cm4")] = Field(gt=0, le=1e-2, description="J_t, the polar moment J_p for a tube [m⁴]")
 
     def model(self) -> PitmanSection:
+        from ..core.beam.redundancy import PitmanSection
+
         return PitmanSection(self.youngs_modulus, self.shear_modulus, self.area, self.inplane_inertia,
                              self.outofplane_inertia, self.torsion_constant)
 
@@ -351,6 +358,8 @@ class Deviations(Section):
                                      description="pin B1 bore turned about the vertical across the beam [rad]")
 
     def tilts(self) -> PinTilts:
+        from ..core.beam.redundancy import PinTilts
+
         return PinTilts(self.crank_pin_tilt_radial, self.crank_pin_tilt_tangential,
                         self.equalizer_pin_roll, self.equalizer_pin_yaw)
 

@@ -14,7 +14,6 @@ import json
 import os
 import tomllib
 from dataclasses import dataclass
-from importlib import resources
 from pathlib import Path
 from typing import Any, Callable
 
@@ -174,12 +173,8 @@ def read_unit_file(path: Path):
 
 def bundled_units() -> dict[str, Path]:
     """Bundled unit files by name (file stem), sorted."""
-    folder = resources.files(BUNDLED_PACKAGE)
-    return {
-        Path(entry.name).stem: Path(str(entry))
-        for entry in sorted(folder.iterdir(), key=lambda e: e.name)
-        if Path(entry.name).suffix in SUFFIXES
-    }
+    folder = Path(next(iter(importlib.import_module(BUNDLED_PACKAGE).__path__)))
+    return {entry.stem: entry for entry in sorted(folder.iterdir(), key=lambda e: e.name) if entry.suffix in SUFFIXES}
 
 
 def unit_listing() -> list[dict[str, Any]]:
