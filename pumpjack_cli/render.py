@@ -21,6 +21,7 @@ import io
 import json
 import math
 import os
+import re
 import shutil
 import stat
 import sys
@@ -171,6 +172,13 @@ def write_json(result: Result, system: str, stream: TextIO) -> None:
     stream.write("\n")
 
 
+def _wrap(text: str, width: int) -> list[str]:
+    """Lines of at most ``width`` characters that never break inside a number written with
+    digit groups ("13 300 lbf" stays on one line)."""
+    guarded = re.sub(r"(?<=\d) (?=\d)", "\u00a0", text)
+    return [line.replace("\u00a0", " ") for line in textwrap.wrap(guarded, width)]
+
+
 def _format(value: float) -> str:
     return f"{value:.6g}"
 
@@ -191,19 +199,35 @@ def _summary_lines(result: Result, system: str, width: int) -> list[str]:
     lines = []
     for name, value, label, meaning in rows:
         head = f"{name:<{name_w}}  {value:>{value_w}}  {label:<{unit_w}}  "
-        if room >= 24:
-            wrapped = textwrap.wrap(meaning, room) or [""]
+        if lead > width:
+            lines += [name, f"    {value}  {label}".rstrip()]
+            lines += ["    " + more for more in _wrap(meaning, max(width - 4, 20))]
+        elif room >= 24:
+            wrapped = _wrap(meaning, room) or [""]
             lines.append((head + wrapped[0]).rstrip())
             lines += [" " * lead + more for more in wrapped[1:]]
         else:
             lines.append(head.rstrip())
-            lines += ["    " + more for more in textwrap.wrap(meaning, max(width - 4, 20))]
+            lines += ["    " + more for more in _wrap(meaning, max(width - 4, 20))]
     return lines
+
+
+def _wrap_text_columns(columns: list[tuple[str, str, list[str], bool]], width: int):
+    """Text cells wrapped (lines joined by newlines) so that the text columns fit beside the
+    first column; numbers are never wrapped."""
+    first = max(len(columns[0][0]), len(columns[0][1]), *(len(v) for v in columns[0][2]))
+    room = max(width - first - 2, 20)
+    return [(name, label, ["\n".join(_wrap(v, room)) or "" for v in values] if text else values, text)
+            if i and text else (name, label, values, text) for i, (name, label, values, text) in enumerate(columns)]
+
+
+def _cell_width(text: str) -> int:
+    return max((len(part) for part in text.split("\n")), default=0)
 
 
 def _table_blocks(columns: list[tuple[str, str, list[str], bool]], width: int) -> list[list[int]]:
     """Column indices per block: the first column starts every block, the others fill the width."""
-    widths = [max(len(name), len(label), *(len(v) for v in values)) for name, label, values, _ in columns]
+    widths = [max(len(name), len(label), *(_cell_width(v) for v in values)) for name, label, values, _ in columns]
     blocks, current, used = [], [0], widths[0]
     for i in range(1, len(columns)):
         if len(current) > 1 and used + 2 + widths[i] > width:
@@ -217,14 +241,20 @@ def _table_blocks(columns: list[tuple[str, str, list[str], bool]], width: int) -
 
 def _row_lines(columns: list[tuple[str, str, list[str], bool]], block: list[int]) -> list[str]:
     """Header (name, unit), a rule and the rows of one block; text left-aligned, numbers right-aligned."""
-    widths = {i: max(len(columns[i][0]), len(columns[i][1]), *(len(v) for v in columns[i][2])) for i in block}
+    widths = {i: max(len(columns[i][0]), len(columns[i][1]), *(_cell_width(v) for v in columns[i][2])) for i in block}
 
     def line(cells) -> str:
         return "  ".join(cell.ljust(widths[i]) if columns[i][3] else cell.rjust(widths[i]) for i, cell in cells).rstrip()
 
+    def row(r: int) -> list[str]:
+        parts = {i: columns[i][2][r].split("\n") for i in block}
+        height = max(len(p) for p in parts.values())
+        return [line((i, parts[i][k] if k < len(parts[i]) else "") for i in block) for k in range(height)]
+
     lines = [line((i, columns[i][0]) for i in block), line((i, columns[i][1]) for i in block),
              "  ".join("-" * widths[i] for i in block)]
-    lines += [line((i, columns[i][2][r]) for i in block) for r in range(len(columns[block[0]][2]))]
+    for r in range(len(columns[block[0]][2])):
+        lines += row(r)
     return lines
 
 
@@ -232,7 +262,7 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
     """Title, summary and the brief columns as plain text that never cuts a number or a name."""
     width = width if width is not None else shutil.get_terminal_size(fallback=(80, 24)).columns
     width = max(width, 40)
-    lines = textwrap.wrap(result.title, width) + [""]
+    lines = _wrap(result.title, width) + [""]
     summary = _summary_lines(result, system, width)
     if summary:
         lines += summary + [""]
@@ -244,6 +274,7 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
         columns.append((c.name, f"[{label}]" if label else "",
                         [v if isinstance(v, str) else _format(v) for v in values], c.quantity == TEXT))
     if columns:
+        columns = _wrap_text_columns(columns, width)
         for number, block in enumerate(_table_blocks(columns, width)):
             if number:
                 lines.append("")
