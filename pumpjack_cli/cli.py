@@ -34,6 +34,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "dynamics": ("dynamics", "dynamics", "Non-uniform crank rotation from the machine's equation of motion."),
     "torque": ("torque", "torque", "Gearbox torque, counterbalance and loading of a unit from a dynamometer card."),
     "downhole": ("downhole", "downhole", "Pump card from a surface dynamometer card through the rod string's wave equation."),
+    "predict": ("predict", "predict", "Surface and pump cards predicted from unit, rods, pump and fluid level."),
 }
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 

@@ -14,13 +14,12 @@ import sys
 
 import numpy as np
 
-from ..core.rods.analysis import (card_work, displacement_rate, goodman_allowable_stress, goodman_loading,
-                                  intake_pressure, summarise_pump_card, taper_loads)
+from ..core.rods.analysis import card_work, displacement_rate, intake_pressure, summarise_pump_card, taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
 from ..errors import DownholeError, PumpjackError
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
-from .rods import pressures, rods, well_of
+from .rods import goodman_panel, pressures, rods, taper_summary, well_of
 
 #: Samples per period of the surface card on its uniform time grid.
 DEFAULT_SAMPLES = 200
@@ -87,7 +86,7 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
         summary.append(Scalar("pump_intake_pressure", "pressure",
                               float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0])),
                               "discharge pressure minus fluid load / plunger area"))
-    summary += _tapers(string, loads, service_factor)
+    summary += taper_summary(string, loads, service_factor)
     columns = (
         Column("time", "time", "time from crank angle 0", surface.time),
         Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", surface.crank_angle),
@@ -100,48 +99,7 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     panels = (
         Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
                                   Curve("pump card", "pump_position", "pump_load")), x_label="position"),
-        _goodman_panel(string, loads, service_factor),
+        goodman_panel(string, loads, service_factor),
     )
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
     return Result(title, tuple(summary), columns, panels)
-
-
-def _tapers(string, loads, service_factor: float) -> list[Scalar]:
-    """Per taper (top first): extreme stresses at its ends and its Goodman loading."""
-    found = []
-    graded = not np.isnan(string.tensile_strength).any()
-    if not graded:
-        sys.stderr.write("pumpjack: warning: a rod section has no grade or tensile_strength: the Goodman loading "
-                         "is left out\n")
-    goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
-    for i, name in enumerate(string.names or [f"taper {i + 1}" for i in range(len(string.length))], start=1):
-        for end in ("top", "bottom"):
-            for label in ("max", "min"):
-                found.append(Scalar(f"taper_{i}_{end}_{label}_stress", "stress",
-                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1]),
-                                    f"{label} stress at the {end} of taper {i} ({name})"))
-        if math.isfinite(float(goodman[i - 1])):
-            found.append(Scalar(f"taper_{i}_goodman_loading", "percent", float(goodman[i - 1]),
-                                f"modified Goodman loading of taper {i} ({name}), service factor {service_factor:g}"))
-    return found
-
-
-def _goodman_panel(string, loads, service_factor: float) -> Panel:
-    """The modified Goodman diagram ([API11BR]): the (S_min, S_max) of each taper's top and
-    bottom, the allowable line of each grade and the line S_max = S_min below which no
-    point can lie."""
-    curves = []
-    for i in range(len(string.length)):
-        for end, marker in (("top", "o"), ("bottom", "s")):
-            low, high = float(getattr(loads, f"{end}_min_stress")[i]), float(getattr(loads, f"{end}_max_stress")[i])
-            curves.append(Curve(f"taper {i + 1} {end}", (low,), (high,), quantity="stress", style=marker))
-    strengths = sorted({float(t) for t in string.tensile_strength if math.isfinite(float(t))})
-    for strength in strengths:
-        span = np.array([0.0, strength / 2.0])
-        allowable = goodman_allowable_stress(strength, span, service_factor)
-        curves.append(Curve(f"allowable S_A, T = {strength / 1e6:.0f} MPa", tuple(span), tuple(allowable),
-                            quantity="stress", style="--"))
-    if strengths:
-        span = (0.0, strengths[-1] / 2.0)
-        curves.append(Curve("S_max = S_min", span, span, quantity="stress", style=":"))
-    return Panel("max stress", (), curves=tuple(curves), x_label="min stress (modified Goodman diagram)")

@@ -53,8 +53,9 @@ def well(unit) -> WellLoad:
     )
 
 
-def machine(unit, card: Card | None = None) -> Machine:
-    """The core's machine of the equation of motion: masses, drive, motor and the well model or a card."""
+def machine(unit, card: Card | None = None, *, elastic_rods: bool = False) -> Machine:
+    """The core's machine of the equation of motion: masses, drive, motor and the well model or
+    a card; with ``elastic_rods`` no rod load (the coupled model carries the rods itself)."""
     for section in ("masses", "drive"):
         require(unit, section, "the equation of motion needs it")
     drive, motor = unit.drive, unit.drive.motor
@@ -68,5 +69,5 @@ def machine(unit, card: Card | None = None) -> Machine:
         drive_ratio=drive.total_ratio,
         motor=motor_characteristic(motor.rated_power, motor.synchronous_speed, motor.rated_speed,
                                    motor.starting_torque_ratio, motor.breakdown_torque_ratio),
-        rod_load=well(unit) if card is None else CardLoad(card),
+        rod_load=None if elastic_rods else well(unit) if card is None else CardLoad(card),
     )

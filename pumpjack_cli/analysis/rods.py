@@ -10,12 +10,17 @@ other a sinker bar, unless its ``kind`` says otherwise.
 from __future__ import annotations
 
 import math
+import sys
+
+import numpy as np
 
 from ..core.constants import STANDARD_GRAVITY
 from ..core.rods.pump import Pump, pump_pressures, tubing_stiffness
 from ..core.rods.string import RodString
 from ..core.rods.tables import RodSection, rod_string, steel_rod
+from ..core.rods.analysis import goodman_allowable_stress, goodman_loading
 from ..errors import DownholeError, PumpjackError
+from ..results import Curve, Panel, Scalar
 from .inputs import require
 
 
@@ -78,3 +83,44 @@ def pump(unit) -> Pump:
         stiffness = tubing_stiffness(well.tubing_size, well.pump_depth)
     return Pump(math.pi * well.plunger_diameter**2 / 4.0, found[0], found[1], fillage=well.pump_fillage,
                 gas_exponent=well.gas_exponent, tubing_stiffness=stiffness)
+
+
+def taper_summary(string, loads, service_factor: float) -> list[Scalar]:
+    """Per taper (top first): extreme stresses at its ends and its Goodman loading ([API11BR])."""
+    found = []
+    graded = not np.isnan(string.tensile_strength).any()
+    if not graded:
+        sys.stderr.write("pumpjack: warning: a rod section has no grade or tensile_strength: the Goodman loading "
+                         "is left out\n")
+    goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
+    for i, name in enumerate(string.names or [f"taper {i + 1}" for i in range(len(string.length))], start=1):
+        for end in ("top", "bottom"):
+            for label in ("max", "min"):
+                found.append(Scalar(f"taper_{i}_{end}_{label}_stress", "stress",
+                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1]),
+                                    f"{label} stress at the {end} of taper {i} ({name})"))
+        if math.isfinite(float(goodman[i - 1])):
+            found.append(Scalar(f"taper_{i}_goodman_loading", "percent", float(goodman[i - 1]),
+                                f"modified Goodman loading of taper {i} ({name}), service factor {service_factor:g}"))
+    return found
+
+
+def goodman_panel(string, loads, service_factor: float) -> Panel:
+    """The modified Goodman diagram ([API11BR]): the (S_min, S_max) of each taper's top and
+    bottom, the allowable line of each grade and the line S_max = S_min below which no
+    point can lie."""
+    curves = []
+    for i in range(len(string.length)):
+        for end, marker in (("top", "o"), ("bottom", "s")):
+            low, high = float(getattr(loads, f"{end}_min_stress")[i]), float(getattr(loads, f"{end}_max_stress")[i])
+            curves.append(Curve(f"taper {i + 1} {end}", (low,), (high,), quantity="stress", style=marker))
+    strengths = sorted({float(t) for t in string.tensile_strength if math.isfinite(float(t))})
+    for strength in strengths:
+        span = np.array([0.0, strength / 2.0])
+        allowable = goodman_allowable_stress(strength, span, service_factor)
+        curves.append(Curve(f"allowable S_A, T = {strength / 1e6:.0f} MPa", tuple(span), tuple(allowable),
+                            quantity="stress", style="--"))
+    if strengths:
+        span = (0.0, strengths[-1] / 2.0)
+        curves.append(Curve("S_max = S_min", span, span, quantity="stress", style=":"))
+    return Panel("max stress", (), curves=tuple(curves), x_label="min stress (modified Goodman diagram)")

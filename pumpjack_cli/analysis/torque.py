@@ -20,8 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.beam.balance import balance_criteria, recommend_counterbalance
+from ..core.beam.card import Card
 from ..core.beam.counterbalance import (Counterbalance, counterbalance_effect, counterbalance_from_masses,
-                                        counterweight_placement, upstroke_mask)
+                                        counterweight_placement)
 from ..core.beam.loading import card_work, cyclic_load_factor
 from ..core.beam.torque import (beam_group_inertia, crank_group_inertia, exact_net_torque, permissible_load,
                                 torque_components, torque_methods)
@@ -113,10 +114,38 @@ def _torques(unit, linkage, masses, balance: Counterbalance, run: CardRun, metho
 def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str, method: str, criterion: str,
            drive_efficiency: float = 1.0) -> Result:
     """The torque analysis of one card (see the module docstring)."""
+    check_options(method, criterion)
+    ratings(unit)
+    reading, runs = card_runs(unit, unit.geometry.linkage(), card, spm, (steps, SUMMARY_STEPS), rotation)
+    found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
+    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
+             f"balance {criterion}")
+    return Result(title, found.summary, found.columns, found.panels)
+
+
+def check_options(method: str, criterion: str) -> None:
+    """Refuse an unknown torque method or balance criterion, listing the valid ones."""
     if method not in torque_methods():
         raise PumpjackError(f"--method {method}: use one of {', '.join(torque_methods())}")
     if criterion not in balance_criteria():
         raise PumpjackError(f"--balance {criterion}: use one of {', '.join(balance_criteria())}")
+
+
+@dataclass(frozen=True)
+class CardTorque:
+    """The torque analysis of a card: summary, columns on the output grid, plot panels."""
+
+    summary: tuple[Scalar, ...]
+    columns: tuple[Column, ...]
+    panels: tuple[Panel, ...]
+
+
+def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: str,
+                drive_efficiency: float = 1.0) -> CardTorque:
+    """Net torque, balance and loading of a card (load at crank angles) run on the output grid
+    ``runs[0]`` and the summary grid ``runs[1]`` (:data:`SUMMARY_STEPS` points): the
+    analysis of a measured card and of a predicted one alike."""
+    check_options(method, criterion)
     rated = ratings(unit)
     linkage = unit.geometry.linkage()
     masses = mass_model(unit) if unit.masses is not None else None
@@ -124,7 +153,6 @@ def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
                             f"(--method api needs only [counterbalance])")
     balance, moment_known = counterbalance(unit, masses)
-    reading, runs = card_runs(unit, linkage, card, spm, (steps, SUMMARY_STEPS), rotation)
     out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.omega  # time share of each point of the uniform crank-angle grid
@@ -140,7 +168,7 @@ def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
         return t.net + (balance.moment - moment) * np.sin(t.run.crank_angle - balance.offset)
 
     tf_test = float(linkage.front_arm * linkage.motion(np.array([TEST_ANGLE])).beam_rate[0])
-    work = card_work(linkage, reading.card)
+    work = card_work(linkage, card)
     frequency = 1.0 / out.run.period
     summary = [Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi * frequency, "pumping speed of the run"),
                Scalar("structural_unbalance", "force", balance.structural_unbalance, "B, downward positive"),
@@ -190,14 +218,12 @@ def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
         Scalar("motor_power", "power", rms * 2.0 * np.pi * frequency / drive_efficiency,
                "motor power for the RMS torque at the mean speed, / drive efficiency ([DurhamLockard1988])"),
     ]
-    summary += _loading(rated, reading.card.load.max(), linkage.stroke, current, recommended, theta)
+    summary += _loading(rated, card.load.max(), linkage.stroke, current, recommended, theta)
     if dense.exact is not None:
         summary.append(Scalar("peak_exact_minus_api_torque", "torque", peak(theta, dense.exact - dense.api).value,
                               "largest |exact - API net torque|"))
     columns = _columns(linkage, out, balance, moment_known, shifted(out, recommendation.moment), rated)
-    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
-             f"balance {criterion}")
-    return Result(title, tuple(summary), tuple(columns), _panels(columns, rated, moment_known))
+    return CardTorque(tuple(summary), tuple(columns), _panels(columns, rated, moment_known))
 
 
 def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommended, theta) -> list[Scalar]:

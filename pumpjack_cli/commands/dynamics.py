@@ -2,19 +2,29 @@
 
 from __future__ import annotations
 
+from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
+from ..analysis.card_runs import CardSource
 from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
-from ..analysis.card_runs import CardSource
-from ..options import CardColumnsOption, finite, CardUnitsOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
+from ..errors import PumpjackError
+from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
+                       UnitsOption, UnitSystem, finite)
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
+#: The elastic-rod model needs this many time samples per revolution at least.
+WAVE_STEPS = 64
+
+
+class WellModel(str, Enum):
+    rigid = "rigid"
+    wave = "wave"
 
 
 def dynamics(
@@ -27,6 +37,13 @@ def dynamics(
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
                                         min=1e-13, max=1e-3, callback=finite)] = DEFAULT_RTOL,
     steps: Annotated[int, typer.Option(help="crank positions per revolution in the output", min=4, max=1_000_000)] = 360,
+    well_model: Annotated[WellModel, typer.Option(
+        help="rigid: the rigid-rod well model of [SK8Rotation2013]; wave: the elastic rods of the unit's [well] "
+             "(damped wave equation, pump valves) solved together with the machine, on --steps time samples")
+    ] = WellModel.rigid,
+    damping: Annotated[float | None, typer.Option(
+        help="with --well-model wave: Gibbs' damping factor nu of the rods [default: the unit file's, else 0.05]",
+        min=0.0, max=2.0, callback=finite)] = None,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
@@ -37,5 +54,18 @@ def dynamics(
     The periodic motion under the motor's characteristic, the well (or a dynamometer
     card) and the weights."""
     sink = Output(fmt, units, out, plot)
-    source = None if card is None else CardSource(card, card_units.value, card_columns)
-    sink.emit(run(load_unit(unit), source, rtol, steps), SHOWN)
+    if well_model is WellModel.rigid:
+        if damping is not None:
+            raise PumpjackError("--damping applies to --well-model wave")
+        source = None if card is None else CardSource(card, card_units.value, card_columns)
+        sink.emit(run(load_unit(unit), source, rtol, steps), SHOWN)
+        return
+    if card is not None:
+        raise PumpjackError("--card drives the unit with a measured load; --well-model wave predicts it: give one")
+    if not WAVE_STEPS <= steps <= 20_000:
+        raise PumpjackError(f"--steps: the wave model takes {WAVE_STEPS} to 20000 time samples per revolution")
+    from ..analysis.predict import wave_dynamics
+
+    sink.emit(wave_dynamics(load_unit(unit), steps, damping), ("crank_angle", "time", "crank_speed",
+                                                              "crank_acceleration", "motor_torque", "rod_load",
+                                                              "inertia_torque"))

@@ -1,0 +1,339 @@
+"""Surface and pump cards predicted from the design: `pumpjack predict` and `dynamics --well-model wave`.
+
+The rod string of the unit's ``[well]`` as a damped wave equation driven at the top by
+the unit's exact polished-rod motion, with the pump's valves at the bottom
+([Gibbs1963]; :mod:`pumpjack_cli.core.rods.predict`), at uniform crank speed or solved
+together with the machine's equation of motion ([SK8Rotation2013] eq. 1;
+:mod:`pumpjack_cli.core.dynamics.coupled`). The predicted surface card then goes
+through the torque analysis of `pumpjack torque` ([API11E]), and the rods through the
+stress and Goodman summary of `pumpjack downhole` ([API11BR]).
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.beam.card import Card, card_load
+from ..core.rods.analysis import taper_loads
+from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
+from ..core.rods.predict import Prediction, predict_cards
+from ..core.sampling import crank_grid, cycle_period, uniform_time
+from ..errors import PumpjackError
+from ..results import Column, Curve, Panel, Result, Scalar
+from .card_runs import CardRun
+from .inputs import crank_speed, require
+from .machine import machine
+from .rods import goodman_panel, pump, rods, taper_summary, well_of
+from .torque import SUMMARY_STEPS, card_torque
+
+#: Time samples per cycle of the predicted cards.
+DEFAULT_SAMPLES = 360
+#: Rotation models of a prediction.
+ROTATIONS = ("uniform", "dynamic")
+#: Torque-analysis names that repeat what the prediction reports itself.
+_TORQUE_REPEATS = ("strokes_per_minute", "card_work", "polished_rod_power")
+
+
+@dataclass(frozen=True)
+class WellOverrides:
+    """Well data given as options, SI; None keeps the unit file's value. The fluid level
+    (submergence) and the intake pressure replace each other."""
+
+    submergence: float | None = None
+    intake_pressure: float | None = None
+    tubing_head_pressure: float | None = None
+    casing_head_pressure: float | None = None
+    fluid_density: float | None = None
+    fillage: float | None = None
+    gas_exponent: float | None = None
+
+
+#: Override field -> (the well's field, the option that sets it).
+_OVERRIDES = {
+    "submergence": ("pump_submergence", "--submergence"),
+    "intake_pressure": ("pump_intake_pressure", "--intake-pressure"),
+    "tubing_head_pressure": ("tubing_head_pressure", "--tubing-head-pressure"),
+    "casing_head_pressure": ("casing_head_pressure", "--casing-head-pressure"),
+    "fluid_density": ("fluid_density", "--fluid-density"),
+    "fillage": ("pump_fillage", "--fillage"),
+    "gas_exponent": ("gas_exponent", "--gas-exponent"),
+}
+
+
+def with_overrides(unit, overrides: WellOverrides):
+    """The unit with its ``[well]`` changed by the options, validated by the well's schema
+    (a value out of range is refused naming its option)."""
+    from pydantic import ValidationError
+
+    well = well_of(unit)
+    data = well.model_dump()
+    for name, (field, _) in _OVERRIDES.items():
+        value = getattr(overrides, name)
+        if value is not None:
+            data[field] = value
+    if overrides.submergence is not None:
+        data["pump_intake_pressure"] = None
+    if overrides.intake_pressure is not None:
+        data["pump_submergence"] = None
+    try:
+        changed = type(well).model_validate(data)
+    except ValidationError as exc:
+        error = exc.errors()[0]
+        field = str(error["loc"][0]) if error["loc"] else ""
+        option = next((option for f, option in _OVERRIDES.values() if f == field), f"well.{field}")
+        raise PumpjackError(f"{option}: {error['msg']}") from None
+    return unit.model_copy(update={"well": changed})
+
+
+def damping_factor(unit, given: float | None) -> float:
+    """Gibbs' nu: the option, else the unit file's, else the default with a warning ([Gibbs1963])."""
+    if given is not None:
+        return given
+    if unit.well.damping_factor is not None:
+        return unit.well.damping_factor
+    sys.stderr.write(f"pumpjack: warning: unit {unit.name}: no well.damping_factor; damping factor "
+                     f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)\n")
+    return DEFAULT_DAMPING_FACTOR
+
+
+@dataclass(frozen=True)
+class Predicted:
+    """A prediction with the crank's motion at its samples (uniform: constant speed, zero
+    acceleration) and, for the coupled solution, the machine's torques."""
+
+    cards: Prediction
+    crank_speed: np.ndarray
+    crank_acceleration: np.ndarray
+    coupled: object | None
+    damping: float
+
+
+def predicted(unit, spm: float | None, rotation: str, samples: int, damping: float | None) -> Predicted:
+    """Solve the well at uniform crank speed (``--spm`` or the drive) or coupled with the machine."""
+    if rotation not in ROTATIONS:
+        raise PumpjackError(f"--rotation {rotation}: use one of {', '.join(ROTATIONS)}")
+    string, well_pump, well = rods(unit), pump(unit), unit.well
+    nu = damping_factor(unit, damping)
+    if rotation == "uniform":
+        omega = crank_speed(unit, spm)
+        cards = predict_cards(unit.geometry.linkage(), omega, string, well_pump, damping=nu,
+                              fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
+        return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
+    if spm is not None:
+        raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
+    for section in ("masses", "drive"):
+        require(unit, section, "--rotation dynamic solves the machine's equation of motion")
+    from ..core.dynamics.coupled import predict_coupled
+
+    both = predict_coupled(machine(unit, elastic_rods=True), string, well_pump, damping=nu,
+                           fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
+    return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu)
+
+
+def _runs(found: Predicted, steps: int) -> tuple[Card, list[CardRun]]:
+    """The predicted surface card on the crank-angle axis, run on the output grid (the
+    prediction's own crank angles) and on the torque summary's grid."""
+    cards = found.cards
+    card = Card(cards.crank_angle, cards.polished_rod_load)
+    period = cards.summary.period
+    if found.coupled is None:
+        omega = float(found.crank_speed[0])
+        runs = [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),
+                        card_load(card, theta), cycle_period(omega), "uniform")
+                for theta in (cards.crank_angle, crank_grid(steps))]
+        return card, runs
+
+    def run(theta):
+        angle = np.append(cards.crank_angle, 2.0 * np.pi)
+        return CardRun(theta, np.interp(theta, angle, np.append(cards.time, period)),
+                       np.interp(theta, cards.crank_angle, found.crank_speed, period=2.0 * np.pi),
+                       np.interp(theta, cards.crank_angle, found.crank_acceleration, period=2.0 * np.pi),
+                       card_load(card, theta), period, "dynamic")
+
+    return card, [CardRun(cards.crank_angle, cards.time, found.crank_speed, found.crank_acceleration,
+                          cards.polished_rod_load, period, "dynamic"), run(crank_grid(steps))]
+
+
+def _card_summary(cards: Prediction, nu: float, fillage: float) -> list[Scalar]:
+    s = cards.summary
+    high, low = s.peak_polished_rod_load, s.minimum_polished_rod_load
+    c = s.convergence
+    return [
+        Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / s.period, "pumping speed (mean)"),
+        Scalar("period", "time", s.period, "time of one stroke cycle"),
+        Scalar("damping_factor", "ratio", nu, "Gibbs' nu of the rods"),
+        Scalar("max_rod_load", "force", high.value, "peak polished-rod load (PPRL)"),
+        Scalar("max_rod_load_crank_angle", "angle", high.crank_angle, "crank angle of the PPRL"),
+        Scalar("min_rod_load", "force", low.value, "minimum polished-rod load (MPRL)"),
+        Scalar("min_rod_load_crank_angle", "angle", low.crank_angle, "crank angle of the MPRL"),
+        Scalar("buoyant_rod_weight", "force", s.buoyant_rod_weight, "rods with couplings in the well fluid, W_rf"),
+        Scalar("fluid_load", "force", s.fluid_load, "F_o = (p_d - p_i) A_p on the plunger"),
+        Scalar("stroke", "length", s.polished_rod_stroke, "polished-rod stroke"),
+        Scalar("gross_pump_stroke", "length", s.gross_plunger_stroke, "plunger travel"),
+        Scalar("net_pump_stroke", "length", s.net_plunger_stroke, "liquid discharged per stroke / plunger area"),
+        Scalar("pump_fillage", "percent", fillage, "share of the barrel filled with liquid (input)"),
+        Scalar("static_stretch", "length", s.static_stretch, "F_o x (rods' and tubing's compliance): stretch under the "
+               "fluid load"),
+        Scalar("pump_displacement", "flow_rate", s.pump_rate, "liquid discharged per unit time"),
+        Scalar("surface_card_work", "energy", s.surface_card_work, "polished-rod work per cycle"),
+        Scalar("pump_card_work", "energy", s.pump_card_work, "work on the fluid per cycle"),
+        Scalar("damping_dissipation", "energy", s.damping_dissipation, "work of the rods' damping per cycle"),
+        Scalar("rod_energy_residual", "ratio", s.energy_residual, "(surface - pump - damping work) / surface work"),
+        Scalar("polished_rod_power", "power", s.polished_rod_power, "surface card work x cycles per second"),
+        Scalar("cycles", "count", c.cycles, "cycles marched to the periodic state"),
+        Scalar("periodicity_error", "ratio", c.change, "largest relative change of the pump card in the last cycle"),
+    ]
+
+
+def coupled_summary(s) -> list[Scalar]:
+    """The machine's side of a coupled solution (:class:`~pumpjack_cli.core.dynamics.coupled.CoupledSummary`)."""
+    rows = [Scalar("mean_crank_speed", "angular_velocity", s.mean_speed, "mean crank speed, 2 pi / cycle time"),
+            Scalar("speed_fluctuation", "percent", s.speed_fluctuation, "(max - min) / mean crank speed")]
+    for label, extreme, quantity, what in (
+        ("max_crank_speed", s.max_speed, "angular_velocity", "max crank speed"),
+        ("min_crank_speed", s.min_speed, "angular_velocity", "min crank speed"),
+        ("max_crank_acceleration", s.max_acceleration, "angular_acceleration", "max crank acceleration"),
+        ("min_crank_acceleration", s.min_acceleration, "angular_acceleration", "min crank acceleration"),
+        ("max_motor_torque", s.peak_motor_torque, "torque", "max motor torque"),
+        ("min_motor_torque", s.min_motor_torque, "torque", "min motor torque (negative: generating)"),
+        ("max_inertia_torque", s.peak_inertia_torque, "torque", "max inertia torque of links and drive"),
+        ("min_inertia_torque", s.min_inertia_torque, "torque", "min inertia torque of links and drive"),
+    ):
+        rows += [Scalar(label, quantity, extreme.value, what),
+                 Scalar(f"{label}_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {what}")]
+    rows += [Scalar("energy_per_cycle", "energy", s.motor_work, "energy the motor delivers per cycle"),
+             Scalar("rod_work_per_cycle", "energy", s.polished_rod_work, "work of the polished-rod load per cycle"),
+             Scalar("machine_energy_residual", "ratio", s.energy_residual,
+                    "(motor work - polished-rod work) / motor work: the equation of motion's energy closure"),
+             Scalar("breakdown_torque_margin", "ratio", s.breakdown_torque_margin,
+                    "motor pull-out torque / max motor torque"),
+             Scalar("revolutions", "count", s.convergence.cycles, "revolutions marched to the periodic state")]
+    return rows
+
+
+def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
+    """How the coupled solution differs from uniform rotation at its mean speed and from the
+    rigid-rod model of [SK8Rotation2013]."""
+    from ..core.dynamics.periodic import steady_state
+
+    cards = found.cards.summary
+    uniform = predict_cards(unit.geometry.linkage(), 2.0 * np.pi / cards.period, rods(unit), pump(unit),
+                            damping=found.damping, fluid_density=unit.well.fluid_density, samples=samples,
+                            rod_density=unit.well.rod_density)
+    uniform_found = Predicted(uniform, np.full(samples, 2.0 * np.pi / cards.period), np.zeros(samples), None,
+                              found.damping)
+    card, runs = _runs(uniform_found, SUMMARY_STEPS)
+    method = "exact" if unit.masses is not None else "api"
+    uniform_peak = next(s.value for s in card_torque(unit, card, runs, method, "equal-peaks").summary
+                        if s.name == "peak_net_torque")
+    rigid = steady_state(machine(unit), crank_grid(SUMMARY_STEPS))
+    rigid_load = rigid.rod_load
+    rows = [
+        Scalar("uniform_max_rod_load", "force", uniform.summary.peak_polished_rod_load.value,
+               "PPRL at uniform rotation at the same mean speed"),
+        Scalar("uniform_min_rod_load", "force", uniform.summary.minimum_polished_rod_load.value,
+               "MPRL at uniform rotation at the same mean speed"),
+        Scalar("uniform_peak_net_torque", "torque", uniform_peak,
+               "largest |net torque| at uniform rotation at the same mean speed"),
+        Scalar("rigid_rod_speed_fluctuation", "percent", rigid.summary.speed_fluctuation,
+               "speed fluctuation of the rigid-rod model ([SK8Rotation2013], `pumpjack dynamics`)"),
+        Scalar("rigid_rod_max_motor_torque", "torque", rigid.summary.max_motor_torque.value,
+               "max motor torque of the rigid-rod model"),
+        Scalar("rigid_rod_peak_inertia_torque", "torque", float(np.max(np.abs(rigid.inertia_torque))),
+               "largest |inertia torque| of the rigid-rod model"),
+        Scalar("rigid_rod_max_rod_load", "force", float(np.max(rigid_load)), "PPRL of the rigid-rod model"),
+        Scalar("rigid_rod_min_rod_load", "force", float(np.min(rigid_load)), "MPRL of the rigid-rod model"),
+    ]
+    return rows
+
+
+def predict(unit, spm: float | None, rotation: str, samples: int, damping: float | None,
+            overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
+            steps: int = SUMMARY_STEPS) -> Result:
+    """The result of `pumpjack predict` (module docstring)."""
+    unit = with_overrides(unit, overrides)
+    found = predicted(unit, spm, rotation, samples, damping)
+    cards = found.cards
+    summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
+    string = rods(unit)
+    joint = np.vstack([cards.taper_top_load, cards.taper_bottom_load[-1:]])
+    loads = taper_loads(string, joint)
+    summary += taper_summary(string, loads, service_factor)
+    card, runs = _runs(found, steps)
+    method = "exact" if unit.masses is not None else "api"
+    torque = card_torque(unit, card, runs, method, "equal-peaks")
+    summary += [s for s in torque.summary if s.name not in _TORQUE_REPEATS]
+    named = {c.name: c for c in torque.columns}
+    torque_column = named.get("net_torque", named["recommended_net_torque"])
+    columns = [
+        Column("time", "time", "time from crank angle 0", cards.time),
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", cards.crank_angle),
+        Column("position", "length", "polished-rod position above the bottom of the stroke",
+               cards.polished_rod_position),
+        Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
+        Column("rod_load", "force", "polished-rod load", cards.polished_rod_load),
+        Column("pump_position", "length", "plunger position, up positive, from where it hangs without fluid load "
+               "with the polished rod at the bottom", cards.plunger_position),
+        Column("pump_load", "force", "net plunger load (p_d - p_chamber) A_p", cards.pump_load),
+        Column("chamber_pressure", "pressure", "pressure in the pump chamber below the plunger",
+               cards.chamber_pressure),
+        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", found.crank_speed),
+        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1",
+               found.crank_acceleration),
+        torque_column,
+    ]
+    if found.coupled is not None:
+        both = found.coupled
+        columns += [Column("motor_torque", "torque", "motor shaft torque", both.motor_torque),
+                    Column("gearbox_torque", "torque", "gearbox torque on the crank from the equation of motion",
+                           both.gearbox_torque),
+                    Column("inertia_torque", "torque", "I epsilon1 + 1/2 I' omega1^2 of links and drive",
+                           both.inertia_torque)]
+        summary += coupled_summary(both.summary)
+        summary += _comparison(unit, found, samples)
+    panels = [Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
+                                        Curve("pump card", "pump_position", "pump_load")), x_label="position"),
+              Panel("net torque", (torque_column.name,), x="crank_angle"),
+              goodman_panel(string, loads, service_factor)]
+    if found.coupled is not None:
+        panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
+    title = (f"{unit.name}: predicted cards, {rotation} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
+             f"damping {found.damping:.3g}")
+    return Result(title, tuple(summary), tuple(columns), tuple(panels))
+
+
+def wave_dynamics(unit, samples: int, damping: float | None) -> Result:
+    """`pumpjack dynamics --well-model wave`: the machine's periodic motion with the elastic rods
+    of the unit's ``[well]`` instead of the rigid-rod model ([SK8Rotation2013], [Gibbs1963])."""
+    found = predicted(unit, None, "dynamic", samples, damping)
+    both, cards = found.coupled, found.cards
+    summary = [Scalar("damping_factor", "ratio", found.damping, "Gibbs' nu of the rods"),
+               Scalar("period", "time", cards.summary.period, "time of one stroke cycle"),
+               Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / cards.summary.period, "pumping speed"),
+               *coupled_summary(both.summary),
+               Scalar("max_rod_load", "force", cards.summary.peak_polished_rod_load.value, "peak polished-rod load"),
+               Scalar("min_rod_load", "force", cards.summary.minimum_polished_rod_load.value,
+                      "minimum polished-rod load")]
+    columns = (
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", cards.crank_angle),
+        Column("time", "time", "time from crank angle 0", cards.time),
+        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", both.crank_speed),
+        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1",
+               both.crank_acceleration),
+        Column("motor_torque", "torque", "motor shaft torque (linear characteristic)", both.motor_torque),
+        Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
+        Column("inertia_torque", "torque", "I epsilon1 + 1/2 I' omega1^2 of links and drive", both.inertia_torque),
+        Column("rod_load", "force", "polished-rod load (elastic rods)", cards.polished_rod_load),
+        Column("load_torque", "torque", "polished-rod load x torque factor", both.load_torque),
+        Column("gravity_torque", "torque", "torque of the links' weights and counterweights", both.gravity_torque),
+        Column("gearbox_torque", "torque", "gearbox torque on the crank, M_drive - I_drive epsilon1",
+               both.gearbox_torque),
+    )
+    panels = (Panel("crank speed omega1", ("crank_speed",)), Panel("motor torque", ("motor_torque",)),
+              Panel("polished-rod load", ("rod_load",)))
+    return Result(f"{unit.name}: dynamics, elastic rods (wave model), damping {found.damping:.3g}",
+                  tuple(summary), columns, panels)
+

@@ -1,0 +1,69 @@
+"""`pumpjack predict`: surface and pump cards from the design, at uniform speed or coupled with the machine."""
+
+from __future__ import annotations
+
+from enum import Enum
+from typing import Annotated
+
+import typer
+
+from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
+from ..analysis.predict import predict as run
+from ..config import load_unit
+from ..options import (FormatOption, Output, OutputOption, PlotOption, SpmOption, UnitArgument, UnitsOption,
+                       UnitSystem, finite, quantity)
+
+SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
+
+
+class Rotation(str, Enum):
+    uniform = "uniform"
+    dynamic = "dynamic"
+
+
+def _well(help_text: str):
+    return typer.Option(help=f"{help_text} [default: the unit's [well]]")
+
+
+def predict(
+    unit: UnitArgument,
+    spm: SpmOption = None,
+    rotation: Annotated[Rotation, typer.Option(
+        help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the crank speed from the "
+             "machine's equation of motion solved together with the rods")] = Rotation.uniform,
+    damping: Annotated[float | None, typer.Option(
+        help="Gibbs' dimensionless damping factor nu of the rods, 0 for none [default: the unit file's, else 0.05]",
+        min=0.0, max=2.0, callback=finite)] = None,
+    submergence: Annotated[str | None, _well("fluid level above the pump, with its unit ('100 m')")] = None,
+    intake_pressure: Annotated[str | None, _well("pump intake pressure, with its unit ('0.8 MPa')")] = None,
+    tubing_head_pressure: Annotated[str | None, _well("tubing head pressure, with its unit ('10 bar')")] = None,
+    casing_head_pressure: Annotated[str | None, _well("casing head pressure, with its unit ('5 bar')")] = None,
+    fluid_density: Annotated[str | None, _well("produced fluid density, with its unit ('850 kg/m3')")] = None,
+    fillage: Annotated[str | None, _well("share of the barrel filled with liquid ('80 %')")] = None,
+    gas_exponent: Annotated[float | None, _well(
+        "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
+    samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
+    service_factor: Annotated[float, typer.Option(
+        help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0,
+        callback=finite)] = 1.0,
+    fmt: FormatOption = None,
+    units: UnitsOption = UnitSystem.si,
+    out: OutputOption = None,
+    plot: PlotOption = None,
+) -> None:
+    """Surface and pump cards predicted from unit, rods, pump and fluid level.
+
+    The rods' damped wave equation driven by the exact polished-rod motion, the pump's
+    valves at the bottom; loads, strokes, displacement, rod stresses, gearbox torque."""
+    sink = Output(fmt, units, out, plot)
+    overrides = WellOverrides(
+        submergence=quantity(submergence, "length", "--submergence"),
+        intake_pressure=quantity(intake_pressure, "pressure", "--intake-pressure"),
+        tubing_head_pressure=quantity(tubing_head_pressure, "pressure", "--tubing-head-pressure"),
+        casing_head_pressure=quantity(casing_head_pressure, "pressure", "--casing-head-pressure"),
+        fluid_density=quantity(fluid_density, "density", "--fluid-density"),
+        fillage=quantity(fillage, "fraction", "--fillage"),
+        gas_exponent=finite(gas_exponent),
+    )
+    result = run(load_unit(unit), spm, rotation.value, samples, damping, overrides, service_factor)
+    sink.emit(result, SHOWN)
