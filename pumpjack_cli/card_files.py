@@ -74,7 +74,7 @@ _KINDS = {
     "crank_angle": (("crank_angle", "angle", "theta"), "angle"),
     "time": (("time", "t"), "time"),
     "position": (("position", "displacement", "pos"), "length"),
-    "load": (("load", "force", "prl", "polished_rod_load"), "force"),
+    "load": (("load", "force", "prl", "polished_rod_load", "rod_load"), "force"),
 }
 _KIND_OF_NAME = {name: kind for kind, (names, _) in _KINDS.items() for name in names}
 #: Index or sample-number columns, ignored ('#' is read as 'no'); so are unnamed columns.
@@ -86,7 +86,7 @@ _DEFAULT_UNITS = {
 }
 _LAYOUTS = ({"crank_angle", "load"}, {"position", "load"}, {"time", "position", "load"})
 _LAYOUT_TEXT = "a card has crank_angle and load, position and load, or time, position and load"
-_KNOWN_TEXT = ("known: crank_angle/angle/theta, time/t, position/displacement/pos, load/force/prl/polished_rod_load, "
+_KNOWN_TEXT = ("known: crank_angle/angle/theta, time/t, position/displacement/pos, load/force/prl/polished_rod_load/rod_load, "
                "index columns (index, sample, n, #, point); map others with --card-columns position=...,load=...[,time=...]")
 _DELIMITERS = ("\t", ";", ",")
 _DELIMITER_NAMES = {"\t": "tab", ";": "semicolon", ",": "comma"}

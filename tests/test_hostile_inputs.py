@@ -35,6 +35,7 @@ COMMANDS = {
     "inertia-error": lambda unit: ["inertia-error", unit, "--steps", "8"],
     "torque": lambda unit: ["torque", unit, "--card", SK8_CARD, "--steps", "8"],
     "downhole": lambda unit: ["downhole", unit, "--card", SK8_CARD, "--samples", "32"],
+    "predict": lambda unit: ["predict", unit, "--samples", "64", "--damping", "0.1"],
 }
 
 
@@ -143,7 +144,7 @@ def _commands_for(path: tuple[str, ...]) -> list[str]:
     if path[0] == "pitman_section":
         return ["compare-redundancy"]
     if path[0] == "well":
-        return ["dynamics", "downhole"]
+        return ["dynamics", "downhole", "predict"]
     return ["dynamics"]
 
 

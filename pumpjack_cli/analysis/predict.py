@@ -116,9 +116,9 @@ def predicted(unit, spm: float | None, rotation: str, samples: int, damping: flo
     if rotation not in ROTATIONS:
         raise PumpjackError(f"--rotation {rotation}: use one of {', '.join(ROTATIONS)}")
     string, well_pump, well = rods(unit), pump(unit), unit.well
-    nu = damping_factor(unit, damping)
     if rotation == "uniform":
         omega = crank_speed(unit, spm)
+        nu = damping_factor(unit, damping)
         cards = predict_cards(unit.geometry.linkage(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
@@ -126,6 +126,7 @@ def predicted(unit, spm: float | None, rotation: str, samples: int, damping: flo
         raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
     for section in ("masses", "drive"):
         require(unit, section, "--rotation dynamic solves the machine's equation of motion")
+    nu = damping_factor(unit, damping)
     from ..core.dynamics.coupled import predict_coupled
 
     both = predict_coupled(machine(unit, elastic_rods=True), string, well_pump, damping=nu,
