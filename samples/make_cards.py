@@ -1,27 +1,18 @@
-"""Make the sample dynamometer cards in samples/ from a documented load model.
+"""Make the sample dynamometer cards in samples/ with the predictive wave model of `pumpjack predict`.
 
 Run from the repository root: ``python samples/make_cards.py`` rewrites
 ``samples/<unit>-card.csv`` for every unit below; ``tests/test_cards.py`` checks that
 the committed files are exactly what this script makes.
 
-Load model (a rigid rod string with an elastic load transfer; the classical static
-"ideal card" of pumping-well textbooks plus rod and fluid inertia):
-
-* rod weight in air W_r = sum(rho_s g A_i L_i), rho_s the well's rod density, and in
-  fluid W_rf = W_r (1 - rho_f / rho_s) (Archimedes), by pumpjack_cli.core.well;
-* fluid load on the plunger W_f = rho_f g L A_p (pump full, no tubing or casing
-  pressure, the column from the pump depth), by pumpjack_cli.core.well;
-* rod stretch under the fluid load delta = W_f sum(L_i / (E A_i)), E = 2.06e11 Pa: the
-  fluid load is picked up linearly over the first delta of the upstroke and released
-  over the first delta of the downstroke (Hooke's law);
-* inertia of the rods, and of the fluid column while it is carried, m a with a the
-  exact polished-rod acceleration at uniform crank speed (rigid string);
-* friction, plunger and rods together, a constant 2 % of W_r against the motion
-  (illustrative).
-
-So the cards carry the shapes and magnitudes of real ones (load pick-up and release,
-inertia humps) but not the rod-string waves; they are for trying the program, not for
-diagnosing a well. Each file says so in its comment lines.
+Model (:func:`pumpjack_cli.core.rods.predict.predict_cards`, docs/predict.md): the
+tapered rod string of the unit's ``[well]`` as a damped wave equation ([Gibbs1963]),
+driven at the top by the unit's exact polished-rod motion at uniform crank speed, the
+pump's travelling and standing valves at the bottom with the pressures of the well's
+depth, fluid and fluid level; Gibbs' damping factor 0.05; the periodic steady state.
+So the cards carry the stress waves of real ones (load pick-up and release delayed
+and ringing through the rods) but no Coulomb friction, gas or pump wear; they are for
+trying the program, not for diagnosing a well. Each file says so in its comment lines.
+The 180 samples start at the bottom of the stroke, as a dynamometer's card does.
 """
 
 from __future__ import annotations
@@ -35,15 +26,14 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from pumpjack_cli.analysis.rods import pump, rods  # noqa: E402
 from pumpjack_cli.config import load_unit  # noqa: E402
-from pumpjack_cli.core.beam.kinematics import uniform_kinematics  # noqa: E402
-from pumpjack_cli.core.constants import STANDARD_GRAVITY  # noqa: E402
-from pumpjack_cli.core.well import buoyant_weight, fluid_load, rod_string_mass  # noqa: E402
+from pumpjack_cli.core.rods.downhole import DEFAULT_DAMPING_FACTOR  # noqa: E402
+from pumpjack_cli.core.rods.predict import predict_cards  # noqa: E402
 
-STEEL_MODULUS = 2.06e11
 POINTS = 180
 
-#: unit name -> (strokes per minute, position unit and factor, load unit and factor)
+#: unit name -> (strokes per minute (None: the motor's rated speed), position unit and factor, load unit and factor)
 CARDS = {
     "sk8-3.5-4000": (None, ("m", 1.0), ("kN", 1e-3)),
     "7sk12-2.5-5600": (8.0, ("m", 1.0), ("kN", 1e-3)),
@@ -57,27 +47,15 @@ def card(name: str, spm: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarr
     unit = load_unit(name)
     well = unit.well
     omega = unit.drive.rated_crank_speed if spm is None else spm * math.pi / 30.0
-    run = uniform_kinematics(unit.geometry.linkage(), omega, POINTS)
-    start = int(np.argmin(run.rod.position))
-    order = np.roll(np.arange(POINTS), -start)
-    position, acceleration = run.rod.position[order], run.rod.acceleration[order]
-    lengths = np.array([s.fraction for s in well.rod_string]) * well.pump_depth
-    diameters = np.array([s.diameter for s in well.rod_string])
-    areas = np.pi / 4 * diameters**2
-    rod_mass = rod_string_mass(diameters, lengths, well.rod_density)
-    w_rf = buoyant_weight(rod_mass, well.rod_density, well.fluid_density)
-    w_f = fluid_load(well.plunger_diameter, well.pump_depth, well.fluid_density)
-    fluid_mass = w_f / STANDARD_GRAVITY
-    stretch = w_f * float(np.sum(lengths / (STEEL_MODULUS * areas)))
-    stroke = run.summary.stroke
-    top = int(np.argmax(position))
-    rising = np.arange(POINTS) <= top
-    carried = np.where(rising, np.minimum(position / stretch, 1.0), np.clip(1.0 - (stroke - position) / stretch, 0.0, 1.0))
-    friction = 0.02 * rod_mass * STANDARD_GRAVITY * np.where(rising, 1.0, -1.0)
-    load = w_rf + carried * w_f + (rod_mass + carried * fluid_mass) * acceleration + friction
+    cards = predict_cards(unit.geometry.linkage(), omega, rods(unit), pump(unit), damping=DEFAULT_DAMPING_FACTOR,
+                          fluid_density=well.fluid_density, samples=POINTS, rod_density=well.rod_density)
+    order = np.roll(np.arange(POINTS), -int(np.argmin(cards.polished_rod_position)))
+    position, load = cards.polished_rod_position[order], cards.polished_rod_load[order]
     time = np.arange(POINTS) * (2 * math.pi / omega) / POINTS
-    about = (f"{unit.name} at {60 * omega / (2 * math.pi):.3f} strokes/min; W_rf = {w_rf / 1e3:.2f} kN, "
-             f"W_f = {w_f / 1e3:.2f} kN, rod stretch {stretch * 1e3:.0f} mm")
+    s = cards.summary
+    about = (f"{unit.name} at {60 * omega / (2 * math.pi):.3f} strokes/min; W_rf = {s.buoyant_rod_weight / 1e3:.2f} kN, "
+             f"F_o = {s.fluid_load / 1e3:.2f} kN, damping factor {DEFAULT_DAMPING_FACTOR:g}, "
+             f"plunger stroke {s.gross_plunger_stroke * 1e3:.0f} mm")
     return time, position, load, about
 
 
@@ -86,7 +64,7 @@ def write(name: str) -> str:
     time, position, load, about = card(name, spm)
     lines = [
         f"# Sample dynamometer card for {name}: synthetic, made by samples/make_cards.py",
-        "# (rigid rods, elastic load transfer, rod and fluid inertia, 2 % friction; no rod-string waves).",
+        "# (rod string as a damped wave equation with the pump's valves, `pumpjack predict`; no friction or gas).",
         f"# {about}.",
         f"time_s,position_{p_unit},load_{l_unit}",
     ]

@@ -106,7 +106,7 @@ CASES += [
     ("utf16-be-bom", b"\xfe\xff" + card().encode("utf-16-be"), "UTF-16 or UTF-32 text"),
     ("utf16-no-bom", card().encode("utf-16-le"), "line 1: a NUL character"),
     ("cp1251-header", card(header="Время,Ход,Нагрузка").encode("cp1251"), "line 4: byte 0xc2 is not UTF-8"),
-    ("latin1-comment", card().replace("# (rigid", "# Winkel in °, (rigid").encode("latin-1"),
+    ("latin1-comment", card().replace("# (rod string", "# Winkel in °, (rod string").encode("latin-1"),
      "line 2: byte 0xb0 is not UTF-8"),
     ("nul-in-data", card().replace(ROWS[89], ROWS[89] + "\0"), f"line {line_of(89)}: a NUL character"),
     ("gzip", b"\x1f\x8b\x08\x00" + bytes(range(256)), "line 1: a NUL character"),

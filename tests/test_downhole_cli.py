@@ -108,7 +108,7 @@ def test_buoyant_rod_weight_of_the_seed_taper_by_hand(sk8):
 def test_taper_loads_are_the_polished_rod_the_joints_and_the_pump(sk8):
     """Top of taper 1 is the polished rod, the bottom of taper 3 the pump (datum: zero static
     tension there), and a joint carries one load on both sides. The Gibbs solution carries
-    the harmonics below the Nyquist frequency of the 200 samples (the Nyquist one has no
+    the harmonics below the Nyquist frequency of the 360 samples (the Nyquist one has no
     phase to propagate), so the polished-rod load it holds is the card less that component,
     c (-1)^k with c = mean((-1)^k P_k)."""
     s = sk8["summary"]

@@ -76,18 +76,27 @@ def test_table_shows_the_summary(run_cli):
         assert name in out
 
 
-def test_card_drives_the_machine(run_cli, sk8_card):
-    code, out, err = run_cli("dynamics", SK8, "--card", sk8_card, "--steps", "36", "--rtol", "1e-8", "-f", "json")
+def test_card_drives_the_machine(run_cli, sk8_drivable_card):
+    code, out, err = run_cli("dynamics", SK8, "--card", sk8_drivable_card, "--steps", "36", "--rtol", "1e-8", "-f",
+                             "json")
     assert (code, err) == (0, "")
     data = json.loads(out)
-    assert "card sk8-3.5-4000-card.csv" in data["title"]
+    assert "card sk8-drivable-card.csv" in data["title"]
     config = load_unit(SK8)
-    card = read_card(sk8_card, config.geometry.linkage()).card
+    card = read_card(sk8_drivable_card, config.geometry.linkage()).card
     r = steady_state(build_machine(config, card), crank_grid(36), rtol=1e-8)
     assert data["series"]["crank_speed_rad_s"] == r.omega.tolist()
     summary = data["summary"]
     assert summary["energy_per_cycle_j"] == pytest.approx(summary["rod_work_per_cycle_j"], rel=1e-6)
     assert "fluid_load_n" not in summary  # the well model's forces only without a card
+
+
+def test_the_sample_card_is_too_much_for_the_seed_motor(run_cli, sk8_card):
+    """With elastic rods the seed well's card needs more than the pull-out torque of the SK8's
+    motor at the counterbalance of [SK8Rotation2013]: refused with the numbers, not solved."""
+    code, out, err = run_cli("dynamics", SK8, "--card", sk8_card, "--steps", "36", "-f", "json")
+    assert code == 2 and out == ""
+    assert "the motor is too weak" in err and "pull-out torque" in err
 
 
 def test_plot(run_cli, tmp_path):

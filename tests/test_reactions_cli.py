@@ -134,7 +134,7 @@ def test_plot(run_cli, tmp_path, sk8_card):
     assert target.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_dynamic_rotation_balances_the_motor(run_cli, sk8_card):
+def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     """--rotation dynamic: the kinetostatics run on the speed and acceleration of the
     machine's equation of motion. The gearbox torque on the crank is then the motor
     torque through the drive less what accelerates the drive's own inertia,
@@ -143,12 +143,13 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_card):
     from pumpjack_cli.analysis.machine import machine as build_machine
     from pumpjack_cli.core.dynamics.periodic import steady_state
 
-    code, out, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--steps", "90", "-f", "json")
+    code, out, err = run_cli("reactions", SK8, "--card", sk8_drivable_card, "--rotation", "dynamic", "--steps", "90",
+                             "-f", "json")
     assert (code, err) == (0, "")
     series = json.loads(out)["series"]
     config = load_unit(SK8)
     theta = crank_grid(90)
-    card = read_card(sk8_card, config.geometry.linkage()).card
+    card = read_card(sk8_drivable_card, config.geometry.linkage()).card
     machine = build_machine(config, card)
     state = steady_state(machine, theta)
     assert series["crank_speed_rad_s"] == state.omega.tolist()

@@ -22,7 +22,7 @@ from .card_runs import CardSource, time_card
 from .rods import goodman_panel, pressures, rods, taper_summary, well_of
 
 #: Samples per period of the surface card on its uniform time grid.
-DEFAULT_SAMPLES = 200
+DEFAULT_SAMPLES = 360
 
 
 def damping_factor(unit, given: float | None, rod_string, card, method: str) -> tuple[float, str]:
