@@ -235,3 +235,17 @@ def test_card_in_the_wrong_load_unit_is_refused_by_the_rods(run_cli, tmp_path):
 def test_unit_without_a_well_is_refused(run_cli):
     code, out, err = run_cli("downhole", "unb-600a", "--card", card("c-80d-133-48"), "-f", "csv")
     assert code == 2 and out == "" and err.count("\n") == 1
+
+
+def test_blind_diagnosis_of_the_sample_card_gives_back_the_well(run_cli_module):
+    """The SK8 sample card was made by the predictive model (modal solver, pump valves) with
+    damping 0.05, a full pump and 100 m of fluid above the pump (samples/make_cards.py).
+    Diagnosed with only the rods and the fluid level: the energy balance finds nu = 0.05
+    (1 %), the pump is full, F_o = rho g (L - h) A_p (0.5 %) and the intake pressure is
+    rho g h (1 %)."""
+    s = run_cli_module("sk8-3.5-4000")["summary"]
+    area = math.pi * 0.038**2 / 4.0
+    assert s["damping_factor"] == pytest.approx(0.05, rel=0.01)
+    assert s["pump_fillage_percent"] > 99.5
+    assert s["fluid_load_n"] == pytest.approx(820.0 * STANDARD_GRAVITY * 1430.0 * area, rel=0.005)
+    assert s["pump_intake_pressure_pa"] == pytest.approx(820.0 * STANDARD_GRAVITY * 100.0, rel=0.01)
