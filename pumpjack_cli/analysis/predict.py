@@ -131,6 +131,11 @@ def predicted(unit, spm: float | None, rotation: str, samples: int, damping: flo
 
     both = predict_coupled(machine(unit, elastic_rods=True), string, well_pump, damping=nu,
                            fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
+    margin = both.summary.breakdown_torque_margin
+    if margin < 1.0:
+        sys.stderr.write(f"pumpjack: warning: unit {unit.name}: the motor would need {1.0 / margin:.3g} x its "
+                         f"pull-out torque; the linear motor characteristic is used beyond its validity (the "
+                         f"motor would stall)\n")
     return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu)
 
 
