@@ -28,7 +28,7 @@ from .core.beam.card import (Card, RotationFit, card_from_angles, crank_angle_fr
 from .core.beam.geometry import CLOCKWISE, Linkage
 from .errors import CardError
 from .quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
-from .text_input import STDIN, display_name, read_text
+from .text_input import display_name, read_text
 
 __all__ = ["CardError", "CardReading", "check_speed", "parse_card_columns", "read_card"]
 
@@ -312,7 +312,7 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
     wrong = widths != len(cells)
     if wrong.any():
         i = int(np.argmax(wrong))
-        hint = (f"; a decimal comma or thousands separator in a comma-separated file?"
+        hint = ("; a decimal comma or thousands separator in a comma-separated file?"
                 if delimiter == "," and widths[i] > len(cells) else "")
         raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {len(cells)}{hint}")
     flat = delimiter.join(rows).split(delimiter) if rows else []

@@ -35,6 +35,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "torque": ("torque", "torque", "Gearbox torque, counterbalance and loading of a unit from a dynamometer card."),
     "downhole": ("downhole", "downhole", "Pump card from a surface dynamometer card through the rod string's wave equation."),
     "predict": ("predict", "predict", "Surface and pump cards predicted from unit, rods, pump and fluid level."),
+    "batch": ("batch", "app", "A field's dynamometer cards through torque and downhole into an SQLite results store."),
 }
 CONTEXT = {"help_option_names": ["-h", "--help"]}
 
@@ -54,9 +55,14 @@ class LazyCommands(TyperGroup):
     def get_command(self, ctx, name: str):
         if name not in COMMANDS:
             return None
+        found = command_function(name)
+        if isinstance(found, typer.Typer):
+            group = typer.main.get_group(found)
+            group.name = name
+            return group
         single = typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
                              context_settings=CONTEXT)
-        single.command(name)(command_function(name))
+        single.command(name)(found)
         command = typer.main.get_command(single)
         command.name = name
         return command

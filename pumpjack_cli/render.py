@@ -19,7 +19,6 @@ from __future__ import annotations
 import csv
 import io
 import json
-import math
 import os
 import re
 import shutil
@@ -32,7 +31,7 @@ from typing import Any, TextIO
 from .errors import PumpjackError
 from .quantities import output_unit
 from .text_input import describe_os_error
-from .results import TEXT, Column, Result
+from .results import STORED, TEXT, Column, Result, check_finite, converted_summary, display_name
 
 FORMATS = ("table", "csv", "json")
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
@@ -46,21 +45,13 @@ FILE_TABLE_WIDTH = 160
 SPECIAL_FILES = ("/dev/", "/proc/")
 
 
-def display_name(name: str, quantity: str, system: str) -> str:
-    """Column or summary key with the unit suffix of the unit system (none for text or pure numbers)."""
-    if quantity == TEXT:
-        return name
-    suffix = output_unit(quantity, system).suffix
-    return f"{name}_{suffix}" if suffix else name
-
-
 def _is_array(values: Any) -> bool:
     return hasattr(values, "dtype")
 
 
 def _display_values(column: Column, values: Any, system: str) -> list:
     """Values (a slice of a column) in display units as Python objects; text passes through."""
-    if column.quantity == TEXT:
+    if column.quantity in (TEXT, STORED):
         return list(values)
     unit = output_unit(column.quantity, system)
     if _is_array(values):
@@ -69,15 +60,7 @@ def _display_values(column: Column, values: Any, system: str) -> list:
 
 
 def _unit_label(quantity: str, system: str) -> str:
-    return "" if quantity == TEXT else output_unit(quantity, system).label
-
-
-def converted_summary(result: Result, system: str) -> dict[str, float]:
-    """Summary values in the display units of ``system``, keyed by suffixed name."""
-    return {
-        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(float(s.value)))
-        for s in result.summary
-    }
+    return "" if quantity in (TEXT, STORED) else output_unit(quantity, system).label
 
 
 def converted_series(result: Result, system: str) -> dict[str, list]:
@@ -85,32 +68,13 @@ def converted_series(result: Result, system: str) -> dict[str, list]:
     return {display_name(c.name, c.quantity, system): _display_values(c, c.values, system) for c in result.columns}
 
 
-def check_finite(result: Result) -> None:
-    """Refuse to output NaN or infinity: name the value, or the column and the first bad row."""
-    for s in result.summary:
-        if not math.isfinite(s.value):
-            raise PumpjackError(f"result {s.name} is not finite ({s.value}); the computation failed")
-    for c in result.columns:
-        if c.quantity == TEXT:
-            continue
-        if _is_array(c.values):
-            import numpy as np
-
-            bad = np.flatnonzero(~np.isfinite(c.values.astype(float, copy=False)))
-            first = int(bad[0]) if bad.size else None
-        else:
-            first = next((i for i, v in enumerate(c.values) if not math.isfinite(float(v))), None)
-        if first is not None:
-            raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")
-
-
 def _csv_block(result: Result, system: str, start: int) -> str:
     """CSV text of the rows [start, start + CSV_BLOCK): floats by ``repr``, text quoted as CSV needs."""
     columns = [_display_values(c, c.values[start:start + CSV_BLOCK], system) for c in result.columns]
-    if any(c.quantity == TEXT for c in result.columns):
+    if any(c.quantity in (TEXT, STORED) for c in result.columns):
         buffer = io.StringIO()
         csv.writer(buffer, lineterminator="\n").writerows(
-            [v if isinstance(v, str) else repr(v) for v in row] for row in zip(*columns))
+            [v if isinstance(v, str) else "" if v is None else repr(v) for v in row] for row in zip(*columns))
         return buffer.getvalue()
     return "\n".join(map(",".join, zip(*(list(map(repr, values)) for values in columns)))) + "\n"
 
@@ -272,7 +236,8 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
         label = _unit_label(c.quantity, system)
         values = _display_values(c, c.values, system)
         columns.append((c.name, f"[{label}]" if label else "",
-                        [v if isinstance(v, str) else _format(v) for v in values], c.quantity == TEXT))
+                        [v if isinstance(v, str) else "" if v is None else _format(v) for v in values],
+                        c.quantity == TEXT))
     if columns:
         columns = _wrap_text_columns(columns, width)
         for number, block in enumerate(_table_blocks(columns, width)):

@@ -12,12 +12,19 @@ This module imports nothing heavy: values may be numpy arrays or lists of text.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from .errors import PumpjackError
+from .quantities import output_unit
+
 #: Quantity kind of a text column (no unit, no conversion).
 TEXT = "text"
+#: Quantity of a column of numbers already in SI display units under their suffixed
+#: names (a results store's columns): shown as they are, None where a value is missing.
+STORED = "stored"
 
 
 @dataclass(frozen=True)
@@ -106,3 +113,43 @@ class Result:
 def columns_from(table: Sequence[tuple[str, str, str, Any]]) -> tuple[Column, ...]:
     """Columns from rows of (name, quantity, description, values), declared once each."""
     return tuple(Column(name, quantity, description, values) for name, quantity, description, values in table)
+
+
+def display_name(name: str, quantity: str, system: str) -> str:
+    """Column or summary key with the unit suffix of the unit system (none for text or pure numbers)."""
+    if quantity in (TEXT, STORED):
+        return name
+    suffix = output_unit(quantity, system).suffix
+    return f"{name}_{suffix}" if suffix else name
+
+
+def converted_summary(result: Result, system: str) -> dict[str, float]:
+    """Summary values in the display units of ``system``, keyed by suffixed name."""
+    return {
+        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(float(s.value)))
+        for s in result.summary
+    }
+
+
+def check_finite(result: Result) -> None:
+    """Refuse to output NaN or infinity: name the value, or the column and the first bad row."""
+    for s in result.summary:
+        if not math.isfinite(s.value):
+            raise PumpjackError(f"result {s.name} is not finite ({s.value}); the computation failed")
+    for c in result.columns:
+        if c.quantity == TEXT:
+            continue
+        if c.quantity == STORED:
+            first = next((i for i, v in enumerate(c.values) if v is not None and not math.isfinite(v)), None)
+            if first is not None:
+                raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")
+            continue
+        if hasattr(c.values, "dtype"):
+            import numpy as np
+
+            bad = np.flatnonzero(~np.isfinite(c.values.astype(float, copy=False)))
+            first = int(bad[0]) if bad.size else None
+        else:
+            first = next((i for i, v in enumerate(c.values) if not math.isfinite(float(v))), None)
+        if first is not None:
+            raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")

@@ -125,3 +125,23 @@ def test_crank_rates_from_time_rejects_bad_input(time, angle, harmonics, message
     lk = load_unit("sk8-3.5-4000").geometry.linkage()
     with pytest.raises(TorqueError, match=message):
         crank_rates_from_time(lk, time, angle, harmonics)
+
+
+@pytest.mark.parametrize("name", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])
+def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
+    """The basis of four kinetostatic solutions (ExactTorqueBasis) reproduces the direct
+    solution for arbitrary loads, speeds and accelerations at every angle: the rational
+    mechanism is linear in its loads and its inertia terms scale with omega^2 and eps
+    ([Spatial7SK12]); 1e-10 of the peak torque (round-off of the differences)."""
+    from pumpjack_cli.analysis.machine import mass_model
+    from pumpjack_cli.core.beam.torque import exact_net_torque, exact_torque_basis
+
+    unit = load_unit(name)
+    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    theta = crank_grid(97)
+    basis = exact_torque_basis(spatial, masses, theta)
+    rng = np.random.default_rng(7)
+    for _ in range(3):
+        w, omega, alpha = rng.uniform(1e4, 9e4, theta.size), rng.uniform(0.3, 2.0, theta.size), rng.uniform(-1, 1, 97)
+        direct = exact_net_torque(spatial, masses, theta, w, omega, alpha)
+        assert np.max(np.abs(basis.torque(w, omega, alpha) - direct)) < 1e-10 * np.max(np.abs(direct))

@@ -66,6 +66,8 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     summary = [
         Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / surface.period, "pumping speed"),
         Scalar("damping_factor", "ratio", nu, f"Gibbs' nu of the rods ({source})"),
+        Scalar("max_rod_load", "force", float(reading.card.load.max()), "peak polished-rod load of the card (PPRL)"),
+        Scalar("min_rod_load", "force", float(reading.card.load.min()), "minimum polished-rod load of the card (MPRL)"),
         Scalar("buoyant_rod_weight", "force", pump.buoyant_weight, "rods with couplings in the well fluid: the datum"),
         Scalar("gross_pump_stroke", "length", float(figures.gross_stroke), "plunger travel"),
         Scalar("net_pump_stroke", "length", float(figures.net_stroke),

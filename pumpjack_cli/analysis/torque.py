@@ -13,6 +13,7 @@ loading against the ratings of the unit's designation and the permissible load d
 
 from __future__ import annotations
 
+import functools
 import math
 import sys
 from dataclasses import dataclass
@@ -24,8 +25,8 @@ from ..core.beam.card import Card
 from ..core.beam.counterbalance import (Counterbalance, counterbalance_effect, counterbalance_from_masses,
                                         counterweight_placement)
 from ..core.beam.loading import card_work, cyclic_load_factor
-from ..core.beam.torque import (beam_group_inertia, crank_group_inertia, exact_net_torque, permissible_load,
-                                torque_components, torque_methods)
+from ..core.beam.torque import (ExactTorqueBasis, beam_group_inertia, crank_group_inertia, exact_torque_basis,
+                                permissible_load, torque_components, torque_methods)
 from ..core.designations import parse_designation
 from ..core.sampling import extremes, peak
 from ..errors import PumpjackError
@@ -106,9 +107,15 @@ def _torques(unit, linkage, masses, balance: Counterbalance, run: CardRun, metho
            + parts.rotary_inertia)
     exact = None
     if masses is not None:
-        exact = exact_net_torque(unit.geometry.spatial(unit.name), masses, run.crank_angle, run.load, run.omega,
-                                 run.epsilon)
+        basis = _exact_basis(unit.geometry.spatial(unit.name), masses, run.crank_angle.tobytes())
+        exact = basis.torque(run.load, run.omega, run.epsilon)
     return _Torques(run, parts, api, exact, exact if method == "exact" else api)
+
+
+@functools.lru_cache(maxsize=32)
+def _exact_basis(spatial, masses, crank_angle: bytes) -> ExactTorqueBasis:
+    """The unit's exact-torque responses on a crank grid, computed once for all its cards."""
+    return exact_torque_basis(spatial, masses, np.frombuffer(crank_angle))
 
 
 def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str, method: str, criterion: str,

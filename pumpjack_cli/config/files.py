@@ -162,13 +162,15 @@ def parse_unit(data: Any, source: str):
         raise ConfigError(format_validation_error(source, exc)) from None
 
 
-def _read(path: Path) -> Any:
+def read_table(path: Path) -> Any:
+    """The parsed content of a TOML, YAML or JSON file of the unit-file kind (bounded, UTF-8,
+    duplicate keys refused), not validated."""
     return _parse_text(path, read_text(path, MAX_BYTES, "unit file", ConfigError))
 
 
 def read_unit_file(path: Path):
     """Read and validate one unit file."""
-    return parse_unit(_read(path), str(path))
+    return parse_unit(read_table(path), str(path))
 
 
 def bundled_units() -> dict[str, Path]:
@@ -182,7 +184,7 @@ def unit_listing() -> list[dict[str, Any]]:
     from the files without building their models (the files are validated by the tests)."""
     rows = []
     for name, path in bundled_units().items():
-        data = _read(path)
+        data = read_table(path)
         kind = _kind(data, str(path))
         rows.append({"name": name, "kind": data.get("kind", DEFAULT_KIND), "designation": data["name"],
                      "stroke": kind.stroke(data["geometry"]), "description": data.get("description", "")})

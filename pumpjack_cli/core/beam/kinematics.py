@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..sampling import Extreme, crank_grid, cycle_period, extremes, uniform_time
-from .linkage import DeadPositions, Linkage, dead_positions, motion
+from .linkage import DeadPositions, Linkage, motion
 
 #: Crank positions used to locate extremes, independent of the output resolution.
 _DENSE_STEPS = 7200

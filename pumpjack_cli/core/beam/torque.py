@@ -349,6 +349,46 @@ def exact_net_torque(spatial: SpatialLinkage, masses: MassModel, crank_angle: np
     return reactions.balancing_torque
 
 
+@dataclass(frozen=True)
+class ExactTorqueBasis:
+    """The exact net torque of a unit on a crank grid as an affine function of the card.
+
+    The rational mechanism is linear in its loads, and every inertia force and moment of
+    a one-degree-of-freedom linkage is a crank-angle function times epsilon plus one times
+    omega² (angular velocities scale with omega, so the gyroscopic terms do too). Hence
+
+        M_z(theta) = static + per_load W + per_speed_squared omega² + per_acceleration alpha
+
+    at each crank angle [N·m, N·m/N, N·m s², N·m s²], exactly ([Spatial7SK12],
+    [PopovychSenchishak]): four kinetostatic solutions serve every card of the unit.
+    """
+
+    crank_angle: np.ndarray
+    static: np.ndarray
+    per_load: np.ndarray
+    per_speed_squared: np.ndarray
+    per_acceleration: np.ndarray
+
+    def torque(self, rod_load, omega=0.0, alpha=0.0) -> np.ndarray:
+        """M_z [N·m] for the polished-rod load [N] and crank speed [1/s] and acceleration [1/s²]
+        at the basis' crank angles."""
+        omega = np.asarray(omega, dtype=float)
+        return (self.static + self.per_load * np.asarray(rod_load, dtype=float) + self.per_speed_squared * omega**2
+                + self.per_acceleration * np.asarray(alpha, dtype=float))
+
+
+def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:
+    """The four responses of :class:`ExactTorqueBasis` at ``crank_angle`` [rad], one batched
+    kinetostatic solution of (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0), (0, 0, 1 1/s²)."""
+    theta = np.asarray(crank_angle, dtype=float)
+    _finite("exact torque basis", theta)
+    n = theta.size
+    unit = np.repeat(np.eye(4), n, axis=1)
+    _, reactions = rational_mechanism(spatial, masses, np.tile(theta, 4), unit[2], unit[3], unit[1])
+    static, load, speed, acceleration = reactions.balancing_torque.reshape(4, n)
+    return ExactTorqueBasis(theta, static, load - static, speed - static, acceleration - static)
+
+
 def net_torque(method: str, spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray,
                rod_load: np.ndarray, omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> np.ndarray:
     """Net gearbox torque [N·m] by ``method``: ``api`` (static, B, M, tau from the masses by

@@ -98,7 +98,11 @@ def _band_median(p, f, stroke_mask, low, stroke, band, what):
         index = int(np.flatnonzero(empty)[0])
         raise DownholeError(f"pump card {index + 1}: no sample on the {what} between {band[0]:.0%} and "
                             f"{band[1]:.0%} of the stroke; sample the card more finely")
-    return np.nanmedian(np.where(inside, f, np.nan), axis=-1)
+    values = np.sort(np.where(inside, f, np.nan), axis=-1)  # NaN last: the band's values first
+    count = inside.sum(axis=-1)
+    lower_middle = np.take_along_axis(values, ((count - 1) // 2)[:, None], axis=-1)[:, 0]
+    upper_middle = np.take_along_axis(values, (count // 2)[:, None], axis=-1)[:, 0]
+    return 0.5 * (lower_middle + upper_middle)
 
 
 @dataclass(frozen=True)

@@ -248,16 +248,14 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
 
 def damping_from_fluid_load(string: RodString, period: float, position, load, fluid_load: float, *,
                             fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
-                            tolerance: float = 1e-5, iterations: int = 30) -> float:
+                            largest: float = 2.0) -> float:
     """The damping factor nu that closes the energy balance of the rods with the pump's hydraulic work [-].
 
-    The useful work of the pump per stroke is the fluid load times the net plunger stroke,
-    F_o S_n; the rest of the surface card's work is dissipated along the rods. The pump
-    card depends on nu, and S_n is read off it (:func:`.analysis.summarise_pump_card`),
-    so nu is found by fixed-point iteration: nu_(k+1) = :func:`damping_for_pump_work` of
-    the target F_o S_n(nu_k), from :data:`DEFAULT_DAMPING_FACTOR` until nu changes by
-    less than ``tolerance``. The damping is chosen so that the pump card's power equals
-    the hydraulic power ([Gibbs1963], [EverittJennings1992]).
+    The useful work of the pump per stroke is the fluid load times the net plunger
+    stroke, F_o S_n; the rest of the surface card's work is dissipated along the rods
+    ([Gibbs1963]: c from polished-rod minus hydraulic power; [EverittJennings1992]). The
+    pump card, hence its work W_p and S_n (:func:`.analysis.summarise_pump_card`), depends
+    on nu, so nu is the root of W_p(nu) - F_o S_n(nu) on [0, largest] by Brent's method.
 
     Parameters
     ----------
@@ -265,26 +263,38 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
         As :func:`pump_card`, for ONE card (shape (N,)).
     fluid_load : float
         F_o = (p_d - p_i) A_p [N], from the well's pressures at the pump.
+    largest : float
+        Upper end of the search [-].
 
     Raises
     ------
     DownholeError
-        When no damping factor explains the card with this fluid load (wrong fluid level,
-        wrong rods, or a card of another well), or the iteration does not settle.
+        When the card cannot come from these rods (:func:`check_card`), when even the
+        undamped rods deliver less than F_o S_n (the fluid load is lower than assumed), or
+        when more than ``largest`` would be needed.
     """
+    from scipy.optimize import brentq
+
     check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
-    nu = DEFAULT_DAMPING_FACTOR
-    for _ in range(iterations):
+    position, load = _card_arrays(period, position, load, "surface card")
+    if position.ndim != 1:
+        raise DownholeError("damping_from_fluid_load takes one card of shape (N,)")
+
+    def excess(nu: float) -> float:
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
                          method=method, gravity=gravity, check=False)
         net = float(summarise_pump_card(card.pump_position, card.pump_load).net_stroke)
-        updated = damping_for_pump_work(string, period, position, load, fluid_load * net, fluid_density=fluid_density,
-                                        method=method, gravity=gravity)
-        if abs(updated - nu) < tolerance:
-            return updated
-        nu = updated
-    raise DownholeError(f"the damping factor from the energy balance did not settle in {iterations} iterations "
-                        f"(last {nu:.4g}); give the damping factor")
+        return float(card_work(card.pump_position, card.pump_load)) - fluid_load * net
+
+    undamped = excess(0.0)
+    if undamped < 0.0:
+        raise DownholeError(f"the rods without damping deliver {-undamped / 1e3:.4g} kJ per cycle less than the "
+                            f"pump's hydraulic work F_o S_n with F_o = {fluid_load / 1e3:.4g} kN: the fluid load is "
+                            f"lower (fluid level higher, pump less full) than the well says; give the damping factor")
+    if excess(largest) > 0.0:
+        raise DownholeError(f"the card dissipates more than damping factor {largest:g} explains with F_o = "
+                            f"{fluid_load / 1e3:.4g} kN; check the fluid level and the rods, or give the damping factor")
+    return float(brentq(excess, 0.0, largest, xtol=1e-10))
 
 
 def load_transfer_slope(position, load) -> np.ndarray:

@@ -41,7 +41,7 @@ from math import comb
 import numpy as np
 
 from ..sampling import crank_grid, largest_magnitude
-from .geometry import DeadCentres, SliderCrank, check_slider_crank, dead_centres, stroke
+from .geometry import SliderCrank, check_slider_crank, dead_centres
 
 
 @dataclass(frozen=True)

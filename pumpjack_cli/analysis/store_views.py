@@ -1,0 +1,67 @@
+"""Views of a results store as result tables: everything (`batch export`) and one well card after card (`batch trend`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..errors import PumpjackError
+from ..results import STORED, TEXT, Column, Result
+from .store import FIXED, Store
+
+#: The summary numbers of `batch trend`, the consecutive-card view of a well: name, analysis.
+TREND = (
+    ("peak_net_torque_n_m", "torque"),
+    ("gearbox_loading_percent", "torque"),
+    ("cyclic_load_factor", "torque"),
+    ("polished_rod_power_w", "torque"),
+    ("max_rod_load_n", "downhole"),
+    ("min_rod_load_n", "downhole"),
+    ("fluid_load_n", "downhole"),
+    ("pump_fillage_percent", "downhole"),
+    ("net_pump_stroke_m", "downhole"),
+    ("pump_displacement_m3_d", "downhole"),
+)
+
+
+def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
+    """Every stored row (of one analysis and one well if given): the fixed fields as text,
+    the summary numbers as stored (SI, suffixed names), empty where a row has none."""
+    store = Store(path, create=False)
+    try:
+        names, rows = store.rows(well, analysis)
+    finally:
+        store.close()
+    columns = tuple(Column(name, TEXT if name in FIXED else STORED, name.replace("_", " "),
+                           [row[i] for row in rows]) for i, name in enumerate(names))
+    return Result(f"{path}: {len(rows)} results", (), columns)
+
+
+def trend_result(path: Path, well: str) -> Result:
+    """One well's cards in time order (timestamp, then card) with the numbers operators follow
+    from card to card; a card whose analysis failed shows its status and empty numbers."""
+    store = Store(path, create=False)
+    try:
+        names, rows = store.rows(well)
+    finally:
+        store.close()
+    if not rows:
+        raise PumpjackError(f"--well {well}: no results for this well in {path}")
+    index = {name: i for i, name in enumerate(names)}
+    cards: dict[tuple[str, str], dict] = {}
+    for row in rows:
+        entry = cards.setdefault((row[index["timestamp"]], row[index["card"]]), {})
+        entry[row[index["analysis"]]] = row
+    order = sorted(cards)
+    columns = [Column("timestamp", TEXT, "time stamp from the manifest", [key[0] for key in order]),
+               Column("card", TEXT, "card file", [key[1] for key in order])]
+    for analysis in ("torque", "downhole"):
+        columns.append(Column(f"{analysis}_status", TEXT, f"status of the {analysis} analysis",
+                              [cards[key][analysis][index["status"]] if analysis in cards[key] else ""
+                               for key in order]))
+    for name, analysis in TREND:
+        if name not in index:
+            continue
+        columns.append(Column(name, STORED, f"{name.replace('_', ' ')} ({analysis})",
+                              [cards[key][analysis][index[name]] if analysis in cards[key] else None
+                               for key in order]))
+    return Result(f"{well}: {len(order)} cards in time order ({path})", (), tuple(columns))

@@ -1,0 +1,122 @@
+"""`pumpjack batch`: a field's cards through torque and downhole into a results store; export and trend."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from typer.core import TyperGroup
+
+from ..analysis.batch import ANALYSES, Options, default_workers, run_batch
+from ..analysis.store_views import export_result, trend_result
+from ..errors import PumpjackError
+from ..options import FormatOption, Output, OutputOption, UnitSystem, finite
+
+VERBS = ("run", "export", "trend")
+
+
+class BatchGroup(TyperGroup):
+    """`pumpjack batch MANIFEST ...` is `pumpjack batch run MANIFEST ...`."""
+
+    def parse_args(self, ctx, args):
+        if args and args[0] not in VERBS and not args[0].startswith("-"):
+            args = ["run", *args]
+        return super().parse_args(ctx, args)
+
+
+app = typer.Typer(cls=BatchGroup, add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
+                  context_settings={"help_option_names": ["-h", "--help"]},
+                  help="A field's dynamometer cards through torque and downhole into an SQLite results store.")
+
+StoreOption = Annotated[Path, typer.Option("--store", help="SQLite results store", dir_okay=False)]
+
+
+@app.command("run")
+def run(
+    manifest: Annotated[Path, typer.Argument(help="CSV or TOML manifest: well, unit, card (path or glob) per row; "
+                                             "optional spm, counterbalance_moment, rod_string, timestamp",
+                                             dir_okay=False)],
+    store: Annotated[Path, typer.Option("--store", help="SQLite results store (created if missing; cards already "
+                                                        "in it with the same analysis and options are skipped)",
+                                        dir_okay=False)] = Path("results.sqlite"),
+    analyses: Annotated[str, typer.Option(help="comma-separated analyses: torque, downhole")] = ",".join(ANALYSES),
+    method: Annotated[str, typer.Option(help="torque: api or exact (needs [masses])")] = "api",
+    balance: Annotated[str, typer.Option(help="torque: equal-peaks, min-rms or min-peak")] = "equal-peaks",
+    damping: Annotated[float | None, typer.Option(
+        help="downhole: Gibbs' damping factor nu [default: the unit file's, else the energy balance]",
+        min=0.0, max=2.0, callback=finite)] = None,
+    workers: Annotated[int | None, typer.Option(help="local worker processes [default: every core]", min=1,
+                                                max=1024)] = None,
+    scheduler: Annotated[str | None, typer.Option(
+        help="address of a Dask scheduler (tcp://host:8786) to run the cards on its cluster")] = None,
+) -> None:
+    """Analyse every card of a manifest into the results store, skipping cards already done."""
+    chosen = tuple(name.strip() for name in analyses.split(",") if name.strip())
+    if not chosen:
+        raise PumpjackError("--analyses: name at least one of torque, downhole")
+    options = Options(chosen, method, balance, damping)
+    progress = _progress() if _terminal() else None
+    try:
+        tally = run_batch(manifest, store, options, workers or default_workers(), scheduler,
+                          progress.advance if progress else None)
+    finally:
+        if progress is not None:
+            progress.stop()
+    typer.echo(f"{tally.cards} cards: {tally.analysed} analysed, {tally.skipped} already in {store}; "
+               f"{tally.ok} results ok, {tally.errors} errors; {tally.seconds:.1f} s, "
+               f"{tally.analysed / tally.seconds if tally.seconds > 0 else 0.0:.0f} cards/s")
+
+
+@app.command("export")
+def export(
+    store: StoreOption,
+    analysis: Annotated[str | None, typer.Option(help="only this analysis (torque or downhole)")] = None,
+    well: Annotated[str | None, typer.Option(help="only this well")] = None,
+    fmt: FormatOption = None,
+    out: OutputOption = None,
+) -> None:
+    """The stored results as CSV, JSON or a table: one row per card and analysis."""
+    sink = Output(fmt, UnitSystem.si, out, None)
+    result = export_result(store, analysis, well)
+    sink.emit(result, ("well", "card", "analysis", "status", "error"))
+
+
+@app.command("trend")
+def trend(
+    store: StoreOption,
+    well: Annotated[str, typer.Option(help="the well whose cards are shown in time order")],
+    fmt: FormatOption = None,
+    out: OutputOption = None,
+) -> None:
+    """A well's summary numbers card after card, in time order (peak torque, loading, fillage, loads)."""
+    sink = Output(fmt, UnitSystem.si, out, None)
+    result = trend_result(store, well)
+    sink.emit(result, tuple(c.name for c in result.columns))
+
+
+def _terminal() -> bool:
+    import sys
+
+    return sys.stderr is not None and sys.stderr.isatty()
+
+
+class _progress:
+    """A rich progress bar on the terminal's stderr."""
+
+    def __init__(self):
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+        self.bar = Progress("cards", BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                            console=Console(stderr=True), transient=True)
+        self.task = None
+        self.bar.start()
+
+    def advance(self, done: int, total: int) -> None:
+        if self.task is None:
+            self.task = self.bar.add_task("cards", total=total)
+        self.bar.update(self.task, completed=done)
+
+    def stop(self) -> None:
+        self.bar.stop()
