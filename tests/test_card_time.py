@@ -17,7 +17,7 @@ import pytest
 
 from pumpjack_cli.card_files import SPEED_TOLERANCE, check_speed, read_card
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.beam.card import card_load, fit_rotation, loop_work
+from pumpjack_cli.core.beam.card import fit_rotation, loop_work
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.errors import CardError
 

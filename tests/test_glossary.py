@@ -77,3 +77,17 @@ def test_every_output_name_is_in_the_glossary(run_cli, sk8_drivable_card, argv, 
     keys = list(document["summary"]) + list(document["columns"])
     missing = sorted({key for key in keys if _base(key, system, names) not in names})
     assert not missing, f"not in docs/glossary.md: {missing}"
+
+
+def test_batch_store_names_are_in_the_glossary(run_cli, tmp_path):
+    manifest = tmp_path / "m.csv"
+    manifest.write_text(f"well,unit,card,timestamp\nw,sk8-3.5-4000,{Path(SK8_CARD).resolve()},2026-11-24\n")
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", manifest, "--store", store, "--workers", "1")[0] == 0
+    names = glossary_names()
+    for argv in (("export", "--store", store), ("trend", "--store", store, "--well", "w")):
+        code, out, err = run_cli("batch", *argv, "-f", "json")
+        assert code == 0, err
+        keys = json.loads(out)["columns"]
+        missing = sorted({key for key in keys if _base(key, "si", names) not in names})
+        assert not missing, f"not in docs/glossary.md: {missing}"

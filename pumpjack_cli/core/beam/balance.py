@@ -116,17 +116,17 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     if up.shape != base.shape or not np.any(up) or np.all(up):
         raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
     down = ~up
+    base_up, sine_up, base_down, sine_down = base[up], sine[up], base[down], sine[down]
 
     def g(moment: float) -> float:
-        u, d, _, _ = _stroke_peaks(base, sine, up, moment)
-        return u - d
+        return float(np.max(base_up - moment * sine_up)) - float(np.max(base_down - moment * sine_down))
 
     su, au, cu = _asymptote(base[up], sine[up])
     sd, ad, cd = _asymptote(base[down], sine[down])
     m_hi = max(cu, cd, 0.0)
     grid = np.linspace(0.0, m_hi, _ROOT_SAMPLES) if m_hi > 0 else np.zeros(1)
-    torque = base[None, :] - grid[:, None] * sine[None, :]
-    values = np.max(np.where(up, torque, -np.inf), axis=1) - np.max(np.where(down, torque, -np.inf), axis=1)
+    values = (np.max(base_up[None, :] - grid[:, None] * sine_up[None, :], axis=1)
+              - np.max(base_down[None, :] - grid[:, None] * sine_down[None, :], axis=1))
     roots = [float(m) for m, v in zip(grid, values) if v == 0.0]
     for k in np.flatnonzero(values[:-1] * values[1:] < 0):
         roots.append(_bisect_root(g, float(grid[k]), float(grid[k + 1]), base, sine, up))

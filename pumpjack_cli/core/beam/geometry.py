@@ -26,6 +26,7 @@ the array kinematics is :mod:`.linkage`.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from functools import cached_property
@@ -158,9 +159,16 @@ class Linkage:
         return self._dead.stroke
 
     def motion(self, crank_angle: Any):
-        """Link angles [rad] and their crank-angle derivatives at crank angles [rad] (:func:`.linkage.motion`)."""
+        """Link angles [rad] and their crank-angle derivatives at crank angles [rad] (:func:`.linkage.motion`).
+
+        The motion on a grid of :data:`CACHED_GRID` or more angles is kept (read-only) for
+        the next call with the same angles: the run layer asks for the same summary grid
+        many times per card, and a batch for every card of a unit."""
         from .linkage import motion
 
+        theta = crank_angle
+        if getattr(theta, "size", 0) >= CACHED_GRID and getattr(theta, "dtype", None) == float:
+            return _cached_motion(self, theta.tobytes())
         return motion(self, crank_angle)
 
     def rod_position(self, crank_angle: Any):
@@ -175,6 +183,22 @@ class Linkage:
         from .linkage import pin_rates
 
         return pin_rates(self, motion)
+
+
+#: Grids of at least this many crank angles have their motion cached (:meth:`Linkage.motion`).
+CACHED_GRID = 360
+
+
+@functools.lru_cache(maxsize=64)
+def _cached_motion(linkage: Linkage, crank_angle: bytes):
+    import numpy as np
+
+    from .linkage import motion
+
+    found = motion(linkage, np.frombuffer(crank_angle))
+    for value in vars(found).values():
+        value.flags.writeable = False
+    return found
 
 
 def check_assembly(linkage: Linkage) -> None:
