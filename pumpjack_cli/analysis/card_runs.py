@@ -88,20 +88,20 @@ def uniform_speed(unit, reading: CardReading, spm: float | None) -> float:
     return crank_speed(unit, None) if speed is None else speed
 
 
-def _card_rotation(linkage: Linkage, reading: CardReading, theta: np.ndarray) -> CardRun:
-    """The crank speed and acceleration the card's time stamps give ([Takacs2016]), on a grid."""
+def _card_rotations(linkage: Linkage, reading: CardReading, thetas: list[np.ndarray]) -> list[CardRun]:
+    """The crank speed and acceleration the card's time stamps give ([Takacs2016]), on each grid."""
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --rotation card needs a card with time stamps")
     omega_s, alpha_s = crank_rates_from_time(linkage, reading.time, reading.crank_angle, CARD_HARMONICS)
     order = np.argsort(reading.crank_angle)
     angles = reading.crank_angle[order]
-    omega = np.interp(theta, angles, omega_s[order], period=2.0 * np.pi)
-    alpha = np.interp(theta, angles, alpha_s[order], period=2.0 * np.pi)
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
     rate = 1.0 / np.interp(fine, angles, omega_s[order], period=2.0 * np.pi)
     elapsed = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(fine))])
-    return CardRun(theta, np.interp(theta, fine, elapsed), omega, alpha, card_load(reading.card, theta),
-                   float(elapsed[-1]), "card")
+    return [CardRun(theta, np.interp(theta, fine, elapsed),
+                    np.interp(theta, angles, omega_s[order], period=2.0 * np.pi),
+                    np.interp(theta, angles, alpha_s[order], period=2.0 * np.pi), card_load(reading.card, theta),
+                    float(elapsed[-1]), "card") for theta in thetas]
 
 
 def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, grids: tuple[int, ...],
@@ -120,7 +120,7 @@ def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, gri
         raise PumpjackError(f"--spm sets a uniform crank speed; with --rotation {rotation} the "
                             f"{'card' if rotation == 'card' else 'motor'} sets the speed")
     if rotation == "card":
-        return reading, [_card_rotation(linkage, reading, theta) for theta in thetas]
+        return reading, _card_rotations(linkage, reading, thetas)
     state = steady_state(machine(unit, reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:
