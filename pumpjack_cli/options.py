@@ -100,3 +100,8 @@ def quantity(text: str | None, dimension: str, option: str) -> float | None:
         return parse_quantity(text, dimension, require_unit=True)
     except ValueError as exc:
         raise PumpjackError(f"{option}: {exc}") from None
+
+
+ServiceFactorOption = Annotated[float, typer.Option(
+    help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0, callback=finite)]
+

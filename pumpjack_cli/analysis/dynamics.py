@@ -7,6 +7,7 @@ from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardSource
+from .inputs import crank_columns
 from .machine import machine
 
 #: Well-model forces of the summary: name, description.
@@ -65,10 +66,7 @@ def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
     if isinstance(machine_.rod_load, WellLoad):
         summary += [Scalar(name, "force", getattr(machine_.rod_load, field), what) for name, field, what in _WELL_FORCES]
     columns = (
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", result.crank_angle),
-        Column("time", "time", "time from crank angle 0", result.time),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", result.omega),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", result.epsilon),
+        *crank_columns(result.crank_angle, result.time, result.omega, result.epsilon),
         Column("motor_speed", "angular_velocity", "motor shaft speed", result.motor_speed),
         Column("motor_torque", "torque", "motor shaft torque (linear characteristic)", result.motor_torque),
         Column("motor_power", "power", "motor shaft power", result.power),

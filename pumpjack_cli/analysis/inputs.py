@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from ..errors import PumpjackError
 from ..quantities import parse_quantity
+from ..results import Column
 
 
 def require(unit, section: str, purpose: str) -> None:
@@ -25,3 +26,14 @@ def crank_speed(unit, spm: float | None) -> float:
     if unit.drive is None:
         raise PumpjackError(f"unit {unit.name} has no [drive] section: give the speed with --spm")
     return unit.drive.rated_crank_speed
+
+
+def crank_columns(crank_angle, time, speed, acceleration) -> list[Column]:
+    """The crank's motion at each row: angle [rad], time [s], speed [1/s] and acceleration [1/s²],
+    the first columns of every per-angle table."""
+    return [
+        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", crank_angle),
+        Column("time", "time", "time from crank angle 0", time),
+        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", speed),
+        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", acceleration),
+    ]

@@ -24,7 +24,7 @@ from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
-from .inputs import crank_speed, require
+from .inputs import crank_columns, crank_speed, require
 from .machine import machine
 from .rods import goodman_panel, pump, rods, taper_summary, well_of
 from .torque import SUMMARY_STEPS, card_torque
@@ -275,8 +275,7 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
     named = {c.name: c for c in torque.columns}
     torque_column = named.get("net_torque", named["recommended_net_torque"])
     columns = [
-        Column("time", "time", "time from crank angle 0", cards.time),
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", cards.crank_angle),
+        *crank_columns(cards.crank_angle, cards.time, found.crank_speed, found.crank_acceleration),
         Column("position", "length", "polished-rod position above the bottom of the stroke",
                cards.polished_rod_position),
         Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
@@ -286,9 +285,6 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
         Column("pump_load", "force", "net plunger load (p_d - p_chamber) A_p", cards.pump_load),
         Column("chamber_pressure", "pressure", "pressure in the pump chamber below the plunger",
                cards.chamber_pressure),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", found.crank_speed),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1",
-               found.crank_acceleration),
         torque_column,
     ]
     if found.coupled is not None:
@@ -324,11 +320,7 @@ def wave_dynamics(unit, samples: int, damping: float | None) -> Result:
                Scalar("min_rod_load", "force", cards.summary.minimum_polished_rod_load.value,
                       "minimum polished-rod load")]
     columns = (
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", cards.crank_angle),
-        Column("time", "time", "time from crank angle 0", cards.time),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", both.crank_speed),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1",
-               both.crank_acceleration),
+        *crank_columns(cards.crank_angle, cards.time, both.crank_speed, both.crank_acceleration),
         Column("motor_torque", "torque", "motor shaft torque (linear characteristic)", both.motor_torque),
         Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
         Column("inertia_torque", "torque", "I epsilon1 + 1/2 I' omega1^2 of links and drive", both.inertia_torque),

@@ -10,7 +10,7 @@ from ..core.sampling import extremes, peak
 from ..errors import PumpjackError
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import require
+from .inputs import crank_columns, require
 from .machine import mass_model
 
 #: Reaction vectors of the output: name, description.
@@ -44,13 +44,8 @@ DEVIATIONS = {
 
 
 def _run_columns(run: CardRun) -> list[Column]:
-    return [
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", run.crank_angle),
-        Column("time", "time", "time from crank angle 0", run.time),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", run.omega),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", run.epsilon),
-        Column("rod_load", "force", "polished-rod load from the card", run.load),
-    ]
+    return [*crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
+            Column("rod_load", "force", "polished-rod load from the card", run.load)]
 
 
 def _peak(summary: list[Scalar], name: str, theta, values, quantity: str, what: str) -> None:

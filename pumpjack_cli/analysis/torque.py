@@ -32,6 +32,7 @@ from ..core.sampling import extremes, peak
 from ..errors import PumpjackError
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
+from .inputs import crank_columns
 from .machine import mass_model
 
 #: Crank positions of the grid on which the summary's extremes, balance and loading are computed.
@@ -258,10 +259,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
     run, parts = t.run, t.components
     m = linkage.motion(run.crank_angle)
     columns = [
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", run.crank_angle),
-        Column("time", "time", "time from crank angle 0", run.time),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", run.omega),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", run.epsilon),
+        *crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
         Column("position", "length", "polished-rod position above the bottom of the stroke",
                linkage.rod_position(run.crank_angle)),
         Column("rod_load", "force", "polished-rod load from the card", run.load),

@@ -12,7 +12,8 @@ from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, Rotation, RotationOption, UnitArgument, UnitsOption, UnitSystem, finite)
+                       PlotOption, Rotation, RotationOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
+                       finite)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -35,9 +36,7 @@ def downhole(
         help="Gibbs' dimensionless damping factor nu of the rods, 0 for none [default: the unit file's, else from "
              "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
-    service_factor: Annotated[float, typer.Option(
-        help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0,
-        callback=finite)] = 1.0,
+    service_factor: ServiceFactorOption = 1.0,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,

@@ -10,7 +10,7 @@ import typer
 from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
-from ..options import (FormatOption, Output, OutputOption, PlotOption, SpmOption, UnitArgument, UnitsOption,
+from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, quantity)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
@@ -43,9 +43,7 @@ def predict(
     gas_exponent: Annotated[float | None, _well(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
-    service_factor: Annotated[float, typer.Option(
-        help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0,
-        callback=finite)] = 1.0,
+    service_factor: ServiceFactorOption = 1.0,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..sampling import Extreme, crank_grid, cycle_period, extremes, uniform_time
-from .linkage import DeadPositions, Linkage, motion
+from .linkage import DeadPositions, Linkage
 
 #: Crank positions used to locate extremes, independent of the output resolution.
 _DENSE_STEPS = 7200
@@ -89,7 +89,7 @@ def rod_motion(
 
     >>> inch = 0.0254
     >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
-    >>> m = motion(c114, np.radians([90.0]))
+    >>> m = c114.motion(np.radians([90.0]))
     >>> rod = rod_motion(c114, m.beam_angle, m.beam_rate, m.beam_rate2, 0.0, omega=1.0)
     >>> round(float(rod.velocity[0]) / inch, 2)   # in/s at 1 rad/s
     26.45
