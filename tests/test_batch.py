@@ -238,3 +238,19 @@ def test_a_store_that_is_not_a_store(run_cli, tmp_path):
     assert code == 2 and "not a results store" in err
     code, out, err = run_cli("batch", "export", "--store", tmp_path / "none.sqlite")
     assert code == 2 and "no such results store" in err
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (("--method", "fancy"), "--method fancy"),
+    (("--balance", "level"), "--balance level"),
+    (("--analyses", "torque,bogus"), "unknown analysis 'bogus'"),
+    (("--analyses", ","), "--analyses"),
+    (("--store", "/nonexistent/r.sqlite"), "directory /nonexistent does not exist"),
+    (("--workers", "0"), "--workers"),
+])
+def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, argv, fragment):
+    rows = field(tmp_path, 1)
+    extra = () if "--store" in argv else ("--store", tmp_path / "r.sqlite")
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), *extra, *argv)
+    assert code == 2 and out == "" and err.count("\n") == 1 and fragment in err, err
+    assert not (tmp_path / "r.sqlite").exists() or "--store" in argv

@@ -358,9 +358,12 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
     from .store import Store
 
     start = time.perf_counter()
+    from .torque import check_options
+
     for analysis in options.analyses:
         if analysis not in ANALYSES:
             raise PumpjackError(f"--analyses: unknown analysis {analysis!r}; use {', '.join(ANALYSES)}")
+    check_options(options.method, options.balance)
     jobs = read_manifest(manifest)
     store = Store(store_path)
     try:

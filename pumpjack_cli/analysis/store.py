@@ -38,6 +38,8 @@ class Store:
         self.path = Path(path)
         if not create and not self.path.is_file():
             raise PumpjackError(f"--store {path}: no such results store")
+        if not self.path.parent.is_dir():
+            raise PumpjackError(f"--store {path}: directory {self.path.parent} does not exist")
         try:
             self.db = sqlite3.connect(self.path, timeout=60.0, isolation_level=None)
             self.db.execute("PRAGMA journal_mode=WAL")
