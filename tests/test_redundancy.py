@@ -228,7 +228,8 @@ def test_command_without_errors_matches_reactions(run_cli):
 
 def test_command_deviation_options_reach_the_solver(run_cli):
     """The summary's peak is found on the fixed summary grid (refined between points), at
-    the card's own speed (its time stamps; --spm 8 agrees with them)."""
+    the card's own speed (its time stamps; --spm 8 agrees with them); the difference is
+    like with like: real minus rational with the same error."""
     data = compare(run_cli, "--pitman-length", "2 mm")
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
@@ -238,7 +239,7 @@ def test_command_deviation_options_reach_the_solver(run_cli):
     actual = dataclasses.replace(ideal, pitman_length_offset=0.002)
     masses, section = config.masses.model(), config.pitman_section.model()
     _, _, real = real_mechanism(ideal, actual, PinTilts(), section, masses, theta, reading.speed, 0.0, load)
-    _, rational = rational_mechanism(ideal, masses, theta, reading.speed, 0.0, load)
+    _, rational = rational_mechanism(actual, masses, theta, reading.speed, 0.0, load)
     expected = peak(theta, real.r12[:, 1] - rational.r12[:, 1]).value
     assert data["summary"]["peak_difference_r12_y_n"] == pytest.approx(expected, rel=1e-12)
     assert data["summary"]["deviation_pitman_length_m"] == pytest.approx(0.002, rel=1e-12)
@@ -282,3 +283,75 @@ def test_negative_stiffness_is_rejected(field):
     data["pitman_section"][field] = -1.0
     with pytest.raises(ConfigError, match=rf"x.toml: pitman_section.{field}: Input should be greater than 0"):
         parse_unit(data, "x.toml")
+
+
+# --- like with like ([Spatial7SK12] compares the mechanisms with the same errors) -----------
+
+def _same_errors(setup, case: str, scale: float):
+    """Real minus rational M_z and R12y - R13y, both on the erroneous geometry."""
+    config, ideal, masses, section, theta, load = setup
+    offsets, tilts = CASES[case]
+    actual = dataclasses.replace(ideal, **{k: scale * v for k, v in offsets.items()})
+    tilts = PinTilts(**{f.name: scale * getattr(tilts, f.name) for f in dataclasses.fields(PinTilts)})
+    _, _, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load)
+    _, rational = rational_mechanism(actual, masses, theta, OMEGA, 0.0, load)
+    return real.balancing_torque - rational.balancing_torque, real.r12[:, 1] - real.r13[:, 1]
+
+
+@pytest.mark.parametrize("case", ["crank_phase", "crank_radius", "pitman_length", "equalizer_pin_roll"])
+def test_self_stress_changes_the_torque_at_second_order_and_the_split_at_first(setup, case):
+    """By virtual work the self-stress of the redundant constraints can change M_z only at
+    second order in the error (its power is the rate of the pitmans' elastic energy, which
+    is quadratic), while the force split is first order: doubling the error quadruples
+    real - rational M_z (within 5 %) and doubles R12y - R13y."""
+    torque_1, split_1 = _same_errors(setup, case, 1.0)
+    torque_2, split_2 = _same_errors(setup, case, 2.0)
+    if case != "equalizer_pin_roll":  # a roll of pin B1 leaves M_z unchanged to round-off (1e-9 N·m)
+        assert np.max(np.abs(torque_2)) == pytest.approx(4.0 * np.max(np.abs(torque_1)), rel=0.05)
+    assert np.max(np.abs(split_2)) == pytest.approx(2.0 * np.max(np.abs(split_1)), rel=0.01)
+
+
+def test_kinematic_part_is_the_rational_mechanisms_own_change(run_cli):
+    """The command's kinematic columns are the rational mechanism with the error minus without
+    (solved here), and kinematic + redundancy = real - error-free rational at every angle."""
+    import json
+
+    code, out, err = run_cli("compare-redundancy", UNIT, "--card", CARD, "--spm", "8", "--steps", "36",
+                             "--crank-phase", "0.1 deg", "-f", "json")
+    assert code == 0, err
+    series = json.loads(out)["series"]
+    config = load_unit(UNIT)
+    ideal = config.geometry.spatial()
+    theta = crank_grid(36)
+    reading = read_card(CARD, ideal.planar)
+    load = card_load(reading.card, theta)
+    masses = config.masses.model()
+    actual = dataclasses.replace(ideal, crank_phase_offset=np.radians(0.1))
+    _, with_error = rational_mechanism(actual, masses, theta, reading.speed, 0.0, load)
+    _, without = rational_mechanism(ideal, masses, theta, reading.speed, 0.0, load)
+    kinematic = np.array(series["balancing_torque_kinematic_n_m"])
+    assert np.max(np.abs(kinematic - (with_error.balancing_torque - without.balancing_torque))) < 1e-9 * np.max(
+        np.abs(without.balancing_torque))
+    total = np.array(series["balancing_torque_real_n_m"]) - np.array(series["balancing_torque_ideal_n_m"])
+    assert np.allclose(kinematic + np.array(series["balancing_torque_difference_n_m"]), total, rtol=0, atol=1e-6)
+    assert np.max(np.abs(kinematic)) > 10.0 * np.max(np.abs(series["balancing_torque_difference_n_m"]))
+
+
+def test_whole_arm_phase_adds_the_turned_arms_gravity_torque(setup):
+    """A crank-phase error of the whole arm turns side 3's arm and its counterweights with
+    the pin: at uniform speed the gearbox torque gains their gravity torque change
+    -g sum m r [sin(theta + phi + phi_i) - sin(theta + phi_i)] (centripetal forces pass
+    through the shaft), from the potential energy g m r cos of each point mass."""
+    config, ideal, masses, section, theta, load = setup
+    phi = np.radians(0.5)
+    pin = dataclasses.replace(ideal, crank_phase_offset=phi)
+    arm = dataclasses.replace(pin, arm_phase_offset=phi)
+    _, by_pin = rational_mechanism(pin, masses, theta, OMEGA, 0.0, load)
+    _, by_arm = rational_mechanism(arm, masses, theta, OMEGA, 0.0, load)
+    g = 9.80665
+    expected = -g * (masses.crank_arm_mass * masses.crank_arm_cg * (np.sin(theta + phi) - np.sin(theta))
+                     + 0.5 * masses.counterweight_mass * masses.counterweight_radius
+                     * (np.sin(theta + phi + masses.counterweight_phase) - np.sin(theta + masses.counterweight_phase)))
+    assert np.max(np.abs(by_arm.balancing_torque - by_pin.balancing_torque - expected)) < 1e-9 * np.max(
+        np.abs(by_pin.balancing_torque))
+    assert np.max(np.abs(expected)) > 50.0  # N·m: the 0.5 deg of 4 x 840 kg at 1 m matters

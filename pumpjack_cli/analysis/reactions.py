@@ -107,37 +107,50 @@ def deviations(unit, given: dict[str, float]):
 
 
 def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
-                       given_deviations: dict[str, float]) -> Result:
+                       given_deviations: dict) -> Result:
     """The real mechanism (revolute pins, elastic pitmans, errors) beside the rational one under a card.
 
-    The columns are on ``steps`` crank angles; the summary's peaks on a fixed grid of
+    Like with like ([Spatial7SK12] compares the two mechanisms with the same errors): the
+    rational mechanism is solved on the erroneous geometry too, and on the error-free
+    one; every difference from the error-free unit splits into its **kinematic** part
+    (rational with errors - error-free rational: the errors change the motion) and its
+    **redundancy** part (real - rational, same errors: the self-stress the redundant
+    constraints cause), columns ``_kinematic`` and ``_difference``. The columns are on
+    ``steps`` crank angles; the summary's peaks on a fixed grid of
     :data:`REDUNDANCY_SUMMARY_STEPS`, refined between its points, whatever ``steps``.
     """
     require(unit, "pitman_section", "the real mechanism needs the pitman's stiffness")
     errors = deviations(unit, given_deviations)
     masses = mass_model(unit)
     ideal = unit.geometry.spatial(unit.name)
+    actual = errors.apply(ideal)
     _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), rotation)
 
     def solve(run: CardRun):
-        motion = (ideal, masses, run.crank_angle, run.omega, run.epsilon, run.load)
-        real = joint_reactions("real", *motion, actual=errors.apply(ideal), tilts=errors.tilts(),
+        motion = (masses, run.crank_angle, run.omega, run.epsilon, run.load)
+        real = joint_reactions("real", ideal, *motion, actual=actual, tilts=errors.tilts(),
                                section=unit.pitman_section.model())
-        return joint_reactions("rational", *motion).reactions, real.reactions, real.joint_moments
+        return (joint_reactions("rational", ideal, *motion).reactions, joint_reactions("rational", actual, *motion).reactions,
+                real.reactions, real.joint_moments)
 
-    (rational, real, joints), (d_rational, d_real, d_joints) = (solve(run) for run in runs)
+    (ideal_r, rational, real, joints), (d_ideal, d_rational, d_real, d_joints) = (solve(run) for run in runs)
     run, theta = runs[0], runs[1].crank_angle
     columns = [Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation",
                       run.crank_angle),
                Column("rod_load", "force", "polished-rod load from the card", run.load)]
+
+    def split(label: str, quantity: str, what: str, get) -> list[Column]:
+        a, b, c = get(ideal_r), get(rational), get(real)
+        return [Column(f"{label}_{part}", quantity, f"{what}: {meaning}", values) for part, meaning, values in (
+            ("ideal", "rational mechanism, no errors", a), ("rational", "rational mechanism, same errors", b),
+            ("real", "real mechanism", c), ("kinematic", "rational with errors - without (the errors' kinematic part)",
+                                            b - a),
+            ("difference", "real - rational, same errors (the redundancy part)", c - b))]
+
     for name, what in REACTIONS.items():
         for i, axis in enumerate("xyz"):
-            a, b = getattr(rational, name)[:, i], getattr(real, name)[:, i]
-            columns += [Column(f"{name}_{axis}_{label}", "force", f"{what}, {axis}: {label}", values)
-                        for label, values in (("rational", a), ("real", b), ("difference", b - a))]
-    columns += [Column(f"balancing_torque_{label}", "torque", f"M_z: {label}", values)
-                for label, values in (("rational", rational.balancing_torque), ("real", real.balancing_torque),
-                                      ("difference", real.balancing_torque - rational.balancing_torque))]
+            columns += split(f"{name}_{axis}", "force", f"{what}, {axis}", lambda r, n=name, k=i: getattr(r, n)[:, k])
+    columns += split("balancing_torque", "torque", "M_z", lambda r: r.balancing_torque)
     for name, what in JOINT_MOMENTS.items():
         columns += [Column(f"{name}_{axis}", "torque", f"joint moment M_R{name[1:]}: {what}, {axis}",
                            getattr(joints, name)[:, i]) for i, axis in enumerate("xyz")]
@@ -153,13 +166,25 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     summary += [Scalar("crank_angle_bottom", "angle", dead.crank_angle_bottom, "bottom dead position"),
                 Scalar("crank_angle_top", "angle", dead.crank_angle_top, "top dead position")]
     for name, values, quantity, what in (
-        ("peak_difference_r12_y", d_real.r12[:, 1] - d_rational.r12[:, 1], "force", "max |dR12y|, real - rational"),
-        ("peak_difference_r13_y", d_real.r13[:, 1] - d_rational.r13[:, 1], "force", "max |dR13y|, real - rational"),
+        ("peak_difference_r12_y", d_real.r12[:, 1] - d_rational.r12[:, 1], "force",
+         "max |dR12y|, real - rational with the same errors (redundancy part)"),
+        ("peak_difference_r13_y", d_real.r13[:, 1] - d_rational.r13[:, 1], "force",
+         "max |dR13y|, real - rational with the same errors (redundancy part)"),
         ("peak_pitman_split_y", d_real.r12[:, 1] - d_real.r13[:, 1], "force", "max |R12y - R13y| in the real mechanism"),
-        ("peak_difference_r12_x", d_real.r12[:, 0] - d_rational.r12[:, 0], "force", "max |dR12x|, real - rational"),
-        ("peak_difference_r13_x", d_real.r13[:, 0] - d_rational.r13[:, 0], "force", "max |dR13x|, real - rational"),
+        ("peak_rational_pitman_split_y", d_rational.r12[:, 1] - d_rational.r13[:, 1], "force",
+         "max |R12y - R13y| in the rational mechanism with the same errors"),
+        ("peak_difference_r12_x", d_real.r12[:, 0] - d_rational.r12[:, 0], "force", "max |dR12x|, redundancy part"),
+        ("peak_difference_r13_x", d_real.r13[:, 0] - d_rational.r13[:, 0], "force", "max |dR13x|, redundancy part"),
         ("peak_difference_balancing_torque", d_real.balancing_torque - d_rational.balancing_torque, "torque",
-         "max |dM_z|"),
+         "max |dM_z|, real - rational with the same errors (redundancy part)"),
+        ("peak_kinematic_r12_y", d_rational.r12[:, 1] - d_ideal.r12[:, 1], "force",
+         "max |dR12y|, rational with errors - without (kinematic part)"),
+        ("peak_kinematic_r13_y", d_rational.r13[:, 1] - d_ideal.r13[:, 1], "force",
+         "max |dR13y|, rational with errors - without (kinematic part)"),
+        ("peak_kinematic_balancing_torque", d_rational.balancing_torque - d_ideal.balancing_torque, "torque",
+         "max |dM_z|, rational with errors - without (kinematic part)"),
+        ("peak_total_difference_balancing_torque", d_real.balancing_torque - d_ideal.balancing_torque, "torque",
+         "max |dM_z|, real with errors - error-free rational (both parts)"),
         ("peak_torsion_2", d_joints.torsion2, "torque", "max |torque| of pitman 2 about its axis"),
         ("peak_torsion_3", d_joints.torsion3, "torque", "max |torque| of pitman 3 about its axis"),
         *((f"peak_{name}", getattr(d_joints, name), "torque", f"max |M_R{name[1:]}|") for name in JOINT_MOMENTS),
@@ -173,5 +198,6 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
         Panel("R12, R13 x ([Spatial7SK12] fig. 13)", ("r12_x_real", "r13_x_real"), ("r12_x_rational",)),
         Panel("balancing torque ([Spatial7SK12] fig. 14)", ("balancing_torque_real",), ("balancing_torque_rational",)),
     )
-    title = f"{unit.name}: real against rational mechanism, card {card.name}, {rotation} rotation"
+    title = (f"{unit.name}: real against rational mechanism (same errors; crank phase of the "
+             f"{errors.crank_phase_mode.replace('-', ' ')}), card {card.name}, {rotation} rotation")
     return Result(title, tuple(summary), tuple(columns), panels)

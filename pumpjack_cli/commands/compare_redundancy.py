@@ -3,6 +3,7 @@ pitmans, manufacturing errors) against the rational one, from a dynamometer card
 
 from __future__ import annotations
 
+from enum import Enum
 from typing import Annotated
 
 import typer
@@ -13,6 +14,11 @@ from ..config import load_unit
 from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
+
+class PhaseMode(str, Enum):
+    pin_bore = "pin-bore"
+    whole_arm = "whole-arm"
+
 
 SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "balancing_torque_real")
 
@@ -36,6 +42,9 @@ def compare_redundancy(
     crank_pin_tilt_tangential: Annotated[str | None, _deviation("pin A1 bore turned about the arm's tangent")] = None,
     equalizer_pin_roll: Annotated[str | None, _deviation("pin B1 bore turned about the beam axis")] = None,
     equalizer_pin_yaw: Annotated[str | None, _deviation("pin B1 bore turned about the vertical")] = None,
+    crank_phase_mode: Annotated[PhaseMode | None, _deviation(
+        "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
+    ] = None,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
@@ -50,5 +59,7 @@ def compare_redundancy(
              "equalizer_pin_roll": equalizer_pin_roll, "equalizer_pin_yaw": equalizer_pin_yaw}
     given = {field: quantity(text, DEVIATIONS[field], "--" + field.replace("_", "-"))
              for field, text in texts.items() if text is not None}
+    if crank_phase_mode is not None:
+        given["crank_phase_mode"] = crank_phase_mode.value
     sink.emit(run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value,
                   given), SHOWN)

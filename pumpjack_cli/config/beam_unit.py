@@ -356,6 +356,9 @@ class Deviations(Section):
                                       description="pin B1 bore turned about the beam's long axis [rad]")
     equalizer_pin_yaw: Angle = Field(default=0.0, ge=-0.05, le=0.05,
                                      description="pin B1 bore turned about the vertical across the beam [rad]")
+    crank_phase_mode: Literal["pin-bore", "whole-arm"] = Field(
+        default="pin-bore", description="what the crank phase turns: pin A1's bore alone, or the whole arm of "
+                                        "side 3 with its counterweights (keyway play)")
 
     def tilts(self) -> PinTilts:
         from ..core.beam.redundancy import PinTilts
@@ -364,9 +367,11 @@ class Deviations(Section):
                         self.equalizer_pin_roll, self.equalizer_pin_yaw)
 
     def apply(self, spatial: SpatialLinkage) -> SpatialLinkage:
-        """The spatial model with the side-3 deviations of position."""
-        return dataclasses.replace(spatial, crank_phase_offset=self.crank_phase,
-                                   crank_radius_offset=self.crank_radius, pitman_length_offset=self.pitman_length)
+        """The spatial model with the side-3 deviations of position (and, for a whole-arm crank
+        phase, of side 3's arm and counterweights)."""
+        arm = self.crank_phase if self.crank_phase_mode == "whole-arm" else 0.0
+        return dataclasses.replace(spatial, crank_phase_offset=self.crank_phase, crank_radius_offset=self.crank_radius,
+                                   pitman_length_offset=self.pitman_length, arm_phase_offset=arm)
 
 
 class Rating(Section):

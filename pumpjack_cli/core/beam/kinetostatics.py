@@ -191,11 +191,14 @@ def applied_loads(
     # Crank: two arms and the counterweights (half on each arm), points in the arm planes.
     theta = sm.crank_angle
     sigma = linkage.rotation
-    u_pin = np.stack([sigma * np.sin(theta), np.cos(theta), np.zeros(n)], axis=-1)
-    phase = theta + masses.counterweight_phase
-    u_cw = np.stack([sigma * np.sin(phase), np.cos(phase), np.zeros(n)], axis=-1)
-    rel = np.stack([masses.crank_arm_cg * u_pin, masses.crank_arm_cg * u_pin,
-                    masses.counterweight_radius * u_cw, masses.counterweight_radius * u_cw], axis=1)
+
+    def along(angle: np.ndarray) -> np.ndarray:
+        return np.stack([sigma * np.sin(angle), np.cos(angle), np.zeros(n)], axis=-1)
+
+    arm3 = theta + spatial.arm_phase_offset  # side 3's arm (at -b), turned with its blocks by a whole-arm error
+    rel = np.stack([masses.crank_arm_cg * along(theta), masses.crank_arm_cg * along(arm3),
+                    masses.counterweight_radius * along(theta + masses.counterweight_phase),
+                    masses.counterweight_radius * along(arm3 + masses.counterweight_phase)], axis=1)
     offsets = np.array([b, -b, b, -b])[None, :, None] * Z
     acc = _point_acceleration(sm.e1[:, None, :], sm.w1[:, None, :], rel)
     half_cw = 0.5 * masses.counterweight_mass

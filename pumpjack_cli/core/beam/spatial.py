@@ -65,6 +65,11 @@ class SpatialLinkage:
         Crank pin A1 ahead of A in the direction of rotation [rad].
     crank_radius_offset, pitman_length_offset : float
         Crank radius of A1 and pitman A1B1 minus those of side 2 [m].
+    arm_phase_offset : float
+        Crank arm of side 3 with its counterweights turned ahead of side 2's in the
+        direction of rotation [rad]: a crank-phase error of the whole arm (keyway play)
+        rather than of pin A1's bore alone; it moves the arm's masses (their weight and
+        inertia), while ``crank_phase_offset`` moves the pin.
 
     References
     ----------
@@ -85,6 +90,7 @@ class SpatialLinkage:
     crank_phase_offset: float = 0.0
     crank_radius_offset: float = 0.0
     pitman_length_offset: float = 0.0
+    arm_phase_offset: float = 0.0
 
     @property
     def pitman(self) -> float:
