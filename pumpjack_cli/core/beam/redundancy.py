@@ -116,6 +116,51 @@ class PinTilts:
     equalizer_pin_yaw: float = 0.0
 
 
+@dataclass(frozen=True)
+class JointCompliance:
+    """Rotational stiffness and clearance of the revolute pairs across their pin axes.
+
+    Each pin is a rotational spring in series with the pitman (complementary energy
+    M²/(2k) per moment component), with a dead band: the joint turns freely through
+    +-clearance (radial clearance over bearing width, e.g. 0.1 mm / 100 mm = 1 mrad)
+    before it carries a moment. Each of the two moment components across a pin axis has
+    its own dead band (a square band: exact when one component acts, conservative when
+    both do). Infinite stiffness and zero clearance: the rigid pins of [Spatial7SK12].
+
+    Attributes
+    ----------
+    crank_pin_stiffness, equalizer_pin_stiffness : float
+        k [N·m/rad] of the crank pins A, A1 and of the equalizer pins B, B1.
+    crank_pin_clearance, equalizer_pin_clearance : float
+        Free rotation delta [rad] of each pin's pair before contact.
+    """
+
+    crank_pin_stiffness: float = np.inf
+    equalizer_pin_stiffness: float = np.inf
+    crank_pin_clearance: float = 0.0
+    equalizer_pin_clearance: float = 0.0
+
+
+#: Iterations of the active-set solution of the joints' dead bands at most.
+MAX_CONTACT_ITERATIONS = 50
+#: Weights of the moment in the primal-dual active-set update lambda + step M / max h_ii,
+#: tried in turn at the crank angles where the previous one cycled.
+CONTACT_STEPS = (0.01, 1.0, 0.1, 10.0)
+
+
+@dataclass(frozen=True)
+class ContactCheck:
+    """How the joints' dead-band problem was solved at each crank angle: active-set
+    iterations, and the largest violations of compatibility (stationarity of the
+    complementary energy, relative to the misfit work's scale) and of the contact
+    conditions (|lambda| <= delta where a moment is zero, lambda = delta sign(M) where it
+    is not; relative to delta) [-]."""
+
+    iterations: np.ndarray
+    compatibility_residual: np.ndarray
+    contact_residual: np.ndarray
+
+
 def _unit(v: np.ndarray) -> np.ndarray:
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
@@ -204,6 +249,7 @@ class JointMoments:
     m34: np.ndarray
     torsion2: np.ndarray
     torsion3: np.ndarray
+    contact: ContactCheck | None = None
 
 
 _FORCES = ("r12", "r13", "r24", "r34", "r45", "r05")
@@ -321,6 +367,7 @@ def real_mechanism(
     *,
     weights: bool = True,
     inertia: bool = True,
+    joints: JointCompliance = JointCompliance(),
 ) -> tuple[SpatialMotion, JointMoments, Reactions]:
     """Kinematics, joint moments and reactions of the real mechanism.
 
@@ -351,12 +398,19 @@ def real_mechanism(
         Polished-rod load at each crank angle [N].
     weights, inertia : bool
         Include the links' weights, their inertia forces and moments.
+    joints : JointCompliance
+        Rotational stiffness [N·m/rad] and clearance [rad] of the pins (default: rigid,
+        no clearance). Stiffness adds 1/k to the complementary energy of each joint
+        moment component; a clearance delta makes it delta |M| + M²/(2k) (a dead band),
+        and Menabrea's condition becomes the convex problem min over y of
+        1/2 y.Ay - b.y + sum delta_i |M_i(y)|, solved per crank angle by an active-set
+        method (:func:`_dead_band`) whose residuals come back in ``contact``.
 
     Returns
     -------
     tuple
-        (:class:`SpatialMotion` of ``actual``, :class:`JointMoments` [N·m],
-        :class:`~.kinetostatics.Reactions` [N, N·m]).
+        (:class:`SpatialMotion` of ``actual``, :class:`JointMoments` [N·m] with the
+        :class:`ContactCheck`, :class:`~.kinetostatics.Reactions` [N, N·m]).
 
     References
     ----------
@@ -404,9 +458,16 @@ def real_mechanism(
         # work of the joint moments on the pitman ends through the misfit: +M_pin at A, -M_top at B
         work[:, _column(m_pin):_column(m_pin) + 2] = np.einsum("nki,nk->ni", bases[m_pin], mu_a)
         work[:, _column(m_top):_column(m_top) + 2] = -np.einsum("nki,nk->ni", bases[m_top], mu_b)
+    index = np.concatenate([_column(name) + np.arange(2) for name in _MOMENTS])
+    stiffness = np.repeat([joints.crank_pin_stiffness, joints.crank_pin_stiffness, joints.equalizer_pin_stiffness,
+                           joints.equalizer_pin_stiffness], 2)
+    q_mat[:, index, index] += 1.0 / stiffness
     st = np.swapaxes(null, 1, 2)
+    a_mat = st @ q_mat @ null
     rhs = np.einsum("nij,nj->ni", st, work - q_vec - np.einsum("nij,nj->ni", q_mat, x_p))
-    y = np.linalg.solve(st @ q_mat @ null, rhs[..., None])[..., 0]
+    clearance = np.repeat([joints.crank_pin_clearance, joints.crank_pin_clearance, joints.equalizer_pin_clearance,
+                           joints.equalizer_pin_clearance], 2)
+    y, contact = _dead_band(a_mat, rhs, null[:, index, :], x_p[:, index], clearance)
     x = x_p + np.einsum("nij,nj->ni", null, y)
 
     scale = np.max(np.abs(f), axis=-1)
@@ -418,7 +479,7 @@ def real_mechanism(
     n2, n3 = _unit(sm.pin_b - sm.pin_a), _unit(sm.pin_b1 - sm.pin_a1)
     moments = JointMoments(
         m12=joint["m12"], m13=joint["m13"], m24=joint["m24"], m34=joint["m34"],
-        torsion2=_dot(joint["m24"], n2), torsion3=_dot(joint["m34"], n3),
+        torsion2=_dot(joint["m24"], n2), torsion3=_dot(joint["m34"], n3), contact=contact,
     )
     n = crank_angle.size
     reactions = Reactions(
@@ -427,3 +488,130 @@ def real_mechanism(
         balancing_torque=torque, residual=residual,
     )
     return sm, moments, reactions
+
+
+def _dead_band(a_mat: np.ndarray, rhs: np.ndarray, g: np.ndarray, m0: np.ndarray,
+               clearance: np.ndarray) -> tuple[np.ndarray, ContactCheck]:
+    """Self-stress amplitudes y (N, r) minimising 1/2 y.A y - b.y + sum_i delta_i |m0_i + g_i.y|.
+
+    The joint moments are M = m0 + g y. By convex duality (the dead band's term is
+    max over |lambda_i| <= delta_i of lambda.M) the problem is the box-constrained
+    quadratic programme min over |lambda| <= delta of 1/2 lambda.H lambda - c.lambda,
+    H = g A^-1 g^T, c = m0 + g A^-1 b, and then y = A^-1 (b - g^T lambda), M = c - H lambda.
+    Its KKT conditions are the contact conditions: |lambda_i| < delta_i where M_i = 0
+    (the joint within its play) and lambda_i = delta_i sign(M_i) where M_i != 0 (in
+    contact). H has the rank of the self-stress states; a Tikhonov term of 1e-9 of its
+    largest diagonal makes it definite (of the lambdas that give the same moments it
+    picks the smallest; the moments change by that fraction). Solved per crank angle,
+    all angles at once, by the primal-dual active-set method for bounds
+    (:func:`_active_set`): lambda_i goes to +-delta_i where lambda_i + gamma M_i leaves
+    the band, the free components solve H_FF lambda_F = c_F - H_F,B lambda_B, until the
+    sets repeat; crank angles where one gamma cycles are solved again with the next of
+    :data:`CONTACT_STEPS`. Without clearance lambda = 0 and this is one linear solve.
+    """
+    n, r = rhs.shape
+    k = m0.shape[1]
+    inverse = np.linalg.inv(a_mat)
+    if not np.any(clearance > 0):
+        y = np.einsum("nij,nj->ni", inverse, rhs)
+        return y, ContactCheck(np.ones(n, dtype=int), _stationarity(a_mat, rhs, y, g, np.zeros((n, k))),
+                               np.zeros(n))
+    gi = g @ inverse
+    h = gi @ np.swapaxes(g, 1, 2)
+    c = m0 + np.einsum("nkr,nr->nk", gi, rhs)
+    top = np.max(np.einsum("nkk->nk", h), axis=-1)
+    # H has the rank of the self-stress states: a tiny Tikhonov term makes it definite and
+    # picks, of the lambdas that give the same moments, the smallest; the moments are unchanged
+    regular = h + (1e-9 * top)[:, None, None] * np.eye(k)
+    scale = np.maximum(np.max(np.abs(c), axis=-1), np.max(np.abs(m0), axis=-1)) + 1.0
+    lam = np.zeros((n, k))
+    iterations = np.full(n, MAX_CONTACT_ITERATIONS + 1)
+    todo = np.arange(n)
+    for step in CONTACT_STEPS:  # the update's weight: where one cycles, the next usually settles
+        found, spent, settled = _active_set(regular[todo], c[todo], clearance, step / top[todo])
+        lam[todo] = found
+        iterations[todo[settled]] = spent[settled]
+        todo = todo[~settled]
+        if todo.size == 0:
+            break
+    for i in todo:  # where every gamma cycled: a bounded quasi-Newton descent, then its sets solved exactly
+        lam[i], iterations[i] = _bounded_descent(h[i], regular[i], c[i], clearance)
+    y = np.einsum("nij,nj->ni", inverse, rhs - np.einsum("nkr,nk->nr", g, lam))
+    moment = m0 + np.einsum("nkr,nr->nk", g, y)
+    contact = ContactCheck(iterations, _stationarity(a_mat, rhs, y, g, lam),
+                           _contact_violation(moment, lam, clearance) / scale)
+    return y, contact
+
+
+def _active_set(h: np.ndarray, c: np.ndarray, clearance: np.ndarray, gamma: np.ndarray):
+    """Primal-dual active set for min over |lambda| <= delta of 1/2 lambda.H lambda - c.lambda
+    (H definite), all rows at once: (lambda, iterations, settled) per row."""
+    n, k = c.shape
+    lam = np.zeros((n, k))
+    moment = c.copy()
+    state = np.full((n, k), 2.0)  # no set yet
+    iterations = np.zeros(n, dtype=int)
+    active = np.ones(n, dtype=bool)
+    eye = np.eye(k)
+    for _ in range(MAX_CONTACT_ITERATIONS):
+        trial = lam + gamma[:, None] * moment
+        new_state = np.where(trial > clearance, 1.0, np.where(trial < -clearance, -1.0, 0.0))
+        free = new_state == 0
+        system = np.where(free[:, :, None] & free[:, None, :], h, 0.0) + np.where(free[:, :, None], 0.0, eye)
+        bound = clearance * new_state
+        right = np.where(free, c - np.einsum("nij,nj->ni", h, bound), bound)
+        solved = np.linalg.solve(system, right[..., None])[..., 0]
+        lam = np.where(active[:, None], solved, lam)
+        moment = c - np.einsum("nij,nj->ni", h, lam)
+        iterations += active
+        settled = np.all(new_state == state, axis=-1)
+        state = np.where(active[:, None], new_state, state)
+        active = active & ~settled
+        if not active.any():
+            break
+    return lam, iterations, ~active
+
+
+def _contact_violation(moment: np.ndarray, lam: np.ndarray, clearance: np.ndarray) -> np.ndarray:
+    """Largest violation of the contact conditions per crank angle [N·m]: a moment where the
+    joint is within its play (|lambda| < delta), or a moment against the side in contact."""
+    inside = np.abs(lam) < clearance * (1.0 - 1e-9)
+    against = np.where(lam > 0, np.maximum(-moment, 0.0), np.maximum(moment, 0.0))
+    return np.max(np.where(inside | (clearance == 0), np.abs(moment) * (clearance > 0), against), axis=-1)
+
+
+def _stationarity(a_mat, rhs, y, g, lam) -> np.ndarray:
+    """|A y - b + g^T lambda| relative to |b| (plus one), per crank angle: Menabrea's compatibility."""
+    residual = np.einsum("nij,nj->ni", a_mat, y) - rhs + np.einsum("nkr,nk->nr", g, lam)
+    return np.max(np.abs(residual), axis=-1) / (np.max(np.abs(rhs), axis=-1) + 1.0)
+
+
+def _bounded_descent(h: np.ndarray, regular: np.ndarray, c: np.ndarray, clearance: np.ndarray) -> tuple[np.ndarray, int]:
+    """One crank angle's box QP by L-BFGS-B (scipy), then its sets made exact: (lambda, iterations).
+
+    From the quasi-Newton solution the components at their bounds are fixed there and the
+    others solved exactly; a free component that leaves the band is fixed at it and a
+    fixed one whose moment turns against it is freed, until the sets repeat (warm-started
+    active set); the most exact lambda found is kept."""
+    from scipy.optimize import minimize
+
+    found = minimize(lambda lam: 0.5 * lam @ h @ lam - c @ lam, np.zeros(c.size), jac=lambda lam: h @ lam - c,
+                     bounds=list(zip(-clearance, clearance)), method="L-BFGS-B",
+                     options={"ftol": 1e-30, "gtol": 1e-14, "maxiter": 10_000})
+    best, best_violation = found.x, float(_contact_violation((c - h @ found.x)[None], found.x[None], clearance)[0])
+    state = np.where(found.x >= clearance * (1 - 1e-7), 1.0, np.where(found.x <= -clearance * (1 - 1e-7), -1.0, 0.0))
+    for _ in range(MAX_CONTACT_ITERATIONS):
+        free = state == 0
+        system = np.where(free[:, None] & free[None, :], regular, 0.0) + np.diag(np.where(free, 0.0, 1.0))
+        bound = clearance * state
+        lam = np.linalg.solve(system, np.where(free, c - regular @ bound, bound))
+        moment = c - h @ lam
+        violation = float(_contact_violation(moment[None], np.clip(lam, -clearance, clearance)[None], clearance)[0])
+        if violation < best_violation and np.all(np.abs(lam) <= clearance * (1 + 1e-9)):
+            best, best_violation = lam, violation
+        new_state = np.where(free & (lam > clearance), 1.0, np.where(free & (lam < -clearance), -1.0, state))
+        new_state = np.where(~free & (moment * state < 0), 0.0, new_state)
+        if np.array_equal(new_state, state):
+            break
+        state = new_state
+    return best, MAX_CONTACT_ITERATIONS + int(found.nit)
