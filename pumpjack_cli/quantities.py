@@ -62,6 +62,9 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
         "spm": 2 * math.pi / 60,
     },
     "angle": {"rad": 1.0, "mrad": 1e-3, "deg": math.pi / 180},
+    # rotational stiffness of a joint: moment per radian
+    "rotational_stiffness": {"n*m/rad": 1.0, "kn*m/rad": 1e3, "lbf*in/rad": POUND_FORCE * INCH,
+                             "lbf*ft/rad": POUND_FORCE * FOOT},
     "power": {"w": 1.0, "kw": 1e3, "hp": HORSEPOWER},
     "density": {"kg/m3": 1.0, "g/cm3": 1e3, "lb/ft3": POUND_MASS / FOOT**3},
     "kinematic_viscosity": {"m2/s": 1.0, "mm2/s": 1e-6, "cst": 1e-6},
@@ -77,7 +80,7 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
 
 #: A unit to suggest when one is missing, per dimension.
 _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
-                  "rotational_speed": "rpm", "angle": "deg", "power": "kW", "density": "kg/m3",
+                  "rotational_speed": "rpm", "angle": "deg", "rotational_stiffness": "N*m/rad", "power": "kW", "density": "kg/m3",
                   "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
                   "pressure": "MPa", "weight_per_length": "lbf/ft"}
 
@@ -204,6 +207,10 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "count": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
     "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
     "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
+    "rotational_stiffness": {
+        "si": OutputUnit("N·m/rad", "n_m_rad", 1.0),
+        "field": OutputUnit("lbf·in/rad", "lbf_in_rad", 1 / (POUND_FORCE * INCH)),
+    },
     "moment_of_inertia": {
         "si": OutputUnit("kg·m²", "kg_m2", 1.0),
         "field": OutputUnit("lb·ft²", "lb_ft2", 1 / (POUND_MASS * FOOT**2)),

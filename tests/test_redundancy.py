@@ -95,15 +95,19 @@ def skew(v):
     return np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
 
 
-def test_compatibility_every_self_stress_state(setup):
+@pytest.mark.parametrize("stiffness", [None, (3e6, 2.5e7)], ids=["rigid pins", "elastic pins"])
+def test_compatibility_every_self_stress_state(setup, stiffness):
     """Menabrea with misfit: for every self-stress state s (null space of the 24 x 28
     equilibrium matrix, assembled here), dU*/dX . s = (misfit work) . s, with U* the
-    pitmans' complementary energy integrated here on 4000 points per pitman."""
+    pitmans' complementary energy integrated here on 4000 points per pitman, plus, with
+    elastic pins (rotational springs in series), sum M^2 / 2k over the joint moments."""
     config, ideal, masses, section, theta, load = setup
     k = 7  # one crank angle is enough for this independent (slow, looped) check
     actual = dataclasses.replace(ideal, pitman_length_offset=0.002, crank_phase_offset=np.radians(0.1))
     tilts = PinTilts(crank_pin_radial=5e-4, equalizer_pin_roll=-5e-4)
-    sm_all, joints, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load)
+    pins = redundancy.JointCompliance() if stiffness is None else redundancy.JointCompliance(*stiffness)
+    sm_all, joints, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load,
+                                          joints=pins)
     loads = applied_loads(actual, masses, sm_all, load)
     a2, u2, a3, u3 = redundancy.pin_axes(actual, sm_all, tilts)
     p = {name: getattr(sm_all, name)[k] for name in ("pin_a", "pin_a1", "pin_b", "pin_b1", "pin_d")}
@@ -161,6 +165,9 @@ def test_compatibility_every_self_stress_state(setup):
                             + (m @ c) ** 2 / (section.youngs_modulus * section.inplane_inertia)
                             + (m @ t) ** 2 / (section.youngs_modulus * section.outofplane_inertia))
             total += 0.5 * np.trapezoid(vals, xs)
+        for name, spring in (("m12", pins.crank_pin_stiffness), ("m13", pins.crank_pin_stiffness),
+                             ("m24", pins.equalizer_pin_stiffness), ("m34", pins.equalizer_pin_stiffness)):
+            total += 0.5 * np.sum(xv[cols[name]:cols[name] + 2] ** 2) / spring
         return total
 
     gradient = np.array([(energy(x + h * s) - energy(x - h * s)) / (2 * h)
@@ -355,3 +362,61 @@ def test_whole_arm_phase_adds_the_turned_arms_gravity_torque(setup):
     assert np.max(np.abs(by_arm.balancing_torque - by_pin.balancing_torque - expected)) < 1e-9 * np.max(
         np.abs(by_pin.balancing_torque))
     assert np.max(np.abs(expected)) > 50.0  # N·m: the 0.5 deg of 4 x 840 kg at 1 m matters
+
+
+# --- joint compliance and clearance ------------------------------------------------------
+
+def _split(setup, offsets, tilts=PinTilts(), joints=redundancy.JointCompliance()):
+    config, ideal, masses, section, theta, load = setup
+    actual = dataclasses.replace(ideal, **offsets)
+    _, moments, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load, joints=joints)
+    return np.max(np.abs(real.r12[:, 1] - real.r13[:, 1])), moments, real
+
+
+def test_stiff_joints_tend_to_the_rigid_ones_and_soft_joints_relieve_the_split(setup):
+    offsets = {"crank_phase_offset": np.radians(0.1)}
+    rigid, _, _ = _split(setup, offsets)
+    stiff, _, _ = _split(setup, offsets, joints=redundancy.JointCompliance(1e16, 1e16))
+    assert stiff == pytest.approx(rigid, rel=1e-6)
+    previous = rigid
+    for k in (2.5e7, 5e6, 2e6):  # softer and softer springs in series: less self-stress
+        found, _, _ = _split(setup, offsets, joints=redundancy.JointCompliance(k, k))
+        assert found < previous
+        previous = found
+
+
+@pytest.mark.parametrize("offsets", [{"crank_phase_offset": np.radians(0.1)}, {"pitman_length_offset": 0.002}],
+                         ids=["crank phase", "pitman length"])
+def test_clearance_is_a_dead_band(setup, offsets):
+    """Below the error that closes the play there is no self-stress (the real mechanism is the
+    rational one with the same error); above it the split grows continuously from zero and
+    tends to the rigid split less a constant; every crank angle satisfies equilibrium,
+    compatibility and the contact conditions."""
+    config, ideal, masses, section, theta, load = setup
+    rigid, _, _ = _split(setup, offsets)
+    splits = []
+    for scale in (0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 4.0):
+        scaled = {key: scale * value for key, value in offsets.items()}
+        found, moments, real = _split(setup, scaled, joints=redundancy.JointCompliance(
+            crank_pin_clearance=1e-3, equalizer_pin_clearance=1e-3))
+        assert real.residual.max() < 1e-9
+        assert moments.contact.compatibility_residual.max() < 1e-9
+        assert moments.contact.contact_residual.max() < 1e-5
+        splits.append(found)
+        if scale == 0.02:
+            inside = real
+    _, rational = rational_mechanism(dataclasses.replace(ideal, **{k: 0.02 * v for k, v in offsets.items()}), masses,
+                                     theta, OMEGA, 0.0, load)
+    assert np.max(np.abs(inside.r12 - rational.r12)) < 1e-3 * rigid  # inside the play: the rational mechanism
+    assert splits[0] < 1e-3 * rigid  # inside the play: no self-stress
+    assert np.all(np.diff(splits) >= -1e-6 * rigid)  # continuous, monotonic growth
+    assert splits[-1] > 2.0 * rigid  # far beyond the play: the constraint works again
+    assert 4.0 * rigid - splits[-1] < 4.0 * rigid * 0.5  # less a constant: the play taken up
+
+
+def test_zero_clearance_and_rigid_pins_give_unchanged_results(setup):
+    offsets = {"crank_phase_offset": np.radians(0.1), "crank_radius_offset": 1e-3}
+    _, base_moments, base = _split(setup, offsets)
+    _, moments, same = _split(setup, offsets, joints=redundancy.JointCompliance(np.inf, np.inf, 0.0, 0.0))
+    assert np.array_equal(same.r12, base.r12) and np.array_equal(same.balancing_torque, base.balancing_torque)
+    assert np.all(moments.contact.iterations == 1)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-
+import numpy as np
 from pydantic import ValidationError
 
 from ..core.beam.reactions import joint_reactions
@@ -106,8 +106,17 @@ def deviations(unit, given: dict[str, float]):
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
 
 
+def joint_settings(unit, given: dict[str, float]):
+    """The unit's [joints] with the values given on the command line (SI) replacing them."""
+    try:
+        return type(unit.joints).model_validate(unit.joints.model_dump() | given)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
+
+
 def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
-                       given_deviations: dict) -> Result:
+                       given_deviations: dict, given_joints: dict | None = None) -> Result:
     """The real mechanism (revolute pins, elastic pitmans, errors) beside the rational one under a card.
 
     Like with like ([Spatial7SK12] compares the two mechanisms with the same errors): the
@@ -121,6 +130,7 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     """
     require(unit, "pitman_section", "the real mechanism needs the pitman's stiffness")
     errors = deviations(unit, given_deviations)
+    pins = joint_settings(unit, given_joints or {})
     masses = mass_model(unit)
     ideal = unit.geometry.spatial(unit.name)
     actual = errors.apply(ideal)
@@ -129,7 +139,7 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     def solve(run: CardRun):
         motion = (masses, run.crank_angle, run.omega, run.epsilon, run.load)
         real = joint_reactions("real", ideal, *motion, actual=actual, tilts=errors.tilts(),
-                               section=unit.pitman_section.model())
+                               section=unit.pitman_section.model(), joints=pins.model())
         return (joint_reactions("rational", ideal, *motion).reactions, joint_reactions("rational", actual, *motion).reactions,
                 real.reactions, real.joint_moments)
 
@@ -157,6 +167,11 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     for side in ("2", "3"):
         columns.append(Column(f"torsion_{side}", "torque", f"torque of pitman {side} about its axis",
                               getattr(joints, f"torsion{side}")))
+    contact, d_contact = joints.contact, d_joints.contact
+    columns += [Column("compatibility_residual", "ratio", "|A y - b + g^T lambda| / |b|: Menabrea's condition",
+                       contact.compatibility_residual),
+                Column("contact_residual", "ratio", "largest violation of the joints' contact conditions, "
+                       "relative to the moments' scale", contact.contact_residual)]
 
     fields = type(unit.deviations).model_fields
     summary = [Scalar(f"deviation_{field}", kind, getattr(errors, field),
@@ -192,6 +207,22 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
         _peak(summary, name, theta, values, quantity, what)
     summary.append(Scalar("equilibrium_residual", "ratio", float(max(real.residual.max(), d_real.residual.max())),
                           "real mechanism: max |E X - f| / largest load"))
+    model = pins.model()
+    for name, value, kind in (("crank_pin_stiffness", model.crank_pin_stiffness, "rotational_stiffness"),
+                              ("equalizer_pin_stiffness", model.equalizer_pin_stiffness, "rotational_stiffness"),
+                              ("crank_pin_clearance", model.crank_pin_clearance, "angle"),
+                              ("equalizer_pin_clearance", model.equalizer_pin_clearance, "angle")):
+        if np.isfinite(value):
+            summary.append(Scalar(name, kind, value, type(unit.joints).model_fields[name].description.split(" [")[0]))
+    summary += [
+        Scalar("compatibility_residual", "ratio", float(max(contact.compatibility_residual.max(),
+                                                            d_contact.compatibility_residual.max())),
+               "real mechanism: max |A y - b + g^T lambda| / |b| (Menabrea's condition)"),
+        Scalar("contact_residual", "ratio", float(max(contact.contact_residual.max(), d_contact.contact_residual.max())),
+               "real mechanism: largest violation of the joints' contact conditions"),
+        Scalar("contact_iterations", "count", float(max(contact.iterations.max(), d_contact.iterations.max())),
+               "most active-set iterations at one crank angle (1: no clearance)"),
+    ]
     panels = (
         Panel("R12 y ([Spatial7SK12] fig. 11)", ("r12_y_real",), ("r12_y_rational",)),
         Panel("R13 y ([Spatial7SK12] fig. 12)", ("r13_y_real",), ("r13_y_rational",)),

@@ -27,6 +27,15 @@ def _deviation(help_text: str):
     return typer.Option(help=f"{help_text} [default: the unit's [deviations], else zero]")
 
 
+def _joint(help_text: str):
+    return typer.Option(help=f"{help_text} [default: the unit's [joints], else rigid without clearance]")
+
+
+#: Joint options and their quantities.
+JOINTS = {"crank_pin_stiffness": "rotational_stiffness", "equalizer_pin_stiffness": "rotational_stiffness",
+          "crank_pin_clearance": "angle", "equalizer_pin_clearance": "angle"}
+
+
 def compare_redundancy(
     unit: UnitArgument,
     card: CardOption,
@@ -42,6 +51,13 @@ def compare_redundancy(
     crank_pin_tilt_tangential: Annotated[str | None, _deviation("pin A1 bore turned about the arm's tangent")] = None,
     equalizer_pin_roll: Annotated[str | None, _deviation("pin B1 bore turned about the beam axis")] = None,
     equalizer_pin_yaw: Annotated[str | None, _deviation("pin B1 bore turned about the vertical")] = None,
+    crank_pin_stiffness: Annotated[str | None, _joint("rotational stiffness of the crank pins, e.g. '3e6 N*m/rad'")
+                                   ] = None,
+    equalizer_pin_stiffness: Annotated[str | None, _joint(
+        "rotational stiffness of the equalizer pins and bearing, e.g. '2.5e7 N*m/rad'")] = None,
+    crank_pin_clearance: Annotated[str | None, _joint(
+        "free tilt of the crank pins, radial clearance over width, e.g. '1 mrad'")] = None,
+    equalizer_pin_clearance: Annotated[str | None, _joint("free tilt of the equalizer pins, e.g. '1 mrad'")] = None,
     crank_phase_mode: Annotated[PhaseMode | None, _deviation(
         "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
     ] = None,
@@ -61,5 +77,9 @@ def compare_redundancy(
              for field, text in texts.items() if text is not None}
     if crank_phase_mode is not None:
         given["crank_phase_mode"] = crank_phase_mode.value
+    pins = {"crank_pin_stiffness": crank_pin_stiffness, "equalizer_pin_stiffness": equalizer_pin_stiffness,
+            "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
+    given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
+                    for field, text in pins.items() if text is not None}
     sink.emit(run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value,
-                  given), SHOWN)
+                  given, given_joints), SHOWN)

@@ -22,11 +22,11 @@ from ..errors import ConfigError, DesignationError, GeometryError
 from .geometry_names import ROTATION_SIGNS, canonical_geometry
 if TYPE_CHECKING:  # the spatial and mass models are imported when a command uses them
     from ..core.beam.masses import MassModel
-    from ..core.beam.redundancy import PinTilts, PitmanSection
+    from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
 from .quantities import (Angle, Area, AreaMoment, Count, Density, Force, Fraction, KinematicViscosity, Length, Mass,
-                         MomentOfInertia, Number, Power, Pressure, RotationalSpeed, Section, Torque,
-                         WeightPerLength, at_least)
+                         MomentOfInertia, Number, Power, Pressure, RotationalSpeed, RotationalStiffness, Section,
+                         Torque, WeightPerLength, at_least)
 
 
 class Geometry(Section):
@@ -374,6 +374,28 @@ class Deviations(Section):
                                    pitman_length_offset=self.pitman_length, arm_phase_offset=arm)
 
 
+class JointsConfig(Section):
+    """Rotational stiffness and clearance of the revolute pins of the real mechanism, across
+    their axes (default: rigid pins without clearance, as [Spatial7SK12])."""
+
+    crank_pin_stiffness: RotationalStiffness | None = Field(
+        default=None, gt=0, le=1e12, description="crank pins A, A1 with their studs [N·m/rad]; none: rigid")
+    equalizer_pin_stiffness: RotationalStiffness | None = Field(
+        default=None, gt=0, le=1e12, description="equalizer pins B, B1 and bearing [N·m/rad]; none: rigid")
+    crank_pin_clearance: Angle = Field(default=0.0, ge=0, le=0.05,
+                                       description="free tilt of the crank pins: radial clearance / width [rad]")
+    equalizer_pin_clearance: Angle = Field(default=0.0, ge=0, le=0.05,
+                                           description="free tilt of the equalizer pins: radial clearance / width [rad]")
+
+    def model(self) -> JointCompliance:
+        from ..core.beam.redundancy import JointCompliance
+
+        return JointCompliance(
+            math.inf if self.crank_pin_stiffness is None else self.crank_pin_stiffness,
+            math.inf if self.equalizer_pin_stiffness is None else self.equalizer_pin_stiffness,
+            self.crank_pin_clearance, self.equalizer_pin_clearance)
+
+
 class Rating(Section):
     """Ratings of the unit, completing or overriding what its designation gives ([API11E], [GOST5866])."""
 
@@ -412,6 +434,7 @@ class UnitConfig(Section):
     well: Well | None = None
     pitman_section: PitmanSectionConfig | None = None
     deviations: Deviations = Deviations()
+    joints: JointsConfig = JointsConfig()
 
     @field_validator("designation")
     @classmethod

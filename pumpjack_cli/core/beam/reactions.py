@@ -16,7 +16,7 @@ import numpy as np
 
 from .kinetostatics import Reactions, rational_mechanism
 from .masses import MassModel
-from .redundancy import JointMoments, PinTilts, PitmanSection, real_mechanism
+from .redundancy import JointCompliance, JointMoments, PinTilts, PitmanSection, real_mechanism
 from .spatial import SpatialLinkage, SpatialMotion
 
 _METHODS = ("rational", "real")
@@ -70,6 +70,7 @@ def joint_reactions(
     actual: SpatialLinkage | None = None,
     tilts: PinTilts = PinTilts(),
     section: PitmanSection | None = None,
+    joints: JointCompliance = JointCompliance(),
     weights: bool = True,
     inertia: bool = True,
 ) -> ReactionSolution:
@@ -96,6 +97,8 @@ def joint_reactions(
         ``real`` only: the pin-bore errors [rad].
     section : PitmanSection, optional
         ``real`` only (required): the pitman's elastic section [Pa, m², m⁴].
+    joints : JointCompliance
+        ``real`` only: stiffness [N·m/rad] and clearance [rad] of the pins (default rigid).
     weights, inertia : bool
         Include the links' weights, their inertia forces and moments.
 
@@ -121,6 +124,7 @@ def joint_reactions(
         if section is None:
             raise ValueError("the real mechanism needs the pitman's elastic section")
         motion, moments, reactions = real_mechanism(spatial, actual or spatial, tilts, section, masses, crank_angle,
-                                                    omega1, epsilon1, rod_load, weights=weights, inertia=inertia)
+                                                    omega1, epsilon1, rod_load, weights=weights, inertia=inertia,
+                                                    joints=joints)
         return ReactionSolution(motion, reactions, moments)
     raise ValueError(f"unknown mechanism model {method!r}; use one of {', '.join(_METHODS)}")
