@@ -141,6 +141,9 @@ class JointCompliance:
     equalizer_pin_clearance: float = 0.0
 
 
+#: Crank angles solved at once by :func:`real_mechanism` (longer grids go in chunks).
+CHUNK = 1024
+
 #: Iterations of the active-set solution of the joints' dead bands at most.
 MAX_CONTACT_ITERATIONS = 50
 #: Weights of the moment in the primal-dual active-set update lambda + step M / max h_ii,
@@ -304,11 +307,40 @@ def _equilibrium(sm: SpatialMotion, bases: dict[str, np.ndarray]) -> np.ndarray:
     return e
 
 
+def _self_stress(e: np.ndarray, f: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """A particular solution of E X = f (N, 28) and the self-stress states, an orthonormal basis
+    of the null space of E (N, 28, 28 - rank).
+
+    QR of E^T (rows of E taken in order): E^T = Q R, so with rank 24 the null space is
+    spanned by the last four columns of Q and X = Q_1 R_1^-T f. A row of E that depends
+    on the rows before it shows as a vanishing diagonal element of R (the equalizer's
+    spin about its pin line with parallel pins, rank 23); found at the first crank angle,
+    it is dropped (the system is consistent, so the row adds nothing) before the batched
+    QR. If any crank angle then still shows a vanishing pivot, the singular value
+    decomposition serves instead.
+    """
+    rows = np.arange(e.shape[1])
+    first = np.abs(np.diag(np.linalg.qr(e[0].T, mode="r")))
+    weak = np.flatnonzero(first < 1e-10 * first.max())
+    rows = np.delete(rows, weak)
+    q, r = np.linalg.qr(np.swapaxes(e[:, rows, :], 1, 2), mode="complete")
+    rank = rows.size
+    pivots = np.abs(np.einsum("nii->ni", r[:, :rank, :rank]))
+    if np.any(pivots < 1e-10 * np.max(pivots, axis=-1, keepdims=True)):
+        u_svd, sing, vh = np.linalg.svd(e)
+        rank = int(np.max(np.sum(sing > 1e-10 * sing[:, :1], axis=-1)))
+        x_p = np.einsum("nji,nj->ni", vh[:, :rank], np.einsum("nji,nj->ni", u_svd[:, :, :rank], f) / sing[:, :rank])
+        return x_p, np.swapaxes(vh[:, rank:], 1, 2)
+    z = np.linalg.solve(np.swapaxes(r[:, :rank, :rank], 1, 2), f[:, rows][..., None])[..., 0]
+    return np.einsum("nij,nj->ni", q[:, :, :rank], z), q[:, :, rank:]
+
+
 def _pitman_energy(
     sm: SpatialMotion, pin: str, top: str, force_name: str, moment_name: str, loads: LinkLoads,
     bases: dict[str, np.ndarray], section: PitmanSection,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Q (N, 28, 28) and q (N, 28) of one pitman's complementary energy U* = X.QX/2 + q.X + c."""
+    """Q (N, 5, 5) and q (N, 5) of one pitman's complementary energy U* = X.QX/2 + q.X + c in the
+    five unknowns it depends on: the force at its crank pin (3) and the joint moment there (2)."""
     n_pts = sm.crank_angle.size
     a, b = getattr(sm, pin), getattr(sm, top)
     axis, c_dir, t_dir = _chord_frame(b, a)
@@ -319,18 +351,17 @@ def _pitman_energy(
                            1 / (section.youngs_modulus * section.inplane_inertia),
                            1 / (section.youngs_modulus * section.outofplane_inertia)])
     directions = np.stack([axis, axis, c_dir, t_dir], axis=1)  # (N, 4, 3): N, T, M_c, M_t
-    q_mat = np.zeros((n_pts, _N_UNKNOWNS, _N_UNKNOWNS))
-    q_vec = np.zeros((n_pts, _N_UNKNOWNS))
-    fc, mc = _column(force_name), _column(moment_name)
+    q_mat = np.zeros((n_pts, 5, 5))
+    q_vec = np.zeros((n_pts, 5))
     for start, stop, loaded in ((np.zeros(n_pts), x_s, 0.0), (x_s, length, 1.0)):
         for weight, where in ((1 / 6, start), (4 / 6, 0.5 * (start + stop)), (1 / 6, stop)):
             p = a + where[:, None] * axis
             # cut face of the piece [0, x]: F = -F_A - loaded F_s; M = -M_A - (A - P) x F_A - loaded (M_s + (S - P) x F_s)
-            g_force = np.zeros((n_pts, 3, _N_UNKNOWNS))
-            g_force[:, :, fc:fc + 3] = -np.eye(3)
-            g_moment = np.zeros((n_pts, 3, _N_UNKNOWNS))
-            g_moment[:, :, mc:mc + 2] = -bases[moment_name]
-            g_moment[:, :, fc:fc + 3] = -skew(a - p)
+            g_force = np.zeros((n_pts, 3, 5))
+            g_force[:, :, :3] = -np.eye(3)
+            g_moment = np.zeros((n_pts, 3, 5))
+            g_moment[:, :, 3:] = -bases[moment_name]
+            g_moment[:, :, :3] = -skew(a - p)
             h_force = -loaded * load_force
             h_moment = -loaded * (load_moment + cross(load_point - p, load_force))
             g = np.concatenate([np.einsum("nk,nkj->nj", directions[:, 0], g_force)[:, None],
@@ -433,6 +464,13 @@ def real_mechanism(
     >>> bool(np.allclose(real.r12, rational.r12, atol=1e-6) and np.allclose(moments.m12, 0.0, atol=1e-6))
     True
     """
+    theta = np.asarray(crank_angle, dtype=float)
+    if theta.size > CHUNK:  # bounded memory: about 50 kB per crank angle while it is solved
+        per = [np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (omega1, epsilon1, rod_load)]
+        parts = [real_mechanism(ideal, actual, tilts, section, masses, theta[k:k + CHUNK],
+                                *(v[k:k + CHUNK] for v in per), weights=weights, inertia=inertia, joints=joints)
+                 for k in range(0, theta.size, CHUNK)]
+        return tuple(_joined([part[i] for part in parts]) for i in range(3))
     ideal_motion = spatial_motion(ideal, crank_angle, omega1, epsilon1)
     sm = spatial_motion(actual, crank_angle, omega1, epsilon1)
     loads = applied_loads(actual, masses, sm, rod_load, weights=weights, inertia=inertia)
@@ -441,10 +479,7 @@ def real_mechanism(
     e = _equilibrium(sm, bases)
     f = -np.concatenate([np.concatenate([link.resultant(), link.moment_about_origin()], axis=-1)
                          for link in (loads.pitman2, loads.pitman3, loads.equalizer, loads.beam)], axis=-1)
-    u_svd, sing, vh = np.linalg.svd(e)
-    rank = int(np.max(np.sum(sing > 1e-10 * sing[:, :1], axis=-1)))
-    x_p = np.einsum("nji,nj->ni", vh[:, :rank], np.einsum("nji,nj->ni", u_svd[:, :, :rank], f) / sing[:, :rank])
-    null = np.swapaxes(vh[:, rank:], 1, 2)  # (N, 28, 28 - rank): self-stress states
+    x_p, null = _self_stress(e, f)
 
     q_mat, q_vec = np.zeros((crank_angle.size, _N_UNKNOWNS, _N_UNKNOWNS)), np.zeros((crank_angle.size, _N_UNKNOWNS))
     work = np.zeros((crank_angle.size, _N_UNKNOWNS))
@@ -453,7 +488,9 @@ def real_mechanism(
         ("pin_a1", "pin_b1", "r13", "m13", "m34", loads.pitman3, (a3, u3)),
     ):
         qm, qv = _pitman_energy(sm, pin, top, force_name, m_pin, link, bases, section)
-        q_mat, q_vec = q_mat + qm, q_vec + qv
+        used = np.r_[_column(force_name):_column(force_name) + 3, _column(m_pin):_column(m_pin) + 2]
+        q_mat[:, used[:, None], used[None, :]] += qm
+        q_vec[:, used] += qv
         mu_a, mu_b = _misfit(ideal_motion, sm, pin, top, *axes)
         # work of the joint moments on the pitman ends through the misfit: +M_pin at A, -M_top at B
         work[:, _column(m_pin):_column(m_pin) + 2] = np.einsum("nki,nk->ni", bases[m_pin], mu_a)
@@ -615,3 +652,16 @@ def _bounded_descent(h: np.ndarray, regular: np.ndarray, c: np.ndarray, clearanc
             break
         state = new_state
     return best, MAX_CONTACT_ITERATIONS + int(found.nit)
+
+
+def _joined(parts: list):
+    """Results of consecutive chunks of crank angles as one: arrays joined along the crank
+    angles, nested results joined field by field, anything else taken from the first."""
+    first = parts[0]
+    if dataclasses.is_dataclass(first):
+        return dataclasses.replace(first, **{f.name: _joined([getattr(p, f.name) for p in parts])
+                                             for f in dataclasses.fields(first)})
+    if isinstance(first, np.ndarray) and first.ndim >= 1:
+        return np.concatenate(parts, axis=0)
+    return first
+
