@@ -100,6 +100,12 @@ def _normalise_unit(text: str) -> str:
     return text.replace("²", "2").replace("³", "3").replace("^", "").replace("°", "deg")
 
 
+def _a(dimension: str) -> str:
+    """The dimension's name with its indefinite article ("a length", "an angle")."""
+    name = dimension.replace("_", " ")
+    return f"{'an' if name[0] in 'aeiou' else 'a'} {name}"
+
+
 def parse_quantity(value: object, dimension: str, require_unit: bool = False) -> float:
     """Convert a config value of the given dimension to an SI float.
 
@@ -148,7 +154,7 @@ def parse_quantity(value: object, dimension: str, require_unit: bool = False) ->
     if unit not in units:
         for other, table in INPUT_UNITS.items():
             if unit in table:
-                raise ValueError(f"{value!r} is a {other.replace('_', ' ')}, not a {dimension.replace('_', ' ')}")
+                raise ValueError(f"{value!r} is {_a(other)}, not {_a(dimension)}")
         raise ValueError(f"unknown unit {match.group(2)!r} for a {dimension.replace('_', ' ')}; use one of {', '.join(units)}")
     return number * units[unit]
 
