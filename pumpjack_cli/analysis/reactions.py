@@ -97,19 +97,11 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: s
     return Result(title, tuple(summary), tuple(columns), panels)
 
 
-def deviations(unit, given: dict[str, float]):
-    """The unit's [deviations] with the values given on the command line (SI) replacing them."""
+def with_options(section, given: dict):
+    """A unit's section ([deviations], [joints]) with the values given on the command line (SI)
+    replacing its own, validated by its schema (a bad value named by its option)."""
     try:
-        return type(unit.deviations).model_validate(unit.deviations.model_dump() | given)
-    except ValidationError as exc:
-        first = exc.errors()[0]
-        raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
-
-
-def joint_settings(unit, given: dict[str, float]):
-    """The unit's [joints] with the values given on the command line (SI) replacing them."""
-    try:
-        return type(unit.joints).model_validate(unit.joints.model_dump() | given)
+        return type(section).model_validate(section.model_dump() | given)
     except ValidationError as exc:
         first = exc.errors()[0]
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
@@ -129,8 +121,8 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     :data:`REDUNDANCY_SUMMARY_STEPS`, refined between its points, whatever ``steps``.
     """
     require(unit, "pitman_section", "the real mechanism needs the pitman's stiffness")
-    errors = deviations(unit, given_deviations)
-    pins = joint_settings(unit, given_joints or {})
+    errors = with_options(unit.deviations, given_deviations)
+    pins = with_options(unit.joints, given_joints or {})
     masses = mass_model(unit)
     ideal = unit.geometry.spatial(unit.name)
     actual = errors.apply(ideal)
