@@ -17,10 +17,12 @@ VERBS = ("run", "export", "trend")
 
 
 class BatchGroup(TyperGroup):
-    """`pumpjack batch MANIFEST ...` is `pumpjack batch run MANIFEST ...`."""
+    """`pumpjack batch MANIFEST ...` is `pumpjack batch run MANIFEST ...`; `pumpjack batch` alone shows the help."""
 
     def parse_args(self, ctx, args):
-        if args and args[0] not in VERBS and not args[0].startswith("-"):
+        if not args:
+            args = ["--help"]
+        elif args[0] not in VERBS and not args[0].startswith("-"):
             args = ["run", *args]
         return super().parse_args(ctx, args)
 
