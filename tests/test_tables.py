@@ -16,6 +16,7 @@ RUNS = [
     ("inertia-error", "unb-600a", "--support-friction"),
     ("torque", "sk8-3.5-4000", "--card", SK8_CARD),
     ("downhole", "sk8-3.5-4000", "--card", SK8_CARD),
+    ("predict", "c-80d-133-48", "--spm", "8", "--damping", "0.1", "--samples", "64"),
 ]
 
 
