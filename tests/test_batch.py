@@ -254,3 +254,24 @@ def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, a
     code, out, err = run_cli("batch", manifest(tmp_path, rows), *extra, *argv)
     assert code == 2 and out == "" and err.count("\n") == 1 and fragment in err, err
     assert not (tmp_path / "r.sqlite").exists() or "--store" in argv
+
+
+def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_path, monkeypatch):
+    """A bug that raises on one card (simulated) is recorded as that card's error; the others run."""
+    from pumpjack_cli.analysis import batch
+
+    rows = field(tmp_path, 3)
+    real = batch._CardOnce.read
+
+    def faulty(self, linkage):
+        if self.name == rows[1][2]:
+            raise ZeroDivisionError("simulated")
+        return real(self, linkage)
+
+    monkeypatch.setattr(batch._CardOnce, "read", faulty)
+    store = tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
+    assert code == 0, err
+    statuses = dict(sqlite3.connect(store).execute("SELECT card || analysis, status || error FROM results"))
+    assert sum(v.startswith("error") for v in statuses.values()) == 2
+    assert all("ZeroDivisionError: simulated" in v for v in statuses.values() if v.startswith("error"))

@@ -296,6 +296,9 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
             outcomes.append(Outcome(analysis, "error", " ".join(str(exc).split()), _lines(captured), {}))
         except MemoryError:
             outcomes.append(Outcome(analysis, "error", "not enough memory for this card", _lines(captured), {}))
+        except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
+            outcomes.append(Outcome(analysis, "error", f"internal error ({type(exc).__name__}: "
+                                    f"{' '.join(str(exc).split())}); please report it", _lines(captured), {}))
     return outcomes
 
 
