@@ -452,7 +452,12 @@ def _on_dask(address: str, chunks, settings: dict, store_chunk) -> None:
     try:
         futures = [client.submit(analyse_chunk, chunk, settings, pure=False) for chunk in chunks]
         for future in as_completed(futures):
-            store_chunk(future.result())
+            try:
+                results = future.result()
+            except Exception as exc:  # noqa: BLE001 - a lost worker or a broken cluster, not a card
+                raise PumpjackError(f"--scheduler {address}: a task failed ({type(exc).__name__}: {exc}); the cards "
+                                    f"stored so far are kept, run the same command again to go on") from None
+            store_chunk(results)
     finally:
         client.close()
 
