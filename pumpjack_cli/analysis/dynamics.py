@@ -7,7 +7,7 @@ from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardSource
-from .inputs import crank_columns
+from .inputs import crank_columns, extreme_scalars
 from .machine import machine
 
 #: Well-model forces of the summary: name, description.
@@ -34,7 +34,7 @@ def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
                "uniform crank speed at the motor's rated speed ([SK8Rotation2013]: 1.1422 1/s)"),
         Scalar("start_crank_speed", "angular_velocity", s.start_speed, "crank speed at the start of the upstroke"),
     ]
-    for label, extreme, quantity, what in (
+    summary += extreme_scalars((
         ("max_crank_speed", s.max_speed, "angular_velocity", "max crank speed omega1"),
         ("min_crank_speed", s.min_speed, "angular_velocity", "min crank speed omega1"),
         ("max_crank_acceleration", s.max_acceleration, "angular_acceleration", "max crank acceleration epsilon1"),
@@ -44,9 +44,7 @@ def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
         ("max_motor_power", s.max_power, "power", "max motor power"),
         ("min_motor_power", s.min_power, "power", "min motor power (negative: generating)"),
         ("max_static_torque", s.peak_static_torque, "torque", "max crank torque of load and weights without inertia"),
-    ):
-        summary.append(Scalar(label, quantity, extreme.value, what))
-        summary.append(Scalar(f"{label}_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {what}"))
+    ))
     c = s.convergence
     summary += [
         Scalar("speed_fluctuation", "percent", s.speed_fluctuation, "coefficient of speed fluctuation (max - min) / mean"),

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from ..errors import PumpjackError
 from ..quantities import parse_quantity
-from ..results import Column
+from ..results import Column, Scalar
 
 
 def require(unit, section: str, purpose: str) -> None:
@@ -37,3 +37,14 @@ def crank_columns(crank_angle, time, speed, acceleration) -> list[Column]:
         Column("crank_speed", "angular_velocity", "crank angular velocity omega1", speed),
         Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", acceleration),
     ]
+
+
+def extreme_scalars(rows) -> list[Scalar]:
+    """Summary values of extremes and where they occur: for each (name, extreme with
+    ``value`` and ``crank_angle`` [rad], quantity, meaning), ``name`` and ``name_crank_angle``."""
+    found = []
+    for name, extreme, quantity, what in rows:
+        found += [Scalar(name, quantity, extreme.value, what),
+                  Scalar(f"{name}_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {what}")]
+    return found
+

@@ -24,7 +24,7 @@ from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
-from .inputs import crank_columns, crank_speed, require
+from .inputs import crank_columns, crank_speed, extreme_scalars, require
 from .machine import machine
 from .rods import goodman_panel, pump, rods, taper_summary, well_of
 from .torque import SUMMARY_STEPS, card_torque
@@ -198,7 +198,7 @@ def coupled_summary(s) -> list[Scalar]:
     """The machine's side of a coupled solution (:class:`~pumpjack_cli.core.dynamics.coupled.CoupledSummary`)."""
     rows = [Scalar("mean_crank_speed", "angular_velocity", s.mean_speed, "mean crank speed, 2 pi / cycle time"),
             Scalar("speed_fluctuation", "percent", s.speed_fluctuation, "(max - min) / mean crank speed")]
-    for label, extreme, quantity, what in (
+    rows += extreme_scalars((
         ("max_crank_speed", s.max_speed, "angular_velocity", "max crank speed"),
         ("min_crank_speed", s.min_speed, "angular_velocity", "min crank speed"),
         ("max_crank_acceleration", s.max_acceleration, "angular_acceleration", "max crank acceleration"),
@@ -207,9 +207,7 @@ def coupled_summary(s) -> list[Scalar]:
         ("min_motor_torque", s.min_motor_torque, "torque", "min motor torque (negative: generating)"),
         ("max_inertia_torque", s.peak_inertia_torque, "torque", "max inertia torque of links and drive"),
         ("min_inertia_torque", s.min_inertia_torque, "torque", "min inertia torque of links and drive"),
-    ):
-        rows += [Scalar(label, quantity, extreme.value, what),
-                 Scalar(f"{label}_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {what}")]
+    ))
     rows += [Scalar("energy_per_cycle", "energy", s.motor_work, "energy the motor delivers per cycle"),
              Scalar("rod_work_per_cycle", "energy", s.polished_rod_work, "work of the polished-rod load per cycle"),
              Scalar("machine_energy_residual", "ratio", s.energy_residual,
