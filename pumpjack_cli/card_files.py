@@ -58,6 +58,11 @@ MAX_POINTS = 100_000
 MAX_LINES = 2 * MAX_POINTS
 MAX_COLUMNS = 64
 MAX_BYTES = 10_000_000
+#: Largest magnitude of a load [N] and a position [m] in a card, far beyond any pumping
+#: unit (the largest API Spec 11E structure rating is below 0.3 MN, the longest stroke
+#: below 10 m): a larger number is a wrong unit or a corrupt file, refused by its line
+#: before it can overflow the computation.
+LIMITS = {"load": (1e7, "10 MN"), "position": (1e3, "1 km")}
 
 #: Units of each column's dimension: lower-case spelling -> factor to SI.
 _UNITS = {
@@ -274,6 +279,21 @@ def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.
     return values
 
 
+def _bounded(values: np.ndarray, kind: str, lines: np.ndarray, cells: list[str], unit: str,
+             source: str) -> np.ndarray:
+    """The column's SI values if none is beyond its kind's :data:`LIMITS`, else a one-line
+    error at the first culprit."""
+    if kind not in LIMITS:
+        return values
+    limit, shown = LIMITS[kind]
+    beyond = np.abs(values) > limit
+    if beyond.any():
+        i = int(np.argmax(beyond))
+        raise CardError(f"{source}: line {lines[i]}: {kind} {cells[i].strip()[:40]} {unit} is beyond {shown}: "
+                        f"not a polished-rod {kind}; check the column's unit")
+    return values
+
+
 def _is_float(cell: str) -> bool:
     try:
         float(cell)
@@ -321,7 +341,8 @@ def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] |
     columns = {kind: flat[j::len(cells)] for kind, (j, _, _) in used.items()}
     if delimiter != ",":
         columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
-    values = {kind: _Column(_numbers(columns[kind], kind, numbers, source) * factor, unit, factor)
+    values = {kind: _Column(_bounded(_numbers(columns[kind], kind, numbers, source) * factor, kind, numbers,
+                                     columns[kind], unit, source), unit, factor)
               for kind, (_, unit, factor) in used.items()}
     if len(rows) < MIN_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")

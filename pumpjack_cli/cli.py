@@ -17,7 +17,7 @@ import typer
 from typer.core import TyperGroup
 
 from . import __version__
-from .errors import PumpjackError
+from .errors import PumpjackError, take_warnings
 
 #: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
 #: The summary is the first line of the function's docstring (a test keeps them equal).
@@ -107,12 +107,15 @@ def main(argv: list[str] | None = None) -> int:
     """Run the CLI; return the exit code (console-script entry point).
 
     Floating-point warnings are not printed: a result that is not finite is refused by
-    the renderer with one line naming it.
+    the renderer with one line naming it. The run's own warnings
+    (:func:`~pumpjack_cli.errors.warn`) follow on stderr when it succeeds; a failed run
+    prints only its error line.
     """
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
     command = typer.main.get_command(app)
+    take_warnings()
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)
@@ -134,6 +137,8 @@ def main(argv: list[str] | None = None) -> int:
         return _fail("not enough memory for this computation: use fewer --steps or a smaller input")
     except KeyboardInterrupt:
         return 130
+    for warning in take_warnings():
+        sys.stderr.write(f"pumpjack: warning: {warning}\n")
     return code if isinstance(code, int) else 0
 
 

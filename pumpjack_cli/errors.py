@@ -41,3 +41,21 @@ class CardError(PumpjackError, ValueError):
 
 class PredictionError(PumpjackError, ValueError):
     """A well whose cards cannot be predicted: rod string, pump or fluid data, or a solve that does not converge."""
+
+
+#: Warnings of the run in progress (oldest first). The CLI prints them once the run has
+#: succeeded and drops them when it fails, so that a failure is one line on stderr; a
+#: batch run files them with each card's outcome.
+_WARNINGS: list[str] = []
+
+
+def warn(message: str) -> None:
+    """Note a warning for the user: one line, runs of whitespace collapsed."""
+    _WARNINGS.append(" ".join(message.split()))
+
+
+def take_warnings() -> list[str]:
+    """The warnings noted since the last call, oldest first; clears them."""
+    taken = list(_WARNINGS)
+    _WARNINGS.clear()
+    return taken

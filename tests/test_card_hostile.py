@@ -75,6 +75,11 @@ BAD_CELLS = {"abc": "'abc' is not a number", "": "is empty", "nan": "is nan, not
 CASES: list[tuple[str, str | bytes, str]] = []
 CASES += [(f"cell-{kind}-line{line_of(r)}-{value or 'empty'}", with_cell(r, j, value), f"line {line_of(r)}: {kind} {what}")
           for r in PICKS for j, kind in enumerate(KINDS) for value, what in BAD_CELLS.items()]
+CASES += [(f"absurd-{kind}-{value}-line{line_of(r)}", with_cell(r, j, value), f"line {line_of(r)}: {kind} {value} {unit} is beyond {shown}")
+          for r in PICKS for j, kind, value, unit, shown in ((1, "position", "1001", "m", "1 km"),
+                                                             (1, "position", "-2e5", "m", "1 km"),
+                                                             (2, "load", "1.0001e4", "kN", "10 MN"),
+                                                             (2, "load", "-1e300", "kN", "10 MN"))]
 CASES += [(f"row-short-line{line_of(r)}", card([*ROWS[:r], ",".join(cells(r)[:2]), *ROWS[r + 1:]]),
            f"line {line_of(r)}: 2 values, the header has 3") for r in PICKS]
 CASES += [(f"row-long-line{line_of(r)}", card([*ROWS[:r], ROWS[r] + ",7", *ROWS[r + 1:]]),

@@ -348,3 +348,27 @@ def test_no_floating_point_warning_reaches_stderr(run_cli, tmp_path):
     code, out, err = run_cli("kinematics", unit, "--steps", "8", "-f", "csv")
     assert "RuntimeWarning" not in err and (code == 0 or err.count("\n") == 1)
     assert not any(math.isnan(float(v)) for v in out.splitlines()[1].split(",")) if code == 0 else True
+
+
+def _reversed_card(tmp_path: Path) -> Path:
+    """The SK8 sample card with its rows in reverse time order (read with one warning)."""
+    lines = [line for line in SK8_CARD.read_text(encoding="utf-8").splitlines() if not line.startswith("#")]
+    card = tmp_path / "reversed.csv"
+    card.write_text("\n".join([lines[0], *lines[:0:-1]]) + "\n", encoding="utf-8")
+    return card
+
+
+def test_warnings_follow_a_successful_run(run_cli, tmp_path):
+    """A reader's warning reaches stderr when the run succeeds, after nothing else."""
+    card = _reversed_card(tmp_path)
+    code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", card, "-f", "csv")
+    assert code == 0 and out
+    assert err == f"pumpjack: warning: {card}: rows listed in reverse time order; read in time order\n"
+
+
+def test_a_failed_run_prints_only_its_error(run_cli, tmp_path):
+    """The same card's warning is noted before --spm is found to contradict its time
+    stamps; the failure is still one line on stderr."""
+    card = _reversed_card(tmp_path)
+    code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", card, "--spm", "5", "-f", "csv")
+    one_line_error(code, out, err, f"--spm 5 disagrees with the time stamps of {card}")

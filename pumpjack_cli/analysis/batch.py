@@ -21,11 +21,10 @@ import json
 import math
 import os
 import tomllib
-from contextlib import redirect_stderr
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from ..errors import PumpjackError
+from ..errors import PumpjackError, take_warnings
 from ..quantities import parse_quantity
 from ..results import check_finite, converted_summary
 from ..text_input import read_text
@@ -282,28 +281,28 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     card = _CardOnce(job.card)
     outcomes = []
     for analysis in options.analyses:
-        captured = io.StringIO()
+        take_warnings()
         try:
-            with redirect_stderr(captured):
-                unit = _unit(job)
-                if analysis == "torque":
-                    result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
-                else:
-                    result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
-                check_finite(result)
-            outcomes.append(Outcome(analysis, "ok", "", _lines(captured), converted_summary(result, "si")))
+            unit = _unit(job)
+            if analysis == "torque":
+                result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
+            else:
+                result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
+            check_finite(result)
+            outcomes.append(Outcome(analysis, "ok", "", _noted(), converted_summary(result, "si")))
         except PumpjackError as exc:
-            outcomes.append(Outcome(analysis, "error", " ".join(str(exc).split()), _lines(captured), {}))
+            outcomes.append(Outcome(analysis, "error", " ".join(str(exc).split()), _noted(), {}))
         except MemoryError:
-            outcomes.append(Outcome(analysis, "error", "not enough memory for this card", _lines(captured), {}))
+            outcomes.append(Outcome(analysis, "error", "not enough memory for this card", _noted(), {}))
         except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
             outcomes.append(Outcome(analysis, "error", f"internal error ({type(exc).__name__}: "
-                                    f"{' '.join(str(exc).split())}); please report it", _lines(captured), {}))
+                                    f"{' '.join(str(exc).split())}); please report it", _noted(), {}))
     return outcomes
 
 
-def _lines(captured: io.StringIO) -> str:
-    return " | ".join(line.removeprefix("pumpjack: warning: ") for line in captured.getvalue().splitlines())
+def _noted() -> str:
+    """The warnings of the analysis just run, in one field."""
+    return " | ".join(take_warnings())
 
 
 def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[int, list[dict]]]:

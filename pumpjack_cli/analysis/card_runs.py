@@ -9,7 +9,6 @@ reports do not depend on ``--steps``.
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,7 +20,7 @@ from ..core.beam.linkage import Linkage
 from ..core.beam.torque import crank_rates_from_time
 from ..core.dynamics.periodic import steady_state
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import PumpjackError
+from ..errors import PumpjackError, warn
 from ..quantities import parse_quantity
 from .inputs import crank_speed
 from .machine import machine
@@ -49,11 +48,11 @@ class CardSource:
     columns: str | None = None
 
     def read(self, linkage: Linkage) -> CardReading:
-        """The card on the unit's crank-angle axis; the reader's warnings go to stderr."""
+        """The card on the unit's crank-angle axis; the reader's warnings are noted (:func:`~pumpjack_cli.errors.warn`)."""
         mapping = None if self.columns is None else parse_card_columns(self.columns)
         reading = read_card(self.path, linkage, self.units, columns=mapping)
         for warning in reading.warnings:
-            sys.stderr.write(f"pumpjack: warning: {warning}\n")
+            warn(warning)
         return reading
 
     @property

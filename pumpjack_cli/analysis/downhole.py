@@ -10,13 +10,12 @@ rods for stresses and Goodman loading ([API11BR]).
 from __future__ import annotations
 
 import math
-import sys
 
 import numpy as np
 
 from ..core.rods.analysis import card_work, displacement_rate, intake_pressure, summarise_pump_card, taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
-from ..errors import DownholeError, PumpjackError
+from ..errors import DownholeError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
 from .rods import goodman_panel, pressures, rods, taper_summary, well_of
@@ -35,8 +34,8 @@ def damping_factor(unit, given: float | None, rod_string, card, method: str) -> 
         return well.damping_factor, "well.damping_factor"
     found = pressures(unit)
     if found is None:
-        sys.stderr.write(f"pumpjack: warning: unit {unit.name}: no fluid level or intake pressure for the energy "
-                         f"balance; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)\n")
+        warn(f"unit {unit.name}: no fluid level or intake pressure for the energy balance; damping factor "
+             f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
         return DEFAULT_DAMPING_FACTOR, "assumed"
     fluid_load = (found[0] - found[1]) * math.pi * well.plunger_diameter**2 / 4.0
     nu = damping_from_fluid_load(rod_string, card.period, card.position, card.load, fluid_load,

@@ -11,7 +11,6 @@ stress and Goodman summary of `pumpjack downhole` ([API11BR]).
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -21,7 +20,7 @@ from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import PumpjackError
+from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
 from .inputs import crank_columns, crank_speed, extreme_scalars, require
@@ -94,8 +93,8 @@ def damping_factor(unit, given: float | None) -> float:
         return given
     if unit.well.damping_factor is not None:
         return unit.well.damping_factor
-    sys.stderr.write(f"pumpjack: warning: unit {unit.name}: no well.damping_factor; damping factor "
-                     f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)\n")
+    warn(f"unit {unit.name}: no well.damping_factor; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed "
+         f"(give --damping)")
     return DEFAULT_DAMPING_FACTOR
 
 
@@ -133,9 +132,8 @@ def predicted(unit, spm: float | None, rotation: str, samples: int, damping: flo
                            fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
     margin = both.summary.breakdown_torque_margin
     if margin < 1.0:
-        sys.stderr.write(f"pumpjack: warning: unit {unit.name}: the motor would need {1.0 / margin:.3g} x its "
-                         f"pull-out torque; the linear motor characteristic is used beyond its validity (the "
-                         f"motor would stall)\n")
+        warn(f"unit {unit.name}: the motor would need {1.0 / margin:.3g} x its pull-out torque; the linear motor "
+             f"characteristic is used beyond its validity (the motor would stall)")
     return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu)
 
 

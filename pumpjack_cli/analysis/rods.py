@@ -10,7 +10,6 @@ other a sinker bar, unless its ``kind`` says otherwise.
 from __future__ import annotations
 
 import math
-import sys
 
 import numpy as np
 
@@ -19,7 +18,7 @@ from ..core.rods.pump import Pump, pump_pressures, tubing_stiffness
 from ..core.rods.string import RodString
 from ..core.rods.tables import RodSection, rod_string, steel_rod
 from ..core.rods.analysis import goodman_allowable_stress, goodman_loading
-from ..errors import DownholeError, PumpjackError
+from ..errors import DownholeError, PumpjackError, warn
 from ..results import Curve, Panel, Scalar
 from .inputs import require
 
@@ -90,8 +89,7 @@ def taper_summary(string, loads, service_factor: float) -> list[Scalar]:
     found = []
     graded = not np.isnan(string.tensile_strength).any()
     if not graded:
-        sys.stderr.write("pumpjack: warning: a rod section has no grade or tensile_strength: the Goodman loading "
-                         "is left out\n")
+        warn("a rod section has no grade or tensile_strength: the Goodman loading is left out")
     goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
     for i, name in enumerate(string.names or [f"taper {i + 1}" for i in range(len(string.length))], start=1):
         for end in ("top", "bottom"):

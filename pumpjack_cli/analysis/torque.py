@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import functools
 import math
-import sys
 from dataclasses import dataclass
 
 import numpy as np
@@ -29,7 +28,7 @@ from ..core.beam.torque import (ExactTorqueBasis, beam_group_inertia, crank_grou
                                 permissible_load, torque_components, torque_methods)
 from ..core.designations import parse_designation
 from ..core.sampling import extremes, peak
-from ..errors import PumpjackError
+from ..errors import PumpjackError, warn
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
 from .inputs import crank_columns
@@ -213,7 +212,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
             summary.append(Scalar("recommended_counterweight_mass", "mass", placement.mass,
                                   "mass of all blocks at the present radius that gives the recommended M"))
         if placement.note:
-            sys.stderr.write(f"pumpjack: warning: {placement.note}\n")
+            warn(placement.note)
     base = current if current is not None else recommended
     clf = cyclic_load_factor(base, dt)
     mean = float(np.sum(base * dt) / np.sum(dt))
