@@ -68,6 +68,13 @@ def finite(value: float | None) -> float | None:
     return value
 
 
+def positive(value: float | None) -> float | None:
+    """A finite float option above 0 (typer's ranges include their ends)."""
+    if finite(value) is not None and value <= 0.0:
+        raise typer.BadParameter(f"{value} is not above 0")
+    return value
+
+
 SpmOption = Annotated[float | None, typer.Option(
     help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60, callback=finite)]
 CardSpmOption = Annotated[float | None, typer.Option(

@@ -67,6 +67,9 @@ def with_overrides(unit, overrides: WellOverrides):
     (a value out of range is refused naming its option)."""
     from pydantic import ValidationError
 
+    if overrides.submergence is not None and overrides.intake_pressure is not None:
+        raise PumpjackError("--submergence and --intake-pressure: give one of them; each sets the pump's intake "
+                            "pressure")
     well = well_of(unit)
     data = well.model_dump()
     for name, (field, _) in _OVERRIDES.items():

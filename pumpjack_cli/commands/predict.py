@@ -11,7 +11,7 @@ from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
-                       UnitSystem, finite, quantity)
+                       UnitSystem, finite, positive, quantity)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
 
@@ -32,8 +32,9 @@ def predict(
         help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the crank speed from the "
              "machine's equation of motion solved together with the rods")] = Rotation.uniform,
     damping: Annotated[float | None, typer.Option(
-        help="Gibbs' dimensionless damping factor nu of the rods, 0 for none [default: the unit file's, else 0.05]",
-        min=0.0, max=2.0, callback=finite)] = None,
+        help="Gibbs' dimensionless damping factor nu of the rods, above 0 (undamped rods never settle to a "
+             "steady state) [default: the unit file's, else 0.05]",
+        max=2.0, callback=positive)] = None,
     submergence: Annotated[str | None, _well("fluid level above the pump, with its unit ('100 m')")] = None,
     intake_pressure: Annotated[str | None, _well("pump intake pressure, with its unit ('0.8 MPa')")] = None,
     tubing_head_pressure: Annotated[str | None, _well("tubing head pressure, with its unit ('10 bar')")] = None,
