@@ -163,6 +163,7 @@ def test_field_units(run):
     (("predict", "unb-600a"), "not a beam pumping unit"),
     (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--steps", "10"), "--steps"),
     (("dynamics", "sk8-3.5-4000", "--damping", "0.1"), "--damping"),
+    (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0"), "'--damping': 0.0 is not above 0"),
 ])
 def test_bad_options_are_one_line(run_cli, argv, fragment):
     code, out, err = run_cli(*argv, "-f", "csv")

@@ -14,7 +14,7 @@ from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..errors import PumpjackError
 from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
-                       UnitsOption, UnitSystem, finite)
+                       UnitsOption, UnitSystem, finite, positive)
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -42,8 +42,8 @@ def dynamics(
              "(damped wave equation, pump valves) solved together with the machine, on --steps time samples")
     ] = WellModel.rigid,
     damping: Annotated[float | None, typer.Option(
-        help="with --well-model wave: Gibbs' damping factor nu of the rods [default: the unit file's, else 0.05]",
-        min=0.0, max=2.0, callback=finite)] = None,
+        help="with --well-model wave: Gibbs' damping factor nu of the rods, above 0 [default: the unit file's, "
+             "else 0.05]", max=2.0, callback=positive)] = None,
     fmt: FormatOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
