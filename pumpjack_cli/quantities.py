@@ -84,6 +84,12 @@ _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "m
                   "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
                   "pressure": "MPa", "weight_per_length": "lbf/ft"}
 
+#: The SI unit every value of a dimension is converted to, as messages print it.
+SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "moment_of_inertia": "kg·m²",
+             "rotational_speed": "rad/s", "angle": "rad", "rotational_stiffness": "N·m/rad", "power": "W",
+             "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
+             "pressure": "Pa", "weight_per_length": "N/m"}
+
 _NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
 
 

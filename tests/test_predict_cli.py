@@ -151,6 +151,8 @@ def test_field_units(run):
 @pytest.mark.parametrize("argv, fragment", [
     (("predict", "c-114d-133-54", "--spm", "10", "--fillage", "0.8"), "--fillage: '0.8' has no unit"),
     (("predict", "c-114d-133-54", "--spm", "10", "--fillage", "150 %"), "--fillage"),
+    (("predict", "c-114d-133-54", "--spm", "10", "--fluid-density", "5 g/cm3"),
+     "--fluid-density: Input should be less than or equal to 2000 kg/m³; got 5000 kg/m³"),
     (("predict", "c-114d-133-54", "--spm", "10", "--submergence", "10 km"), "--submergence"),
     (("predict", "c-114d-133-54", "--spm", "10", "--fluid-density", "900"), "--fluid-density: '900' has no unit"),
     (("predict", "c-114d-133-54", "--spm", "10", "--intake-pressure", "-1 MPa"), "--intake-pressure"),

@@ -20,6 +20,7 @@ from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.sampling import crank_grid, cycle_period, uniform_time
+from ..config.files import error_message
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
@@ -86,7 +87,7 @@ def with_overrides(unit, overrides: WellOverrides):
         error = exc.errors()[0]
         field = str(error["loc"][0]) if error["loc"] else ""
         option = next((option for f, option in _OVERRIDES.values() if f == field), f"well.{field}")
-        raise PumpjackError(f"{option}: {error['msg']}") from None
+        raise PumpjackError(f"{option}: {error_message(error, type(well))}") from None
     return unit.model_copy(update={"well": changed})
 
 

@@ -7,6 +7,7 @@ from pydantic import ValidationError
 
 from ..core.beam.reactions import joint_reactions
 from ..core.sampling import extremes, peak
+from ..config.files import error_message
 from ..errors import PumpjackError
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
@@ -104,7 +105,7 @@ def with_options(section, given: dict):
         return type(section).model_validate(section.model_dump() | given)
     except ValidationError as exc:
         first = exc.errors()[0]
-        raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {first['msg']}") from None
+        raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {error_message(first, type(section))}") from None
 
 
 def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, rotation: str,

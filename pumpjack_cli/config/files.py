@@ -13,11 +13,14 @@ import importlib
 import json
 import os
 import tomllib
+import typing
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any, Callable
 
 from ..errors import ConfigError
+from ..quantities import SI_LABELS, parse_quantity
 from ..text_input import read_text
 from .geometry_names import linkage_of, slider_crank_of
 
@@ -128,16 +131,59 @@ def _parse_text(path: Path, text: str) -> Any:
     return data
 
 
-def format_validation_error(source: str, error) -> str:
-    """One line naming the file, the field and what is wrong with it (a pydantic ValidationError)."""
+#: pydantic's error types of a number outside a field's range.
+RANGE_ERRORS = ("greater_than", "greater_than_equal", "less_than", "less_than_equal")
+
+
+def _inside(annotation: Any) -> list[Any]:
+    """The types and metadata an annotation holds (unions, Annotated, tuples), flattened."""
+    found = [annotation]
+    for part in typing.get_args(annotation):
+        found += _inside(part)
+    return found
+
+
+def _dimension(model: Any, loc: tuple) -> str | None:
+    """The physical dimension of the field at ``loc`` of a unit-file model, if it is a quantity."""
+    names = [part for part in loc if isinstance(part, str)]
+    for depth, name in enumerate(names):
+        field = getattr(model, "model_fields", {}).get(name)
+        if field is None:
+            return None
+        parts = [*field.metadata, *_inside(field.annotation)]
+        if depth == len(names) - 1:
+            return next((part.func.keywords["dimension"] for part in parts
+                         if isinstance(getattr(part, "func", None), partial) and "dimension" in part.func.keywords),
+                        None)
+        model = next((part for part in parts if isinstance(part, type) and hasattr(part, "model_fields")), None)
+    return None
+
+
+def error_message(error: dict, model: Any = None) -> str:
+    """What is wrong, from one pydantic error of ``model``: a quantity out of range is
+    shown in SI with its unit ("... less than or equal to 20 m; got 72 m")."""
+    message = error["msg"].removeprefix("Value error, ")
+    if error["type"] == "extra_forbidden":
+        return "unknown key"
+    dimension = _dimension(model, error["loc"]) if error["type"] in RANGE_ERRORS else None
+    if dimension is None:
+        return message
+    try:
+        value = parse_quantity(error["input"], dimension)
+    except ValueError:
+        return message
+    unit = SI_LABELS[dimension]
+    return f"{message} {unit}; got {value:.6g} {unit}".replace(" ;", ";")
+
+
+def format_validation_error(source: str, error, model: Any = None) -> str:
+    """One line naming the file, the field and what is wrong with it (a pydantic
+    ValidationError of ``model``)."""
     first = error.errors()[0]
     where = ".".join(str(part) for part in first["loc"]) or "(top level)"
-    message = first["msg"].removeprefix("Value error, ")
-    if first["type"] == "extra_forbidden":
-        message = "unknown key"
     more = len(error.errors()) - 1
     tail = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
-    return f"{source}: {where}: {message}{tail}"
+    return f"{source}: {where}: {error_message(first, model)}{tail}"
 
 
 def _kind(data: Any, source: str) -> Kind:
@@ -159,7 +205,7 @@ def parse_unit(data: Any, source: str):
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise ConfigError(format_validation_error(source, exc)) from None
+        raise ConfigError(format_validation_error(source, exc, model)) from None
 
 
 def read_table(path: Path) -> Any:
