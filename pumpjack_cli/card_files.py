@@ -171,16 +171,21 @@ def _name_key(name: str) -> str:
     return re.sub(r"[\s.\-]+", "_", name.strip().replace("#", " no ")).strip("_")
 
 
-def _unit(unit: str | None, kind: str, default_units: str, where: str) -> tuple[str, float]:
-    """Unit label and factor to SI of a column of ``kind``; ``where`` names it in a message."""
+def _unit(unit: str | None, kind: str, default_units: str | None, where: str) -> tuple[str, float]:
+    """Unit label and factor to SI of a column of ``kind``; ``where`` names it in a message.
+    A column whose header names no unit takes ``default_units``' and is refused without them."""
     dimension = _KINDS[kind][1]
+    if unit is None and default_units is None:
+        si, field = _DEFAULT_UNITS["si"][dimension].replace("n", "N"), _DEFAULT_UNITS["field"][dimension]
+        raise CardError(f"{where} names no unit: write it in the header ({kind}_{si}, {kind.capitalize()} ({field})) "
+                        f"or give --card-units si or field")
     key = _DEFAULT_UNITS[default_units][dimension] if unit is None else unit.strip().lower().rstrip(".")
     if key not in _UNITS[dimension]:
         raise CardError(f"{where} has unit {unit!r}, not a unit of {dimension} ({', '.join(_UNITS[dimension])})")
     return (key if unit is None else unit.strip()), _UNITS[dimension][key]
 
 
-def _column(cell: str, default_units: str, prefix: str, column: int,
+def _column(cell: str, default_units: str | None, prefix: str, column: int,
             kind: str | None = None) -> tuple[str, str, float] | None:
     """Kind, unit label and factor to SI of header cell number ``column`` (from 1).
 
@@ -239,7 +244,7 @@ def parse_card_columns(text: str) -> dict[str, str]:
     return _checked_columns((kind, header) for kind, _, header in pairs)
 
 
-def _header(cells: list[str], line: int, source: str, default_units: str,
+def _header(cells: list[str], line: int, source: str, default_units: str | None,
             mapping: dict[str, str] | None) -> dict[str, tuple[int, str, float]]:
     """Used columns: kind -> (column index, unit label, factor to SI)."""
     found: dict[str, list[tuple[int, str, float]]] = {}
@@ -302,7 +307,7 @@ def _is_float(cell: str) -> bool:
     return True
 
 
-def _parse(text: str, source: str, default_units: str, mapping: dict[str, str] | None) -> _Table:
+def _parse(text: str, source: str, default_units: str | None, mapping: dict[str, str] | None) -> _Table:
     """The used columns of a card's text, in SI, with the line number of each row."""
     if text.count("\n") >= MAX_LINES:
         raise CardError(f"{source}: more than {MAX_LINES} lines; a card file has at most {MAX_LINES}")
@@ -365,7 +370,7 @@ def _decimal_commas(columns: dict[str, list[str]], used: dict[str, tuple[int, st
     return {kind: [cell.replace(",", ".") for cell in cells] for kind, cells in columns.items()}
 
 
-def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
+def read_card(path: Path | str, linkage: Linkage, default_units: str | None = None, *,
               columns: Mapping[str, str] | None = None, stream: IO | None = None) -> CardReading:
     """Read a card file and put it on the crank-angle axis of ``linkage``.
 
@@ -376,9 +381,9 @@ def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
         ``<stdin>`` in messages.
     linkage : Linkage
         The unit the card was measured on.
-    default_units : str
+    default_units : str, optional
         Units of columns whose header names none: ``"si"`` (m, N, s, deg) or
-        ``"field"`` (in, lbf, s, deg).
+        ``"field"`` (in, lbf, s, deg); without them such a column is refused.
     columns : mapping, optional
         Kind -> header text (:func:`parse_card_columns`); the mapped columns are
         used and every other column is ignored.
@@ -394,7 +399,7 @@ def read_card(path: Path | str, linkage: Linkage, default_units: str = "si", *,
     ----------
     [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
     """
-    if default_units not in _DEFAULT_UNITS:
+    if default_units is not None and default_units not in _DEFAULT_UNITS:
         raise CardError(f"card units {default_units!r}: use {' or '.join(_DEFAULT_UNITS)}")
     mapping = None if columns is None else _checked_columns(columns.items())
     source = display_name(path)

@@ -58,9 +58,9 @@ CardOption = Annotated[Path, typer.Option(
 CardColumnsOption = Annotated[str | None, typer.Option(
     "--card-columns", help="which card columns to read, for headers the reader does not know: "
     "'position=NAME,load=NAME[,time=NAME]' or 'crank_angle=NAME,load=NAME'")]
-CardUnitsOption = Annotated[
-    UnitSystem, typer.Option("--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf)")
-]
+CardUnitsOption = Annotated[UnitSystem | None, typer.Option(
+    "--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf) "
+    "[default: such a column is refused]")]
 def finite(value: float | None) -> float | None:
     """Refuse NaN and infinity in a float option (typer's range check lets NaN through)."""
     if value is not None and not math.isfinite(value):

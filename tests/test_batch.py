@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import os
 import signal
 import sqlite3
@@ -275,3 +276,34 @@ def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_p
     statuses = dict(sqlite3.connect(store).execute("SELECT card || analysis, status || error FROM results"))
     assert sum(v.startswith("error") for v in statuses.values()) == 2
     assert all("ZeroDivisionError: simulated" in v for v in statuses.values() if v.startswith("error"))
+
+
+def test_cards_whose_header_names_no_unit_need_card_units(run_cli, tmp_path):
+    """A card with a bare 'time,position,load' header (loads in N) is an error row naming
+    the column, as the single command prints it; with --card-units si the same card gives
+    the results of its kN twin (a different store, the options differ)."""
+    rows = field(tmp_path, 1)
+    named = tmp_path / rows[0][2]
+    lines = named.read_text().splitlines()
+    bare = tmp_path / "bare.csv"
+    bare.write_text("time,position,load\n" + "".join(
+        f"{t},{s},{float(w) * 1e3!r}\n" for t, s, w in (line.split(",") for line in lines[1:])))
+    table = manifest(tmp_path, [("well-b", rows[0][1], "bare.csv", rows[0][3])])
+    code, _, err = run_cli("batch", "run", table, "--store", tmp_path / "refused.sqlite", "--workers", "1")
+    assert code == 0, err
+    refused = stored(tmp_path / "refused.sqlite")
+    for analysis in ("torque", "downhole"):
+        assert refused[("bare.csv", analysis)]["status"] == "error"
+        assert refused[("bare.csv", analysis)]["error"] == single(run_cli, tmp_path, analysis, rows[0][1], "bare.csv")
+        assert "column 1 'time' names no unit" in refused[("bare.csv", analysis)]["error"]
+    both = manifest(tmp_path, [rows[0], ("well-b", rows[0][1], "bare.csv", rows[0][3])], "both.csv")
+    code, _, err = run_cli("batch", "run", both, "--store", tmp_path / "si.sqlite", "--workers", "1",
+                           "--card-units", "si")
+    assert code == 0, err
+    given = stored(tmp_path / "si.sqlite")
+    for analysis in ("torque", "downhole"):
+        a, b = given[("bare.csv", analysis)], given[(rows[0][2], analysis)]
+        assert a["status"] == b["status"] == "ok"
+        numbers = [name for name, value in b.items() if isinstance(value, float)]
+        assert len(numbers) > 5
+        assert all(math.isclose(a[name], b[name], rel_tol=1e-9, abs_tol=1e-9) for name in numbers)

@@ -212,3 +212,21 @@ def test_closed_card_is_read_once():
     closed = table(["time_s", "position_m", "load_kN"], [np.append(TIME, TIME[0] + period),
                                                           np.append(POSITION, POSITION[0]), np.append(LOAD, LOAD[0]) / 1e3])
     assert_same_card(read_text(closed))
+
+
+@pytest.mark.parametrize(("header", "culprit", "example"), [
+    (["time", "position_m", "load_kN"], "column 1 'time'", "time_s, Time (s)"),
+    (["time_s", "position", "load_kN"], "column 2 'position'", "position_m, Position (in)"),
+    (["time_s", "position_m", "load"], "column 3 'load'", "load_N, Load (lbf)"),
+])
+def test_a_column_without_a_unit_needs_the_card_units(header, culprit, example):
+    """No guess: a header that names no unit is refused unless the card's units are given,
+    and then read in them (the field units here)."""
+    text = table(header, [TIME, POSITION / INCH, LOAD / POUND_FORCE])
+    with pytest.raises(Exception) as error:
+        read_text(text)
+    assert f"line 1: {culprit} names no unit: write it in the header ({example})" in str(error.value)
+    assert "--card-units si or field" in str(error.value)
+    given = read_text(table(["time", "position", "load"], [TIME, POSITION / INCH, LOAD / POUND_FORCE]),
+                      default_units="field")
+    assert_same_card(given)

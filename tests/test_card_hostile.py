@@ -274,7 +274,7 @@ MAPPINGS = [
 @pytest.mark.parametrize(("mapping", "fragment"), MAPPINGS)
 def test_bad_mappings(mapping, fragment):
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=io.StringIO(MAPPED), columns=mapping)
+        read_card("-", SK8, "si", stream=io.StringIO(MAPPED), columns=mapping)
     check(error, "<stdin>", fragment)
 
 

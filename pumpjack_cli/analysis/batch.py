@@ -51,12 +51,14 @@ class Options:
     method: str = "api"
     balance: str = "equal-peaks"
     damping: float | None = None
+    #: Units of card columns whose header names none ("si", "field"); None refuses them.
+    card_units: str | None = None
 
     def for_analysis(self, analysis: str) -> dict:
-        """The options that change an analysis' result (for the options hash)."""
-        if analysis == "torque":
-            return {"method": self.method, "balance": self.balance}
-        return {"damping": self.damping}
+        """The options that change an analysis' result (for the options hash; without
+        --card-units the hash is that of a store written before the option existed)."""
+        chosen = {"method": self.method, "balance": self.balance} if analysis == "torque" else {"damping": self.damping}
+        return chosen if self.card_units is None else {**chosen, "card_units": self.card_units}
 
 
 @dataclass(frozen=True)
@@ -259,10 +261,10 @@ def _with_rod_string(unit, path: str):
 class _CardOnce:
     """A card source read once for all the analyses of a card (duck-typed CardSource)."""
 
-    def __init__(self, path: str):
+    def __init__(self, path: str, units: str | None):
         from .card_runs import CardSource
 
-        self.source = CardSource(Path(path))
+        self.source = CardSource(Path(path), units)
         self.name = self.source.name
         self._reading = None
 
@@ -278,7 +280,7 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     from .downhole import downhole
     from .torque import torque
 
-    card = _CardOnce(job.card)
+    card = _CardOnce(job.card, options.card_units)
     outcomes = []
     for analysis in options.analyses:
         take_warnings()

@@ -41,10 +41,11 @@ ROTATIONS = ("uniform", "card", "dynamic", "auto")
 @dataclass(frozen=True)
 class CardSource:
     """Where a card comes from: a path (``-`` for standard input), the units of columns
-    whose header names none, and an optional ``--card-columns`` mapping text."""
+    whose header names none (None: such a column is refused), and an optional
+    ``--card-columns`` mapping text."""
 
     path: Path
-    units: str = "si"
+    units: str | None = None
     columns: str | None = None
 
     def read(self, linkage: Linkage) -> CardReading:

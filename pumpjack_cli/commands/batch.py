@@ -11,7 +11,7 @@ from typer.core import TyperGroup
 from ..analysis.batch import ANALYSES, Options, default_workers, run_batch
 from ..analysis.store_views import export_result, trend_result
 from ..errors import PumpjackError
-from ..options import FormatOption, Output, OutputOption, UnitSystem, finite
+from ..options import CardUnitsOption, FormatOption, Output, OutputOption, UnitSystem, finite
 
 VERBS = ("run", "export", "trend")
 
@@ -48,6 +48,7 @@ def run(
     damping: Annotated[float | None, typer.Option(
         help="downhole: Gibbs' damping factor nu [default: the unit file's, else the energy balance]",
         min=0.0, max=2.0, callback=finite)] = None,
+    card_units: CardUnitsOption = None,
     workers: Annotated[int | None, typer.Option(help="local worker processes [default: every core]", min=1,
                                                 max=1024)] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -57,7 +58,7 @@ def run(
     chosen = tuple(name.strip() for name in analyses.split(",") if name.strip())
     if not chosen:
         raise PumpjackError("--analyses: name at least one of torque, downhole")
-    options = Options(chosen, method, balance, damping)
+    options = Options(chosen, method, balance, damping, card_units.value if card_units else None)
     progress = _progress() if _terminal() else None
     try:
         tally = run_batch(manifest, store, options, workers or default_workers(), scheduler,

@@ -39,7 +39,7 @@ JOINTS = {"crank_pin_stiffness": "rotational_stiffness", "equalizer_pin_stiffnes
 def compare_redundancy(
     unit: UnitArgument,
     card: CardOption,
-    card_units: CardUnitsOption = UnitSystem.si,
+    card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
@@ -81,5 +81,5 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value,
+    sink.emit(run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value,
                   given, given_joints), SHOWN)

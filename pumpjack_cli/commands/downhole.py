@@ -26,7 +26,7 @@ class Method(str, Enum):
 def downhole(
     unit: UnitArgument,
     card: CardOption,
-    card_units: CardUnitsOption = UnitSystem.si,
+    card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     rotation: RotationOption = Rotation.auto,
@@ -46,6 +46,6 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, rotation.value, method.value,
+    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, rotation.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -32,7 +32,7 @@ def dynamics(
     card: Annotated[Path | None, typer.Option(
         "--card", help="drive the unit with a dynamometer card CSV instead of the well model (docs/cards.md)",
         dir_okay=False)] = None,
-    card_units: CardUnitsOption = UnitSystem.si,
+    card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
                                         min=1e-13, max=1e-3, callback=finite)] = DEFAULT_RTOL,
@@ -57,7 +57,7 @@ def dynamics(
     if well_model is WellModel.rigid:
         if damping is not None:
             raise PumpjackError("--damping applies to --well-model wave")
-        source = None if card is None else CardSource(card, card_units.value, card_columns)
+        source = None if card is None else CardSource(card, card_units, card_columns)
         sink.emit(run(load_unit(unit), source, rtol, steps), SHOWN)
         return
     if card is not None:

@@ -18,7 +18,7 @@ SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque
 def reactions(
     unit: UnitArgument,
     card: CardOption,
-    card_units: CardUnitsOption = UnitSystem.si,
+    card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
@@ -38,6 +38,6 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value, weights=not no_weights,
+    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

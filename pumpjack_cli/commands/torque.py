@@ -31,7 +31,7 @@ class Balance(str, Enum):
 def torque(
     unit: UnitArgument,
     card: CardOption,
-    card_units: CardUnitsOption = UnitSystem.si,
+    card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
@@ -55,7 +55,7 @@ def torque(
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), CardSource(card, card_units.value, card_columns), spm, steps, rotation.value,
+    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))
