@@ -18,6 +18,7 @@ from typer.core import TyperGroup
 
 from . import __version__
 from .errors import PumpjackError, take_warnings
+from .text_input import forget_inputs
 
 #: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
 #: The summary is the first line of the function's docstring (a test keeps them equal).
@@ -116,6 +117,7 @@ def main(argv: list[str] | None = None) -> int:
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
     command = typer.main.get_command(app)
     take_warnings()
+    forget_inputs()
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)

@@ -30,7 +30,7 @@ from typing import Any, TextIO
 
 from .errors import PumpjackError
 from .quantities import output_unit
-from .text_input import describe_os_error
+from .text_input import describe_os_error, input_kind
 from .results import STORED, TEXT, Column, Result, check_finite, converted_summary, display_name
 
 FORMATS = ("table", "csv", "json")
@@ -341,6 +341,12 @@ class Target:
         if not os.access(directory, os.W_OK | os.X_OK):
             raise PumpjackError(f"{option} {path}: directory {path.parent} is not writable")
 
+    def refuse_input(self) -> None:
+        """Refuse a target that is one of the files the run has read (it would be replaced)."""
+        kind = input_kind(self.path)
+        if kind is not None:
+            raise PumpjackError(f"{self.option} {self.path}: is the {kind} this run read; write the result elsewhere")
+
     def open(self, binary: bool = False):
         """A stream to write to: the temporary file, or the target itself when written in place."""
         try:
@@ -421,6 +427,8 @@ class Outputs:
         """Write the result (and its plot); one line on failure, nothing half-written."""
         check_finite(result)
         targets = [t for t in (self.plot, self.output) if t is not None]
+        for target in targets:
+            target.refuse_input()
         try:
             if self.plot is not None:
                 with self.plot.open(binary=True) as stream:

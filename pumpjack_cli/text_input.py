@@ -75,6 +75,30 @@ def decode_text(data: bytes | str, source: str, error: type[PumpjackError]) -> s
     return text
 
 
+#: The files this process has read, by (device, inode), with what each is ("card file"):
+#: an output onto one of them is refused, so that no run replaces its own input.
+_INPUTS: dict[tuple[int, int], str] = {}
+
+
+def note_input(info: os.stat_result, what: str) -> None:
+    """Remember a file (its ``os.stat`` result) as an input of this run."""
+    _INPUTS[(info.st_dev, info.st_ino)] = what
+
+
+def forget_inputs() -> None:
+    """Start a new run: no file has been read yet."""
+    _INPUTS.clear()
+
+
+def input_kind(path: Path | str) -> str | None:
+    """What input of this run the file at ``path`` is ("unit file", "card file"), if any."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return _INPUTS.get((info.st_dev, info.st_ino))
+
+
 def _read_file(path: Path | str, limit: int, what: str, source: str, error: type[PumpjackError]) -> bytes:
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
@@ -89,6 +113,7 @@ def _read_file(path: Path | str, limit: int, what: str, source: str, error: type
             raise error(f"{source}: is {kind}, not a {what}")
         if info.st_size > limit:
             raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")
+        note_input(info, what)
         with open(fd, "rb", closefd=False) as file:
             return file.read(limit + 1)
     except OSError as exc:

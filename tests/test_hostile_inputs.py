@@ -372,3 +372,36 @@ def test_a_failed_run_prints_only_its_error(run_cli, tmp_path):
     card = _reversed_card(tmp_path)
     code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", card, "--spm", "5", "-f", "csv")
     one_line_error(code, out, err, f"--spm 5 disagrees with the time stamps of {card}")
+
+
+@pytest.mark.parametrize("option", ["-o", "--plot"])
+def test_an_output_onto_an_input_is_refused_and_the_input_kept(run_cli, tmp_path, option):
+    """-o or --plot naming the card or the unit file the run reads (directly or through a
+    symbolic link) would replace that input: refused, the file left as it was."""
+    card, unit = tmp_path / "card.csv", tmp_path / "unit.toml"
+    card.write_bytes(SK8_CARD.read_bytes())
+    unit.write_bytes(SK8.read_bytes())
+    (tmp_path / "link.csv").symlink_to(card)
+    for target, kind in ((card, "card file"), (tmp_path / "link.csv", "card file"), (unit, "unit file")):
+        named = target.with_suffix(".png") if option == "--plot" else target
+        if option == "--plot":
+            named.symlink_to(target)
+        code, out, err = run_cli("torque", unit, "--card", card, option, named, "-f", "csv")
+        one_line_error(code, out, err, f"is the {kind} this run read")
+        assert card.read_bytes() == SK8_CARD.read_bytes() and unit.read_bytes() == SK8.read_bytes()
+        if option == "--plot":
+            named.unlink()
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["card.csv", "link.csv", "unit.toml"]
+
+
+def test_export_onto_its_own_store_is_refused(run_cli, tmp_path):
+    card = tmp_path / "card.csv"
+    card.write_bytes(SK8_CARD.read_bytes())
+    manifest = tmp_path / "field.csv"
+    manifest.write_text(f"well,unit,card\nw1,sk8-3.5-4000,{card}\n", encoding="utf-8")
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", "run", manifest, "--store", store, "--workers", "1")[0] == 0
+    before = store.read_bytes()
+    code, out, err = run_cli("batch", "export", "--store", store, "-o", store)
+    one_line_error(code, out, err, "is the results store this run read")
+    assert store.read_bytes() == before

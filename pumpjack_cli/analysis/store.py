@@ -11,11 +11,13 @@ leaves every card either complete or absent.
 
 from __future__ import annotations
 
+import os
 import re
 import sqlite3
 from pathlib import Path
 
 from ..errors import PumpjackError
+from ..text_input import note_input
 
 #: Columns every row has, in order.
 FIXED = ("well", "card", "card_sha256", "timestamp", "unit", "analysis", "options_sha256", "status", "error",
@@ -51,6 +53,7 @@ class Store:
             raise PumpjackError(f"--store {path}: not a results store ({exc})") from None
         if "options_sha256" not in self.columns:
             raise PumpjackError(f"--store {path}: not a results store (no results table)")
+        note_input(os.stat(self.path), "results store")
 
     def close(self) -> None:
         self.db.close()
