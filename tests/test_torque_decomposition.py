@@ -145,3 +145,19 @@ def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
         w, omega, alpha = rng.uniform(1e4, 9e4, theta.size), rng.uniform(0.3, 2.0, theta.size), rng.uniform(-1, 1, 97)
         direct = exact_net_torque(spatial, masses, theta, w, omega, alpha)
         assert np.max(np.abs(basis.torque(w, omega, alpha) - direct)) < 1e-10 * np.max(np.abs(direct))
+
+
+def test_exact_torque_basis_in_blocks_is_the_whole_grid(monkeypatch):
+    """A grid longer than BASIS_BLOCK is solved block by block (bounded memory); the
+    responses are those of one batch of the whole grid, to the bit."""
+    from pumpjack_cli.analysis.machine import mass_model
+    from pumpjack_cli.core.beam import torque
+
+    unit = load_unit("sk8-3.5-4000")
+    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    theta = crank_grid(1000)
+    whole = torque.exact_torque_basis(spatial, masses, theta)
+    monkeypatch.setattr(torque, "BASIS_BLOCK", 64)
+    blocks = torque.exact_torque_basis(spatial, masses, theta)
+    for name in ("static", "per_load", "per_speed_squared", "per_acceleration"):
+        assert np.array_equal(getattr(blocks, name), getattr(whole, name)), name

@@ -377,15 +377,29 @@ class ExactTorqueBasis:
                 + self.per_acceleration * np.asarray(alpha, dtype=float))
 
 
-def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:
-    """The four responses of :class:`ExactTorqueBasis` at ``crank_angle`` [rad], one batched
-    kinetostatic solution of (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0), (0, 0, 1 1/s²)."""
-    theta = np.asarray(crank_angle, dtype=float)
-    _finite("exact torque basis", theta)
+#: Crank angles whose exact-torque responses are solved in one batch: the batched spatial
+#: kinetostatics holds about 8 kB per angle, so a long grid is solved block by block.
+BASIS_BLOCK = 16384
+
+
+def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) -> np.ndarray:
+    """Balancing torque [N·m] for (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0),
+    (0, 0, 1 1/s²) at ``theta`` [rad], as four rows."""
     n = theta.size
     unit = np.repeat(np.eye(4), n, axis=1)
     _, reactions = rational_mechanism(spatial, masses, np.tile(theta, 4), unit[2], unit[3], unit[1])
-    static, load, speed, acceleration = reactions.balancing_torque.reshape(4, n)
+    return reactions.balancing_torque.reshape(4, n)
+
+
+def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:
+    """The four responses of :class:`ExactTorqueBasis` at ``crank_angle`` [rad], from batched
+    kinetostatic solutions of (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0),
+    (0, 0, 1 1/s²), :data:`BASIS_BLOCK` angles at a time."""
+    theta = np.asarray(crank_angle, dtype=float)
+    _finite("exact torque basis", theta)
+    blocks = [_basis_block(spatial, masses, theta[start:start + BASIS_BLOCK])
+              for start in range(0, theta.size, BASIS_BLOCK)] or [_basis_block(spatial, masses, theta)]
+    static, load, speed, acceleration = np.concatenate(blocks, axis=1)
     return ExactTorqueBasis(theta, static, load - static, speed - static, acceleration - static)
 
 
