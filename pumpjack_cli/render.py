@@ -63,11 +63,6 @@ def _unit_label(quantity: str, system: str) -> str:
     return "" if quantity in (TEXT, STORED) else output_unit(quantity, system).label
 
 
-def converted_series(result: Result, system: str) -> dict[str, list]:
-    """Columns in the display units of ``system``, keyed by suffixed name."""
-    return {display_name(c.name, c.quantity, system): _display_values(c, c.values, system) for c in result.columns}
-
-
 def _csv_block(result: Result, system: str, start: int) -> str:
     """CSV text of the rows [start, start + CSV_BLOCK): floats by ``repr``, text quoted as CSV needs."""
     columns = [_display_values(c, c.values[start:start + CSV_BLOCK], system) for c in result.columns]
@@ -117,9 +112,23 @@ def write_csv(result: Result, system: str, stream: TextIO) -> None:
         _FORKED = None
 
 
-def to_json_dict(result: Result, system: str) -> dict:
-    """The JSON document: title, unit system, summary, column descriptions and series."""
-    return {
+def _json_values(column: Column, values: Any, system: str) -> str:
+    """A slice of a column as the lines of a JSON array indented as ``json.dump(indent=1)``
+    writes them inside the document's "series" (floats by ``repr``, as json does)."""
+    shown = _display_values(column, values, system)
+    if column.quantity in (TEXT, STORED):
+        return ",\n   ".join(map(json.dumps, shown))
+    return ",\n   ".join(map(repr, shown))
+
+
+def write_json(result: Result, system: str, stream: TextIO) -> None:
+    """The JSON document: title, unit system, summary, column descriptions and the series.
+
+    The text is that of ``json.dump(document, stream, indent=1)`` plus a newline, but the
+    series are written block by block from the arrays, never as one Python list per
+    column, so that memory stays that of the arrays on long grids.
+    """
+    head = json.dumps({
         "title": result.title,
         "units": system,
         "summary": converted_summary(result, system),
@@ -127,13 +136,20 @@ def to_json_dict(result: Result, system: str) -> dict:
             display_name(c.name, c.quantity, system): {"unit": _unit_label(c.quantity, system), "description": c.description}
             for c in result.columns
         },
-        "series": converted_series(result, system),
-    }
-
-
-def write_json(result: Result, system: str, stream: TextIO) -> None:
-    json.dump(to_json_dict(result, system), stream, indent=1)
-    stream.write("\n")
+        "series": {},
+    }, indent=1)
+    stream.write(head.removesuffix("{}\n}") + ("{" if result.columns else "{}\n}\n"))
+    for i, column in enumerate(result.columns):
+        stream.write(f"{',' if i else ''}\n  {json.dumps(display_name(column.name, column.quantity, system))}: ")
+        if result.rows == 0:
+            stream.write("[]")
+            continue
+        stream.write("[")
+        for start in range(0, result.rows, CSV_BLOCK):
+            stream.write(f"{',' if start else ''}\n   {_json_values(column, column.values[start:start + CSV_BLOCK], system)}")
+        stream.write("\n  ]")
+    if result.columns:
+        stream.write("\n }\n}\n")
 
 
 def _wrap(text: str, width: int) -> list[str]:
