@@ -316,6 +316,8 @@ INVALID = [
      "less than or equal to 5 m; got 6.096 m"),
     ("optional-half-spacing", _set("geometry.crank_half_spacing", "8 m"), "geometry.crank_half_spacing",
      "less than or equal to 5 m; got 8 m"),
+    ("phase-beyond-half-turn", _set("masses.counterweights.phase", "200 deg"), "masses.counterweights.phase",
+     "less than or equal to 3.141592653589793 rad (180 deg); got 3.49066 rad (200 deg)"),
     ("submergence-negative", _set("well.pump_submergence", "-10 ft"), "well.pump_submergence",
      "greater than or equal to 0 m; got -3.048 m"),
     ("counterweights-above-16", _set("masses.counterweights.count", 17), "masses.counterweights.count",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import importlib
 import json
+import math
 import os
 import tomllib
 import typing
@@ -173,6 +174,10 @@ def error_message(error: dict, model: Any = None) -> str:
     except ValueError:
         return message
     unit = SI_LABELS[dimension]
+    if dimension == "angle":  # radians, and the degrees a unit file or an option is written in
+        limit = next(iter(error.get("ctx", {}).values()), None)
+        shown = "" if not isinstance(limit, (int, float)) else f" ({math.degrees(limit):.4g} deg)"
+        return f"{message} rad{shown}; got {value:.6g} rad ({math.degrees(value):.6g} deg)"
     return f"{message} {unit}; got {value:.6g} {unit}".replace(" ;", ";")
 
 
