@@ -317,3 +317,28 @@ def test_sides_with_deviations_close_both_loops_and_differentiate_consistently()
         assert np.allclose(getattr(sm, "e" + w[1]), rate, rtol=0, atol=1e-8), w
     # the equalizer rolls: it no longer turns with the beam alone
     assert np.max(np.abs(sm.w4 - sm.w5)) > 1e-4
+
+
+def test_a_long_grid_solved_in_blocks_is_the_whole_grid(monkeypatch):
+    """Beyond BLOCK crank angles the kinetostatics is solved block by block (bounded
+    memory); every array of the motion and of the reactions is that of one batch of the
+    whole grid, to the bit, with the crank speed and acceleration varying along it."""
+    from pumpjack_cli.analysis.machine import mass_model
+    from pumpjack_cli.core.beam import kinetostatics
+
+    unit = load_unit("sk8-3.5-4000")
+    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    theta = np.linspace(0.0, 2 * np.pi, 1000, endpoint=False)
+    omega, epsilon, load = 1.1 + 0.1 * np.sin(theta), 0.05 * np.cos(theta), 5e4 + 2e4 * np.sin(theta)
+    speeds = (omega, 1.1)
+    wholes = [rational_mechanism(spatial, masses, theta, speed, epsilon, load) for speed in speeds]
+    monkeypatch.setattr(kinetostatics, "BLOCK", 64)
+    for speed, whole in zip(speeds, wholes):
+        blocks = rational_mechanism(spatial, masses, theta, speed, epsilon, load)
+        for part, expected in zip(blocks, whole):
+            for field in dataclasses.fields(expected):
+                if field.name != "residual":
+                    assert np.array_equal(getattr(part, field.name), getattr(expected, field.name)), field.name
+        # The residual is relative to the largest load of its block, not of the whole grid:
+        # the same round-off, never smaller.
+        assert np.all(blocks[1].residual >= whole[1].residual) and blocks[1].residual.max() < 1e-12

@@ -147,17 +147,19 @@ def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
         assert np.max(np.abs(basis.torque(w, omega, alpha) - direct)) < 1e-10 * np.max(np.abs(direct))
 
 
+
 def test_exact_torque_basis_in_blocks_is_the_whole_grid(monkeypatch):
-    """A grid longer than BASIS_BLOCK is solved block by block (bounded memory); the
-    responses are those of one batch of the whole grid, to the bit."""
+    """A grid longer than a quarter of the kinetostatics' BLOCK is solved block by block
+    (only the torques kept: bounded memory); the responses are those of one batch, to the bit."""
     from pumpjack_cli.analysis.machine import mass_model
-    from pumpjack_cli.core.beam import torque
+    from pumpjack_cli.core.beam import kinetostatics
+    from pumpjack_cli.core.beam.torque import exact_torque_basis
 
     unit = load_unit("sk8-3.5-4000")
     spatial, masses = unit.geometry.spatial(), mass_model(unit)
     theta = crank_grid(1000)
-    whole = torque.exact_torque_basis(spatial, masses, theta)
-    monkeypatch.setattr(torque, "BASIS_BLOCK", 64)
-    blocks = torque.exact_torque_basis(spatial, masses, theta)
+    whole = exact_torque_basis(spatial, masses, theta)
+    monkeypatch.setattr(kinetostatics, "BLOCK", 64)
+    blocks = exact_torque_basis(spatial, masses, theta)
     for name in ("static", "per_load", "per_speed_squared", "per_acceleration"):
         assert np.array_equal(getattr(blocks, name), getattr(whole, name)), name

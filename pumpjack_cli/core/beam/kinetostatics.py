@@ -31,6 +31,7 @@ moment M_R01 across the shaft.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -452,6 +453,33 @@ def rational_mechanism(
     >>> round(float(r.balancing_torque[0]), 1)
     -42325.5
     """
-    sm = spatial_motion(spatial, crank_angle, omega1, epsilon1)
-    loads = applied_loads(spatial, masses, sm, rod_load, weights=weights, inertia=inertia)
-    return sm, rational_reactions(spatial, sm, loads)
+    theta = np.asarray(crank_angle, dtype=float)
+    if theta.ndim != 1 or theta.size <= BLOCK:
+        sm = spatial_motion(spatial, crank_angle, omega1, epsilon1)
+        loads = applied_loads(spatial, masses, sm, rod_load, weights=weights, inertia=inertia)
+        return sm, rational_reactions(spatial, sm, loads)
+    omega, epsilon, load = (np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (omega1, epsilon1, rod_load))
+    starts = range(0, theta.size, BLOCK)
+    parts = [rational_mechanism(spatial, masses, theta[s:s + BLOCK], omega[s:s + BLOCK], epsilon[s:s + BLOCK],
+                                load[s:s + BLOCK], weights=weights, inertia=inertia) for s in starts]
+    lengths = [min(BLOCK, theta.size - s) for s in starts]
+    return _joined([motion for motion, _ in parts], lengths), _joined([r for _, r in parts], lengths)
+
+
+#: Crank angles solved in one batch by :func:`rational_mechanism`: the batched
+#: kinetostatics holds about 2 kB per angle while it works, so a longer grid is solved
+#: block by block (the motion and the reactions are the same to the bit; the residual is
+#: relative to the largest load of its block).
+BLOCK = 65536
+
+
+def _joined(parts: list, lengths: list[int]):
+    """Dataclass results of consecutive blocks of crank angles as one: the per-angle arrays
+    (leading dimension the block's length in every block) joined, anything else kept."""
+    joined = {}
+    for field in dataclasses.fields(parts[0]):
+        items = [getattr(part, field.name) for part in parts]
+        per_angle = all(isinstance(item, np.ndarray) and item.ndim and item.shape[0] == n
+                        for item, n in zip(items, lengths))
+        joined[field.name] = np.concatenate(items) if per_angle else items[0]
+    return dataclasses.replace(parts[0], **joined)

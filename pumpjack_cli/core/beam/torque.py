@@ -41,6 +41,7 @@ import numpy as np
 
 from ...errors import TorqueError
 from .counterbalance import Counterbalance, counterbalance_from_masses
+from . import kinetostatics
 from .kinetostatics import rational_mechanism
 from .linkage import Linkage
 from .masses import MassModel
@@ -377,14 +378,9 @@ class ExactTorqueBasis:
                 + self.per_acceleration * np.asarray(alpha, dtype=float))
 
 
-#: Crank angles whose exact-torque responses are solved in one batch: the batched spatial
-#: kinetostatics holds about 8 kB per angle, so a long grid is solved block by block.
-BASIS_BLOCK = 16384
-
-
 def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) -> np.ndarray:
     """Balancing torque [N·m] for (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0),
-    (0, 0, 1 1/s²) at ``theta`` [rad], as four rows."""
+    (0, 0, 1 1/s²) at ``theta`` [rad], as four rows (one batched kinetostatic solution)."""
     n = theta.size
     unit = np.repeat(np.eye(4), n, axis=1)
     _, reactions = rational_mechanism(spatial, masses, np.tile(theta, 4), unit[2], unit[3], unit[1])
@@ -392,14 +388,15 @@ def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) 
 
 
 def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:
-    """The four responses of :class:`ExactTorqueBasis` at ``crank_angle`` [rad], from batched
-    kinetostatic solutions of (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0),
-    (0, 0, 1 1/s²), :data:`BASIS_BLOCK` angles at a time."""
+    """The four responses of :class:`ExactTorqueBasis` at ``crank_angle`` [rad], a quarter of
+    :data:`.kinetostatics.BLOCK` crank angles at a time, so that only the torques of a long
+    grid are kept, not its motion and reactions."""
     theta = np.asarray(crank_angle, dtype=float)
     _finite("exact torque basis", theta)
-    blocks = [_basis_block(spatial, masses, theta[start:start + BASIS_BLOCK])
-              for start in range(0, theta.size, BASIS_BLOCK)] or [_basis_block(spatial, masses, theta)]
-    static, load, speed, acceleration = np.concatenate(blocks, axis=1)
+    size = kinetostatics.BLOCK // 4
+    static, load, speed, acceleration = np.concatenate(
+        [_basis_block(spatial, masses, theta[start:start + size]) for start in range(0, theta.size, size)]
+        or [_basis_block(spatial, masses, theta)], axis=1)
     return ExactTorqueBasis(theta, static, load - static, speed - static, acceleration - static)
 
 
