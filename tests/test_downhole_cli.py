@@ -105,6 +105,16 @@ def test_buoyant_rod_weight_of_the_seed_taper_by_hand(sk8):
     assert sk8["summary"]["buoyant_rod_weight_n"] == pytest.approx(expected, rel=1e-12)
 
 
+def test_rp11l_counterbalance_effect_of_the_measured_loads(sk8):
+    """API RP 11L's design CBE = 1.06 (W_rf + F_o/2) with the card's W_rf and measured F_o;
+    with this well's F_o above 0.128 W_rf it lies between the static downstroke and upstroke
+    loads (W_rf and W_rf + F_o)."""
+    s = sk8["summary"]
+    assert s["rp11l_counterbalance_effect_n"] == pytest.approx(
+        1.06 * (s["buoyant_rod_weight_n"] + 0.5 * s["fluid_load_n"]), rel=1e-14)
+    assert s["buoyant_rod_weight_n"] < s["rp11l_counterbalance_effect_n"] < s["buoyant_rod_weight_n"] + s["fluid_load_n"]
+
+
 def test_taper_loads_are_the_polished_rod_the_joints_and_the_pump(sk8):
     """Top of taper 1 is the polished rod, the bottom of taper 3 the pump (datum: zero static
     tension there), and a joint carries one load on both sides. The Gibbs solution carries

@@ -85,6 +85,9 @@ def test_fluid_load_and_pump_work_of_a_full_pump_by_hand(run):
     fluid_load = 900.0 * STANDARD_GRAVITY * (4000.0 - 300.0) * 0.3048 * area
     assert s["fluid_load_n"] == pytest.approx(fluid_load, rel=1e-12)
     assert s["pump_card_work_j"] == pytest.approx(fluid_load * s["net_pump_stroke_m"], rel=1e-3)
+    # API RP 11L's design counterbalance effect from the same W_rf and F_o
+    assert s["rp11l_counterbalance_effect_n"] == pytest.approx(1.06 * (s["buoyant_rod_weight_n"] + fluid_load / 2),
+                                                               rel=1e-12)
 
 
 def test_options_override_the_well(run):

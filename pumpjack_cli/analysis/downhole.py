@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import card_work, displacement_rate, intake_pressure, summarise_pump_card, taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
 from ..errors import DownholeError, PumpjackError, warn
@@ -73,6 +74,9 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
                "plunger travel through liquid (from the downstroke's unloading point)"),
         Scalar("pump_fillage", "percent", float(figures.fillage), "net / gross pump stroke"),
         Scalar("fluid_load", "force", float(figures.fluid_load), "upstroke minus downstroke load level of the pump card"),
+        Scalar("rp11l_counterbalance_effect", "force",
+               rp11l_counterbalance_effect(pump.buoyant_weight, float(figures.fluid_load)),
+               "design counterbalance effect of API RP 11L, 1.06 (W_rf + F_o/2)"),
         Scalar("max_pump_load", "force", float(figures.peak_load), "largest net plunger load"),
         Scalar("min_pump_load", "force", float(figures.minimum_load),
                "smallest net plunger load; negative: compression at the pump (buckling tendency)"),

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.beam.card import Card, card_load
+from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.predict import Prediction, predict_cards
@@ -179,6 +180,8 @@ def _card_summary(cards: Prediction, nu: float, fillage: float) -> list[Scalar]:
         Scalar("min_rod_load_crank_angle", "angle", low.crank_angle, "crank angle of the MPRL"),
         Scalar("buoyant_rod_weight", "force", s.buoyant_rod_weight, "rods with couplings in the well fluid, W_rf"),
         Scalar("fluid_load", "force", s.fluid_load, "F_o = (p_d - p_i) A_p on the plunger"),
+        Scalar("rp11l_counterbalance_effect", "force", rp11l_counterbalance_effect(s.buoyant_rod_weight, s.fluid_load),
+               "design counterbalance effect of API RP 11L, 1.06 (W_rf + F_o/2)"),
         Scalar("stroke", "length", s.polished_rod_stroke, "polished-rod stroke"),
         Scalar("gross_pump_stroke", "length", s.gross_plunger_stroke, "plunger travel"),
         Scalar("net_pump_stroke", "length", s.net_plunger_stroke, "liquid discharged per stroke / plunger area"),

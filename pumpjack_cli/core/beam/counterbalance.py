@@ -101,6 +101,47 @@ def counterbalance_from_masses(linkage: Linkage, masses: MassModel, gravity: flo
     return Counterbalance(gravity * (rear - front) / linkage.front_arm, gravity * math.hypot(x, y), offset)
 
 
+#: API RP 11L's allowance over the mean of the up- and downstroke static loads in its
+#: design counterbalance effect ([API11L]).
+RP11L_COUNTERBALANCE_FACTOR = 1.06
+
+
+def rp11l_counterbalance_effect(buoyant_rod_weight: float, fluid_load: float) -> float:
+    """The counterbalance effect API RP 11L recommends for a design [N]:
+    CBE = 1.06 (W_rf + F_o/2), the mean of the static upstroke (W_rf + F_o) and downstroke
+    (W_rf) loads with 6 % added ([API11L]).
+
+    Parameters
+    ----------
+    buoyant_rod_weight : float
+        W_rf, the rods with couplings in the well fluid [N].
+    fluid_load : float
+        F_o, the fluid load on the plunger [N].
+
+    Returns
+    -------
+    float
+        CBE [N].
+
+    References
+    ----------
+    [API11L].
+
+    Examples
+    --------
+    The example of [RP11LXLS] (7000 ft of rod 76, 30.6 % 7/8 in at 2.224 lb/ft over 3/4 in
+    at 1.634 lb/ft, G = 1, 1.25 in plunger): W_r = 7000 (0.306 x 2.224 + 0.694 x 1.634)
+    = 12 701.8 lb, W_rf = W_r (1 - 0.128) = 11 076.0 lb, F_o = 0.340 x 1.25² x 7000
+    = 3718.75 lb; CBE = 1.06 (11 076.0 + 1859.4) = 13 711.4 lb.
+
+    >>> lbf = 4.4482216152605
+    >>> wrf = 7000 * (0.306 * 2.224 + 0.694 * 1.634) * (1 - 0.128) * lbf
+    >>> round(rp11l_counterbalance_effect(wrf, 0.340 * 1.25**2 * 7000 * lbf) / lbf, 1)
+    13711.4
+    """
+    return RP11L_COUNTERBALANCE_FACTOR * (buoyant_rod_weight + 0.5 * fluid_load)
+
+
 def counterbalance_effect(torque_factor_at_test: float, balance: Counterbalance, test_angle: float = math.pi / 2) -> float:
     """Counterbalance effect CBE [N]: the polished-rod load the counterbalance holds at the test angle.
 
