@@ -78,6 +78,17 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
                           "kgf/m": KILOGRAM_FORCE, "kg/m": KILOGRAM_FORCE},
 }
 
+#: Other spellings of the units above, normalised text -> key: English names, and the
+#: Cyrillic abbreviations of GOST drawings and passports (мм, кгс, об/мин, ...).
+UNIT_SPELLINGS = {
+    "meter": "m", "meters": "m", "metre": "m", "metres": "m", "millimeter": "mm", "millimeters": "mm",
+    "millimetre": "mm", "millimetres": "mm", "inch": "in", "inches": "in", "foot": "ft", "feet": "ft",
+    "degree": "deg", "degrees": "deg", "radian": "rad", "radians": "rad", "r/min": "rpm", "rev/min": "rpm",
+    "м": "m", "мм": "mm", "см": "cm", "км": "km", "кг": "kg", "т": "t", "н": "n", "кн": "kn", "кгс": "kgf",
+    "тс": "tf", "н*м": "n*m", "кн*м": "kn*m", "кгс*м": "kgf*m", "кг*м2": "kg*m2", "об/мин": "rpm", "град": "deg",
+    "вт": "w", "квт": "kw", "кг/м3": "kg/m3", "па": "pa", "кпа": "kpa", "мпа": "mpa", "гпа": "gpa", "бар": "bar",
+}
+
 #: A unit to suggest when one is missing, per dimension.
 _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
                   "rotational_speed": "rpm", "angle": "deg", "rotational_stiffness": "N*m/rad", "power": "kW", "density": "kg/m3",
@@ -90,20 +101,22 @@ SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "momen
              "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
              "pressure": "Pa", "weight_per_length": "N/m"}
 
-_NUMBER = re.compile(r"^\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*?)\s*$")
+_NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 
 
 def _normalise_unit(text: str) -> str:
-    """Fold the spellings of a unit: case, multiplication dots or spaces, superscripts.
+    """Fold the spellings of a unit: case, multiplication dots or spaces, superscripts, an
+    abbreviation's final dot (``"in."``) and the names of :data:`UNIT_SPELLINGS`.
 
     A space between two symbols multiplies them (``"N m"`` is N*m), so ``"m m"`` is m*m,
     an area, never mm.
     """
-    text = re.sub(r"\s*([·⋅×.*/^])\s*", r"\1", text.strip().lower())
+    text = re.sub(r"\s*([·⋅×.*/^])\s*", r"\1", text.strip().lower().removesuffix("."))
     text = re.sub(r"\s+", "*", text)
     for dot in ("·", "⋅", "×", "."):
         text = text.replace(dot, "*")
-    return text.replace("²", "2").replace("³", "3").replace("^", "").replace("°", "deg")
+    text = text.replace("²", "2").replace("³", "3").replace("^", "").replace("°", "deg")
+    return UNIT_SPELLINGS.get(text, text)
 
 
 def _a(dimension: str) -> str:
@@ -144,6 +157,7 @@ def parse_quantity(value: object, dimension: str, require_unit: bool = False) ->
         return float(value)
     if not isinstance(value, str):
         raise ValueError(f"expected a number or a string with a unit, got {type(value).__name__}")
+    value = value.replace("\u2212", "-")  # the minus sign of typeset documents
     if re.search(r"\d,\d", value):
         raise ValueError(f"{value!r} has a decimal comma, which is ambiguous: write it with a point")
     match = _NUMBER.match(value)

@@ -149,6 +149,8 @@ def test_plain_numbers_are_si(value, expected):
         ("3 furlong", "length", "unknown unit"),
         ("3 parsec", "length", "unknown unit 'parsec'"),
         ("abc", "length", "not a number"),
+        ("\u0663 m", "length", "not a number"),  # an Arabic-Indic 3: digits are 0-9 only
+        ("3 \u043c\u0435\u0442\u0440", "length", "unknown unit"),  # not one of the abbreviations
         ("m 3", "length", "not a number"),
         ("", "length", "not a number"),
         (True, "length", "boolean"),
@@ -203,3 +205,19 @@ def test_output_units_si_system_is_identity(quantity, suffix):
     unit = output_unit(quantity, "si")
     assert unit.suffix == suffix
     assert unit.scale == 1.0
+
+
+@pytest.mark.parametrize(("text", "dimension", "same_as"), [
+    ("3.5 metres", "length", "3.5 m"), ("3.5 meter", "length", "3.5 m"), ("137.5 inches", "length", "137.5 in"),
+    ("137.5 in.", "length", "137.5 in"), ("11.5 feet", "length", "11.5 ft"), ("11.5 ft.", "length", "11.5 ft"),
+    ("45 degrees", "angle", "45 deg"), ("1460 r/min", "rotational_speed", "1460 rpm"),
+    ("1460 rev/min", "rotational_speed", "1460 rpm"),
+    # the Cyrillic abbreviations of GOST documents
+    ("3500 \u043c\u043c", "length", "3500 mm"), ("1460 \u043e\u0431/\u043c\u0438\u043d", "rotational_speed", "1460 rpm"),
+    ("8 \u0442\u0441", "force", "8 tf"), ("4000 \u043a\u0433\u0441\u00b7\u043c", "torque", "4000 kgf*m"),
+    ("30 \u043a\u0412\u0442", "power", "30 kW"), ("850 \u043a\u0433/\u043c\u00b3", "density", "850 kg/m3"),
+    ("5 \u041c\u041f\u0430", "pressure", "5 MPa"),
+    ("\u22125 m", "length", "-5 m"),  # the minus sign of typeset text
+])
+def test_other_spellings_are_the_same_unit(text, dimension, same_as):
+    assert parse_quantity(text, dimension) == parse_quantity(same_as, dimension)
