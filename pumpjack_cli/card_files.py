@@ -27,7 +27,7 @@ from .core.beam.card import (Card, RotationFit, card_from_angles, crank_angle_fr
                              largest_gap, loop_work, upstroke_points)
 from .core.beam.geometry import CLOCKWISE, Linkage
 from .errors import CardError
-from .quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
+from .quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, UNIT_SPELLINGS
 from .text_input import display_name, read_text
 
 __all__ = ["CardError", "CardReading", "check_speed", "parse_card_columns", "read_card"]
@@ -64,11 +64,12 @@ MAX_BYTES = 10_000_000
 #: before it can overflow the computation.
 LIMITS = {"load": (1e7, "10 MN"), "position": (1e3, "1 km")}
 
-#: Units of each column's dimension: lower-case spelling -> factor to SI.
+#: Units of each column's dimension: lower-case spelling -> factor to SI (and the spellings of
+#: :data:`~pumpjack_cli.quantities.UNIT_SPELLINGS`, the Cyrillic abbreviations among them).
 _UNITS = {
     "angle": {"deg": math.pi / 180.0, "degree": math.pi / 180.0, "degrees": math.pi / 180.0, "°": math.pi / 180.0,
               "rad": 1.0},
-    "time": {"s": 1.0, "sec": 1.0, "ms": 1e-3, "min": 60.0},
+    "time": {"s": 1.0, "sec": 1.0, "ms": 1e-3, "min": 60.0, "с": 1.0, "мс": 1e-3, "мин": 60.0},
     "length": {"m": 1.0, "mm": 1e-3, "cm": 1e-2, "in": INCH, "ft": FOOT},
     "force": {"n": 1.0, "kn": 1e3, "lb": POUND_FORCE, "lbs": POUND_FORCE, "lbf": POUND_FORCE,
               "klb": 1e3 * POUND_FORCE, "klbs": 1e3 * POUND_FORCE, "kip": 1e3 * POUND_FORCE,
@@ -180,6 +181,7 @@ def _unit(unit: str | None, kind: str, default_units: str | None, where: str) ->
         raise CardError(f"{where} names no unit: write it in the header ({kind}_{si}, {kind.capitalize()} ({field})) "
                         f"or give --card-units si or field")
     key = _DEFAULT_UNITS[default_units][dimension] if unit is None else unit.strip().lower().rstrip(".")
+    key = UNIT_SPELLINGS.get(key, key)
     if key not in _UNITS[dimension]:
         raise CardError(f"{where} has unit {unit!r}, not a unit of {dimension} ({', '.join(_UNITS[dimension])})")
     return (key if unit is None else unit.strip()), _UNITS[dimension][key]

@@ -135,6 +135,15 @@ def test_mapped_columns():
     assert_same_card(read_text(text, columns=mapping))
 
 
+def test_mapped_cyrillic_headers_with_units_and_decimal_commas():
+    """A Russian-language export (semicolons, decimal commas, units in brackets written in
+    Cyrillic: с, мм, кН), named by --card-columns: the same card."""
+    text = table(["Время (с)", "Ход (мм)", "Нагрузка (кН)"], [TIME, POSITION / 1e-3, LOAD / 1e3], delimiter=";",
+                 decimal=",")
+    mapping = parse_card_columns("time=Время (с),position=Ход (мм),load=Нагрузка (кН)")
+    assert_same_card(read_text(text, columns=mapping))
+
+
 def test_mapped_columns_without_units_take_the_default_units():
     text = table(["Weg", "Kraft"], [POSITION / INCH, LOAD / POUND_FORCE])
     reading = read_text(text, columns={"position": "Weg", "load": "Kraft"}, default_units="field")
