@@ -17,7 +17,7 @@ import typer
 from typer.core import TyperGroup
 
 from . import __version__
-from .errors import PumpjackError, take_warnings
+from .errors import PumpjackError, collected_warnings
 from .text_input import forget_inputs
 
 #: Subcommands: name -> (module under pumpjack_cli.commands, function, one-line summary).
@@ -116,30 +116,30 @@ def main(argv: list[str] | None = None) -> int:
     debug = "--debug" in args
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
     command = typer.main.get_command(app)
-    take_warnings()
     forget_inputs()
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
-            code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)
-    except (PumpjackError, typer.TyperException) as exc:
-        if debug:
-            raise
-        message = exc.format_message() if isinstance(exc, typer.TyperException) else str(exc)
-        return _fail(" ".join(message.split()))
-    except BrokenPipeError:
-        # The reader of a pipe (`| head`) went away: stop quietly, as cat does.
-        from .render import drop_stdout
+    with collected_warnings() as noted:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", RuntimeWarning)
+                code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)
+        except (PumpjackError, typer.TyperException) as exc:
+            if debug:
+                raise
+            message = exc.format_message() if isinstance(exc, typer.TyperException) else str(exc)
+            return _fail(" ".join(message.split()))
+        except BrokenPipeError:
+            # The reader of a pipe (`| head`) went away: stop quietly, as cat does.
+            from .render import drop_stdout
 
-        drop_stdout()
-        return 1
-    except MemoryError:
-        if debug:
-            raise
-        return _fail("not enough memory for this computation: use fewer --steps or a smaller input")
-    except KeyboardInterrupt:
-        return 130
-    for warning in take_warnings():
+            drop_stdout()
+            return 1
+        except MemoryError:
+            if debug:
+                raise
+            return _fail("not enough memory for this computation: use fewer --steps or a smaller input")
+        except KeyboardInterrupt:
+            return 130
+    for warning in noted:
         sys.stderr.write(f"pumpjack: warning: {warning}\n")
     return code if isinstance(code, int) else 0
 

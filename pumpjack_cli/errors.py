@@ -6,6 +6,10 @@ boundary in :mod:`pumpjack_cli.cli` prints ``pumpjack: error: <message>`` and ex
 with code 2. Programming errors are left to raise normally.
 """
 
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
+
 
 class PumpjackError(Exception):
     """A problem with the user's input, reported without a traceback."""
@@ -43,19 +47,28 @@ class PredictionError(PumpjackError, ValueError):
     """A well whose cards cannot be predicted: rod string, pump or fluid data, or a solve that does not converge."""
 
 
-#: Warnings of the run in progress (oldest first). The CLI prints them once the run has
-#: succeeded and drops them when it fails, so that a failure is one line on stderr; a
-#: batch run files them with each card's outcome.
-_WARNINGS: list[str] = []
+#: Collectors of warnings, innermost last (see :func:`collected_warnings`).
+_COLLECTORS: list[list[str]] = []
 
 
 def warn(message: str) -> None:
-    """Note a warning for the user: one line, runs of whitespace collapsed."""
-    _WARNINGS.append(" ".join(message.split()))
+    """A warning for the user, one line (runs of whitespace collapsed): noted by the
+    innermost :func:`collected_warnings`, else written to stderr at once."""
+    text = " ".join(message.split())
+    if _COLLECTORS:
+        _COLLECTORS[-1].append(text)
+    else:
+        sys.stderr.write(f"pumpjack: warning: {text}\n")
 
 
-def take_warnings() -> list[str]:
-    """The warnings noted since the last call, oldest first; clears them."""
-    taken = list(_WARNINGS)
-    _WARNINGS.clear()
-    return taken
+@contextmanager
+def collected_warnings() -> Iterator[list[str]]:
+    """Collect the warnings of a run instead of printing them: the CLI prints them once the
+    run has succeeded and drops them when it fails (a failure is one line on stderr); a
+    batch run files them with each card's outcome."""
+    noted: list[str] = []
+    _COLLECTORS.append(noted)
+    try:
+        yield noted
+    finally:
+        _COLLECTORS.remove(noted)

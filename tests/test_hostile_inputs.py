@@ -405,3 +405,18 @@ def test_export_onto_its_own_store_is_refused(run_cli, tmp_path):
     code, out, err = run_cli("batch", "export", "--store", store, "-o", store)
     one_line_error(code, out, err, "is the results store this run read")
     assert store.read_bytes() == before
+
+
+def test_warnings_outside_the_cli_go_to_stderr_at_once(capsys):
+    """Used as a library (no collector), a warning is written to stderr when it arises;
+    inside collected_warnings it is kept by the innermost collector only."""
+    from pumpjack_cli.errors import collected_warnings, warn
+
+    warn("first   one")
+    assert capsys.readouterr().err == "pumpjack: warning: first one\n"
+    with collected_warnings() as outer:
+        warn("a")
+        with collected_warnings() as inner:
+            warn("b")
+        warn("c")
+    assert (outer, inner, capsys.readouterr().err) == (["a", "c"], ["b"], "")

@@ -24,7 +24,7 @@ import tomllib
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
-from ..errors import PumpjackError, take_warnings
+from ..errors import PumpjackError, collected_warnings
 from ..quantities import parse_quantity
 from ..results import check_finite, converted_summary
 from ..text_input import read_text
@@ -283,28 +283,24 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     card = _CardOnce(job.card, options.card_units)
     outcomes = []
     for analysis in options.analyses:
-        take_warnings()
-        try:
-            unit = _unit(job)
-            if analysis == "torque":
-                result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
-            else:
-                result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
-            check_finite(result)
-            outcomes.append(Outcome(analysis, "ok", "", _noted(), converted_summary(result, "si")))
-        except PumpjackError as exc:
-            outcomes.append(Outcome(analysis, "error", " ".join(str(exc).split()), _noted(), {}))
-        except MemoryError:
-            outcomes.append(Outcome(analysis, "error", "not enough memory for this card", _noted(), {}))
-        except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
-            outcomes.append(Outcome(analysis, "error", f"internal error ({type(exc).__name__}: "
-                                    f"{' '.join(str(exc).split())}); please report it", _noted(), {}))
+        with collected_warnings() as noted:
+            try:
+                unit = _unit(job)
+                if analysis == "torque":
+                    result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
+                else:
+                    result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
+                check_finite(result)
+                status, error, summary = "ok", "", converted_summary(result, "si")
+            except PumpjackError as exc:
+                status, error, summary = "error", " ".join(str(exc).split()), {}
+            except MemoryError:
+                status, error, summary = "error", "not enough memory for this card", {}
+            except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
+                status, error, summary = "error", (f"internal error ({type(exc).__name__}: "
+                                                   f"{' '.join(str(exc).split())}); please report it"), {}
+        outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary))
     return outcomes
-
-
-def _noted() -> str:
-    """The warnings of the analysis just run, in one field."""
-    return " | ".join(take_warnings())
 
 
 def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[int, list[dict]]]:
