@@ -176,3 +176,38 @@ def test_counterweight_moment_below_the_arms_alone():
 def test_optimisers_reject_bad_arrays(call):
     with pytest.raises(TorqueError):
         call()
+
+
+def test_equal_peaks_is_a_root_that_brute_force_confirms():
+    """Random piecewise-linear problems (ties in the sines and the torques included): the
+    moment returned makes the up- and downstroke peaks equal to round-off, and a dense scan
+    of g = U - D over [0, 2 M] finds no root of smaller largest |T|; a problem without a
+    returned root has g of one sign on the scan."""
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        n = int(rng.integers(4, 300))
+        theta = np.sort(rng.uniform(0.0, 2 * np.pi, n))
+        up = theta < rng.uniform(2.5, 3.8)
+        if up.all() or not up.any():
+            continue
+        sine = np.sin(theta - rng.uniform(-0.3, 0.3))
+        sine = np.round(sine, 1) if rng.random() < 0.3 else sine
+        base = rng.normal(0.0, 1.0, n).cumsum() * 1e4 + rng.normal(0.0, 5e4) * sine
+        base = np.round(base, -3) if rng.random() < 0.2 else base
+
+        def g(m):
+            return np.max(base[up, None] - m * sine[up, None], axis=0) - np.max(base[~up, None] - m * sine[~up, None],
+                                                                                  axis=0)
+
+        moment = equal_peaks_moment(base, sine, up)
+        scan = np.linspace(0.0, 2 * moment if moment else 1e6, 4001)
+        values = g(scan)
+        if moment is None:
+            assert np.all(values > 0) or np.all(values < 0)
+            continue
+        scale = np.max(np.abs(base)) + moment * np.max(np.abs(sine))
+        assert abs(float(g(np.array([moment]))[0])) < 1e-9 * scale
+        crossings = scan[:-1][values[:-1] * values[1:] <= 0]
+        best = np.max(np.abs(base - moment * sine))
+        for m in crossings:  # each scanned crossing is within a step of a root no better than the one returned
+            assert np.max(np.abs(base - m * sine)) >= best - (scan[1] - scan[0]) * np.max(np.abs(sine)) - 1e-9 * scale

@@ -116,20 +116,17 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     if up.shape != base.shape or not np.any(up) or np.all(up):
         raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
     down = ~up
-    base_up, sine_up, base_down, sine_down = base[up], sine[up], base[down], sine[down]
-
-    def g(moment: float) -> float:
-        return float(np.max(base_up - moment * sine_up)) - float(np.max(base_down - moment * sine_down))
-
-    su, au, cu = _asymptote(base[up], sine[up])
-    sd, ad, cd = _asymptote(base[down], sine[down])
+    lines = (*_front(base[up], sine[up]), *_front(base[down], sine[down]))
+    base_up, sine_up, base_down, sine_down = lines
+    su, au, cu = _asymptote(base_up, sine_up)
+    sd, ad, cd = _asymptote(base_down, sine_down)
     m_hi = max(cu, cd, 0.0)
     grid = np.linspace(0.0, m_hi, _ROOT_SAMPLES) if m_hi > 0 else np.zeros(1)
     values = (np.max(base_up[None, :] - grid[:, None] * sine_up[None, :], axis=1)
               - np.max(base_down[None, :] - grid[:, None] * sine_down[None, :], axis=1))
     roots = [float(m) for m, v in zip(grid, values) if v == 0.0]
     for k in np.flatnonzero(values[:-1] * values[1:] < 0):
-        roots.append(_bisect_root(g, float(grid[k]), float(grid[k + 1]), base, sine, up))
+        roots.append(_bisect_root(float(grid[k]), float(grid[k + 1]), lines))
     slope = sd - su
     if slope != 0.0:
         tail = m_hi - float(values[-1]) / slope
@@ -140,24 +137,50 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     return min(roots, key=lambda m: float(np.max(np.abs(_lines(base, sine, m)))))
 
 
-def _bisect_root(g, lo: float, hi: float, base: np.ndarray, sine: np.ndarray, up: np.ndarray) -> float:
-    """Root of the piecewise-linear g in [lo, hi] (g(lo) g(hi) < 0), exact on the final piece."""
-    g_lo = g(lo)
+def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The lines a_i - M s_i that can be the largest for some M >= 0: line j is at or above
+    line i for every M >= 0 when a_j >= a_i and s_j <= s_i, so only the lines above every
+    line of smaller (or equal, earlier) s are kept. The maximum over them is the maximum
+    over all lines, to the bit (rounding is monotonic)."""
+    order = np.argsort(sine, kind="stable")
+    a = base[order]
+    before = np.concatenate(([-np.inf], np.maximum.accumulate(a)[:-1]))
+    keep = np.sort(order[a > before])
+    return base[keep], sine[keep]
+
+
+def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, int, int]:
+    """g = U - D at ``moment`` and the indices of the active up- and downstroke lines."""
+    base_up, sine_up, base_down, sine_down = lines
+    up, down = base_up - moment * sine_up, base_down - moment * sine_down
+    i, j = int(np.argmax(up)), int(np.argmax(down))
+    return float(up[i]) - float(down[j]), i, j
+
+
+def _bisect_root(lo: float, hi: float, lines: tuple[np.ndarray, ...]) -> float:
+    """Root of the piecewise-linear g = U - D in [lo, hi] (g(lo) g(hi) < 0), for the up- and
+    downstroke lines (a, s, a, s): bisected until the same two lines are active at both ends
+    of the bracket (then g is linear on it: a line that leads at both ends of an interval
+    leads inside it), then their intersection, exact; at a kink that the float resolution
+    cannot split, the bracket's middle."""
+    base_up, sine_up, base_down, sine_down = lines
+    g_lo, iu_lo, id_lo = _peaks(lines, lo)
+    _, iu_hi, id_hi = _peaks(lines, hi)
     for _ in range(_BISECTIONS):
+        if iu_lo == iu_hi and id_lo == id_hi:
+            break
         mid = 0.5 * (lo + hi)
         if mid <= lo or mid >= hi:
             break
-        g_mid = g(mid)
+        g_mid, iu_mid, id_mid = _peaks(lines, mid)
         if g_mid == 0.0:
             return mid
         if (g_mid > 0) == (g_lo > 0):
-            lo, g_lo = mid, g_mid
+            lo, g_lo, iu_lo, id_lo = mid, g_mid, iu_mid, id_mid
         else:
-            hi = mid
-    _, _, iu_lo, id_lo = _stroke_peaks(base, sine, up, lo)
-    _, _, iu_hi, id_hi = _stroke_peaks(base, sine, up, hi)
-    if iu_lo == iu_hi and id_lo == id_hi and sine[iu_lo] != sine[id_lo]:
-        return float((base[iu_lo] - base[id_lo]) / (sine[iu_lo] - sine[id_lo]))
+            hi, iu_hi, id_hi = mid, iu_mid, id_mid
+    if iu_lo == iu_hi and id_lo == id_hi and sine_up[iu_lo] != sine_down[id_lo]:
+        return float((base_up[iu_lo] - base_down[id_lo]) / (sine_up[iu_lo] - sine_down[id_lo]))
     return 0.5 * (lo + hi)
 
 
