@@ -20,6 +20,7 @@ marches the reversed string with the tension's sign flipped, the same equations.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -233,6 +234,7 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
     if position.ndim != 1:
         raise DownholeError("damping_for_pump_work takes one card of shape (N,)")
 
+    @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
     def excess(nu: float) -> float:
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
                          method=method, gravity=gravity, check=False)
@@ -280,6 +282,7 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
     if position.ndim != 1:
         raise DownholeError("damping_from_fluid_load takes one card of shape (N,)")
 
+    @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
     def excess(nu: float) -> float:
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
                          method=method, gravity=gravity, check=False)
