@@ -9,6 +9,7 @@ reports do not depend on ``--steps``.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -88,11 +89,21 @@ def uniform_speed(unit, reading: CardReading, spm: float | None) -> float:
     return crank_speed(unit, None) if speed is None else speed
 
 
+@functools.lru_cache(maxsize=8)
+def _crank_rates(linkage: Linkage, time: bytes, crank_angle: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """The fit of :func:`crank_rates_from_time` for a card's samples, kept (read-only) for the
+    next analysis of the same card (a batch runs torque and downhole on every card)."""
+    rates = crank_rates_from_time(linkage, np.frombuffer(time), np.frombuffer(crank_angle), CARD_HARMONICS)
+    for values in rates:
+        values.flags.writeable = False
+    return rates
+
+
 def _card_rotations(linkage: Linkage, reading: CardReading, thetas: list[np.ndarray]) -> list[CardRun]:
     """The crank speed and acceleration the card's time stamps give ([Takacs2016]), on each grid."""
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --rotation card needs a card with time stamps")
-    omega_s, alpha_s = crank_rates_from_time(linkage, reading.time, reading.crank_angle, CARD_HARMONICS)
+    omega_s, alpha_s = _crank_rates(linkage, reading.time.tobytes(), reading.crank_angle.tobytes())
     order = np.argsort(reading.crank_angle)
     angles = reading.crank_angle[order]
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
