@@ -203,6 +203,11 @@ def test_export_and_trend(run_cli, tmp_path):
         assert torque == results[(Path(card).name, "torque")]["peak_net_torque_n_m"]
     code, out, err = run_cli("batch", "trend", "--store", store, "--well", "no-such-well")
     assert code == 2 and "no-such-well" in err
+    for argv, fragment in ((("--analysis", "torgue"), "--analysis torgue: use one of torque, downhole"),
+                           (("--well", "no-such-well"), "--well no-such-well: no results for this well"),
+                           (("--well", "no-such-well", "--analysis", "downhole"), "no downhole results for this well")):
+        code, out, err = run_cli("batch", "export", "--store", store, *argv)
+        assert (code, out) == (2, "") and fragment in err and err.count("\n") == 1, err
 
 
 @pytest.mark.parametrize("content, fragment", [

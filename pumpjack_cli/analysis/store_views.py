@@ -6,6 +6,7 @@ from pathlib import Path
 
 from ..errors import PumpjackError
 from ..results import STORED, TEXT, Column, Result
+from .batch import ANALYSES
 from .store import FIXED, Store
 
 #: The summary numbers of `batch trend`, the consecutive-card view of a well: name, analysis.
@@ -26,11 +27,15 @@ TREND = (
 def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
     """Every stored row (of one analysis and one well if given): the fixed fields as text,
     the summary numbers as stored (SI, suffixed names), empty where a row has none."""
+    if analysis is not None and analysis not in ANALYSES:
+        raise PumpjackError(f"--analysis {analysis}: use one of {', '.join(ANALYSES)}")
     store = Store(path, create=False)
     try:
         names, rows = store.rows(well, analysis)
     finally:
         store.close()
+    if well is not None and not rows:
+        raise PumpjackError(f"--well {well}: no {analysis + ' ' if analysis else ''}results for this well in {path}")
     columns = tuple(Column(name, TEXT if name in FIXED else STORED, name.replace("_", " "),
                            [row[i] for row in rows]) for i, name in enumerate(names))
     return Result(f"{path}: {len(rows)} results", (), columns)
