@@ -21,6 +21,8 @@ TREND = (
     ("pump_fillage_percent", "downhole"),
     ("net_pump_stroke_m", "downhole"),
     ("pump_displacement_m3_d", "downhole"),
+    ("surface_card_work_j", "downhole"),
+    ("pump_card_work_j", "downhole"),
 )
 
 
