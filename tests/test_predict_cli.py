@@ -175,3 +175,13 @@ def test_bad_options_are_one_line(run_cli, argv, fragment):
     assert code == 2 and out == "", err
     assert err.startswith("pumpjack: error: ") and err.count("\n") == 1, err
     assert fragment in err, err
+
+
+def test_the_net_torque_plot_shows_the_gearbox_rating():
+    """SK8-3,5-4000's reducer is 4000 kgf·m ([GOST5866]): 39 226.6 N·m drawn at both signs."""
+    from pumpjack_cli.analysis.predict import WellOverrides, predict
+    from pumpjack_cli.config import load_unit
+
+    result = predict(load_unit("sk8-3.5-4000"), None, "uniform", 256, 0.1, WellOverrides(), 1.0)
+    (panel,) = [panel for panel in result.panels if panel.title == "net torque"]
+    assert panel.levels == (("gearbox rating", pytest.approx(4000 * 9.80665)), ("", pytest.approx(-4000 * 9.80665)))

@@ -28,7 +28,7 @@ from .card_runs import CardRun
 from .inputs import crank_columns, crank_speed, extreme_scalars, require
 from .machine import machine
 from .rods import goodman_panel, pump, rods, taper_summary, well_of
-from .torque import SUMMARY_STEPS, card_torque
+from .torque import SUMMARY_STEPS, card_torque, rating_levels, ratings
 
 #: Time samples per cycle of the predicted cards.
 DEFAULT_SAMPLES = 360
@@ -301,7 +301,7 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
         summary += _comparison(unit, found, samples)
     panels = [Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
                                         Curve("pump card", "pump_position", "pump_load")), x_label="position"),
-              Panel("net torque", (torque_column.name,), x="crank_angle"),
+              Panel("net torque", (torque_column.name,), x="crank_angle", levels=rating_levels(ratings(unit))),
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
