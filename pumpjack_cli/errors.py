@@ -7,6 +7,7 @@ with code 2. Programming errors are left to raise normally.
 """
 
 import sys
+import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -47,16 +48,24 @@ class PredictionError(PumpjackError, ValueError):
     """A well whose cards cannot be predicted: rod string, pump or fluid data, or a solve that does not converge."""
 
 
-#: Collectors of warnings, innermost last (see :func:`collected_warnings`).
-_COLLECTORS: list[list[str]] = []
+#: Collectors of warnings of this thread, innermost last (see :func:`collected_warnings`);
+#: per thread, so that the cards a Dask worker analyses in parallel keep their own.
+_LOCAL = threading.local()
+
+
+def _collectors() -> list[list[str]]:
+    if not hasattr(_LOCAL, "stack"):
+        _LOCAL.stack = []
+    return _LOCAL.stack
 
 
 def warn(message: str) -> None:
     """A warning for the user, one line (runs of whitespace collapsed): noted by the
-    innermost :func:`collected_warnings`, else written to stderr at once."""
+    innermost :func:`collected_warnings` of this thread, else written to stderr at once."""
     text = " ".join(message.split())
-    if _COLLECTORS:
-        _COLLECTORS[-1].append(text)
+    stack = _collectors()
+    if stack:
+        stack[-1].append(text)
     else:
         sys.stderr.write(f"pumpjack: warning: {text}\n")
 
@@ -67,8 +76,9 @@ def collected_warnings() -> Iterator[list[str]]:
     run has succeeded and drops them when it fails (a failure is one line on stderr); a
     batch run files them with each card's outcome."""
     noted: list[str] = []
-    _COLLECTORS.append(noted)
+    stack = _collectors()
+    stack.append(noted)
     try:
         yield noted
     finally:
-        _COLLECTORS.remove(noted)
+        stack.pop()

@@ -412,11 +412,27 @@ def test_warnings_outside_the_cli_go_to_stderr_at_once(capsys):
     inside collected_warnings it is kept by the innermost collector only."""
     from pumpjack_cli.errors import collected_warnings, warn
 
+    import threading
+
     warn("first   one")
     assert capsys.readouterr().err == "pumpjack: warning: first one\n"
     with collected_warnings() as outer:
+        with collected_warnings() as empty:
+            pass
         warn("a")
         with collected_warnings() as inner:
             warn("b")
         warn("c")
-    assert (outer, inner, capsys.readouterr().err) == (["a", "c"], ["b"], "")
+        elsewhere = []
+        thread = threading.Thread(target=lambda: elsewhere.append(_collect_in_a_thread()))
+        thread.start()
+        thread.join()
+    assert (outer, empty, inner, elsewhere, capsys.readouterr().err) == (["a", "c"], [], ["b"], [["t"]], "")
+
+
+def _collect_in_a_thread() -> list[str]:
+    from pumpjack_cli.errors import collected_warnings, warn
+
+    with collected_warnings() as noted:
+        warn("t")
+    return noted
