@@ -28,7 +28,7 @@ from .card_runs import CardRun
 from .inputs import crank_columns, crank_speed, extreme_scalars, require
 from .machine import machine
 from .rods import goodman_panel, pump, rods, taper_summary, well_of
-from .torque import SUMMARY_STEPS, card_torque, rating_levels, ratings
+from .torque import SUMMARY_STEPS, card_torque
 
 #: Time samples per cycle of the predicted cards.
 DEFAULT_SAMPLES = 360
@@ -277,6 +277,7 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
     summary += [s for s in torque.summary if s.name not in _TORQUE_REPEATS]
     named = {c.name: c for c in torque.columns}
     torque_column = named.get("net_torque", named["recommended_net_torque"])
+    rating = next(panel.levels for panel in torque.panels if panel.title == "net torque")
     columns = [
         *crank_columns(cards.crank_angle, cards.time, found.crank_speed, found.crank_acceleration),
         Column("position", "length", "polished-rod position above the bottom of the stroke",
@@ -301,7 +302,7 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
         summary += _comparison(unit, found, samples)
     panels = [Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
                                         Curve("pump card", "pump_position", "pump_load")), x_label="position"),
-              Panel("net torque", (torque_column.name,), x="crank_angle", levels=rating_levels(ratings(unit))),
+              Panel("net torque", (torque_column.name,), x="crank_angle", levels=rating),
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))

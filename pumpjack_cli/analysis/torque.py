@@ -296,15 +296,10 @@ def _clip(bound: np.ndarray, load: np.ndarray) -> np.ndarray:
     return np.clip(bound, np.min(load) - span, np.max(load) + span)
 
 
-def rating_levels(rated: Ratings) -> tuple[tuple[str, float], ...]:
-    """The gearbox rating [N·m], both signs, as the levels of a net-torque panel."""
-    return () if rated.gearbox_torque is None else (("gearbox rating", rated.gearbox_torque),
-                                                    ("", -rated.gearbox_torque))
-
-
 def _panels(columns: list[Column], rated: Ratings, moment_known: bool) -> tuple[Panel, ...]:
     names = {c.name for c in columns}
-    levels = rating_levels(rated)
+    levels = () if rated.gearbox_torque is None else (("gearbox rating", rated.gearbox_torque),
+                                                      ("", -rated.gearbox_torque))
     panels = []
     if "permissible_load_min" in names:
         panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),

@@ -173,12 +173,12 @@ def error_message(error: dict, model: Any = None) -> str:
         value = parse_quantity(error["input"], dimension)
     except ValueError:
         return message
-    unit = SI_LABELS[dimension]
+    unit = f" {SI_LABELS[dimension]}" if SI_LABELS[dimension] else ""
     if dimension == "angle":  # radians, and the degrees a unit file or an option is written in
         limit = next(iter(error.get("ctx", {}).values()), None)
         shown = "" if not isinstance(limit, (int, float)) else f" ({math.degrees(limit):.4g} deg)"
         return f"{message} rad{shown}; got {value:.6g} rad ({math.degrees(value):.6g} deg)"
-    return f"{message} {unit}; got {value:.6g} {unit}".replace(" ;", ";")
+    return f"{message}{unit}; got {value:.6g}{unit}"
 
 
 def format_validation_error(source: str, error, model: Any = None) -> str:

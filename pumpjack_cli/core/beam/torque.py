@@ -395,8 +395,8 @@ def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: 
     _finite("exact torque basis", theta)
     size = kinetostatics.BLOCK // 4
     static, load, speed, acceleration = np.concatenate(
-        [_basis_block(spatial, masses, theta[start:start + size]) for start in range(0, theta.size, size)]
-        or [_basis_block(spatial, masses, theta)], axis=1)
+        [_basis_block(spatial, masses, theta[start:start + size]) for start in range(0, max(theta.size, 1), size)],
+        axis=1)
     return ExactTorqueBasis(theta, static, load - static, speed - static, acceleration - static)
 
 
