@@ -48,13 +48,18 @@ def _lines(base: np.ndarray, sine: np.ndarray, moment: float) -> np.ndarray:
     return base - moment * sine
 
 
-def _stroke_peaks(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray, moment: float) -> tuple[float, float, int, int]:
-    """Largest net torque of the upstroke and of the downstroke at ``moment``, and where."""
-    torque = _lines(base, sine, moment)
-    up = np.flatnonzero(upstroke)
-    down = np.flatnonzero(~upstroke)
-    i, j = up[np.argmax(torque[up])], down[np.argmax(torque[down])]
-    return float(torque[i]), float(torque[j]), int(i), int(j)
+def _strokes(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The lines (a, s) of the upstroke and of the downstroke: (a_up, s_up, a_down, s_down)."""
+    return base[upstroke], sine[upstroke], base[~upstroke], sine[~upstroke]
+
+
+def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, float, int, int]:
+    """Largest net torque of the upstroke and of the downstroke at ``moment``, and the
+    indices of those lines in ``lines`` (:func:`_strokes`)."""
+    base_up, sine_up, base_down, sine_down = lines
+    up, down = base_up - moment * sine_up, base_down - moment * sine_down
+    i, j = int(np.argmax(up)), int(np.argmax(down))
+    return float(up[i]), float(down[j]), i, j
 
 
 def _asymptote(base: np.ndarray, sine: np.ndarray) -> tuple[float, float, float]:
@@ -115,8 +120,8 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     up = np.asarray(upstroke, dtype=bool)
     if up.shape != base.shape or not np.any(up) or np.all(up):
         raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
-    down = ~up
-    lines = (*_front(base[up], sine[up]), *_front(base[down], sine[down]))
+    strokes = _strokes(base, sine, up)
+    lines = (*_front(*strokes[:2]), *_front(*strokes[2:]))
     base_up, sine_up, base_down, sine_down = lines
     su, au, cu = _asymptote(base_up, sine_up)
     sd, ad, cd = _asymptote(base_down, sine_down)
@@ -149,14 +154,6 @@ def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return base[keep], sine[keep]
 
 
-def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, int, int]:
-    """g = U - D at ``moment`` and the indices of the active up- and downstroke lines."""
-    base_up, sine_up, base_down, sine_down = lines
-    up, down = base_up - moment * sine_up, base_down - moment * sine_down
-    i, j = int(np.argmax(up)), int(np.argmax(down))
-    return float(up[i]) - float(down[j]), i, j
-
-
 def _bisect_root(lo: float, hi: float, lines: tuple[np.ndarray, ...]) -> float:
     """Root of the piecewise-linear g = U - D in [lo, hi] (g(lo) g(hi) < 0), for the up- and
     downstroke lines (a, s, a, s): bisected until the same two lines are active at both ends
@@ -164,15 +161,17 @@ def _bisect_root(lo: float, hi: float, lines: tuple[np.ndarray, ...]) -> float:
     leads inside it), then their intersection, exact; at a kink that the float resolution
     cannot split, the bracket's middle."""
     base_up, sine_up, base_down, sine_down = lines
-    g_lo, iu_lo, id_lo = _peaks(lines, lo)
-    _, iu_hi, id_hi = _peaks(lines, hi)
+    u, d, iu_lo, id_lo = _peaks(lines, lo)
+    g_lo = u - d
+    _, _, iu_hi, id_hi = _peaks(lines, hi)
     for _ in range(_BISECTIONS):
         if iu_lo == iu_hi and id_lo == id_hi:
             break
         mid = 0.5 * (lo + hi)
         if mid <= lo or mid >= hi:
             break
-        g_mid, iu_mid, id_mid = _peaks(lines, mid)
+        u, d, iu_mid, id_mid = _peaks(lines, mid)
+        g_mid = u - d
         if g_mid == 0.0:
             return mid
         if (g_mid > 0) == (g_lo > 0):
@@ -373,7 +372,7 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     if criterion == "equal-peaks":
         moment = equal_peaks_moment(base, sine, up)
         if moment is None:
-            u, d, _, _ = _stroke_peaks(base, sine, up, 0.0)
+            u, d, _, _ = _peaks(_strokes(base, sine, up), 0.0)
             return BalanceRecommendation(criterion, None, None, None, None, None, None,
                                          f"no counterbalance moment M >= 0 makes the stroke peaks equal "
                                          f"(at M = 0 the upstroke peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)")
@@ -385,7 +384,7 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     else:
         moment = min_peak_moment(base, sine)
     torque = _lines(base, sine, moment)
-    u, d, _, _ = _stroke_peaks(base, sine, up, moment)
+    u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
     w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
     rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
     tf_test = float(linkage.front_arm * linkage.motion(np.array([test_angle])).beam_rate[0])
