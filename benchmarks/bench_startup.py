@@ -11,7 +11,8 @@ the script prints the median wall times and their ratios:
 * ``pumpjack kinematics sk8-3.5-4000 -f csv`` against the floor (aim: at most 1.3);
 * the same command's default terminal table against its CSV run (aim: at most 1.15);
 * ``pumpjack kinematics sk8-3.5-4000 --steps 1000000 -f csv -o FILE``: wall time and
-  peak resident memory of the process (aim: below 8 s and 350 MiB).
+  peak resident memory of the process (aim: below 8 s and 350 MiB);
+* the lower bounds of the first two aims (:data:`BOUNDS`), against the same floor.
 
 The processes run as after a normal install: Python's bytecode caches are written
 (``PYTHONDONTWRITEBYTECODE`` is removed from their environment; pip compiles the
@@ -41,6 +42,17 @@ COMMANDS = {
     "kinematics csv": [PUMPJACK, "kinematics", "sk8-3.5-4000", "-f", "csv"],
     "kinematics table": [PUMPJACK, "kinematics", "sk8-3.5-4000", "-f", "table"],
 }
+#: Lower bounds of the two aims, timed the same way: what any typer command pays, what
+#: reading the bundled unit files adds, and what validating one pydantic model adds to the floor.
+BOUNDS = {
+    "import typer": [sys.executable, "-c", "import typer"],
+    "import typer + the bundled TOML files": [
+        sys.executable, "-c", "import typer, tomllib, pumpjack_cli.configs as c, pathlib\n"
+        "for f in sorted(pathlib.Path(c.__path__[0]).glob('*.toml')): tomllib.loads(f.read_text())"],
+    "floor + one pydantic model": [
+        sys.executable, "-c", "import numpy, pydantic, typer\nfrom pydantic import BaseModel\n"
+        "class M(BaseModel):\n    x: float\nM(x=1)"],
+}
 
 
 ENVIRONMENT = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
@@ -64,12 +76,13 @@ def main() -> None:
     repeat = parser.parse_args().repeat
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, {platform.python_implementation()} "
           f"{platform.python_version()}, {platform.system()} {platform.release()}")
-    times: dict[str, list[float]] = {"floor": [], **{name: [] for name in COMMANDS}}
-    for argv in COMMANDS.values():
+    timed = {**COMMANDS, **BOUNDS}
+    times: dict[str, list[float]] = {"floor": [], **{name: [] for name in timed}}
+    for argv in timed.values():
         run(argv)
     for _ in range(repeat):
         times["floor"].append(run(FLOOR)[0])
-        for name, argv in COMMANDS.items():
+        for name, argv in timed.items():
             times[name].append(run(argv)[0])
     median = {name: statistics.median(values) for name, values in times.items()}
     floor = median["floor"]
@@ -79,6 +92,8 @@ def main() -> None:
     table = median["kinematics table"] / median["kinematics csv"]
     print(f"pumpjack kinematics table: {median['kinematics table'] * 1e3:.0f} ms = {table:.2f} x the CSV run "
           f"(aim <= 1.15)")
+    for name in BOUNDS:
+        print(f"bound: {name}: {median[name] * 1e3:.0f} ms = {median[name] / floor:.2f} x floor")
     with tempfile.TemporaryDirectory() as folder:
         big = [PUMPJACK, "kinematics", "sk8-3.5-4000", "--steps", "1000000", "-f", "csv", "-o",
                str(Path(folder) / "k.csv")]
