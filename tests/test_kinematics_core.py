@@ -35,8 +35,7 @@ OMEGA = 1.1422
 def _exact(lk: Linkage, theta, omega, epsilon=0.0):
     """Polished-rod motion at arbitrary crank angles via motion() + rod_motion()."""
     m = motion(lk, np.asarray(theta, dtype=float))
-    return rod_motion(lk, m.beam_angle, m.beam_rate, m.beam_rate2, dead_positions(lk).beam_angle_bottom,
-                      omega, epsilon)
+    return rod_motion(m, omega, epsilon)
 
 
 # --- exact motion: derivatives ------------------------------------------------------

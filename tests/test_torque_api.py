@@ -20,7 +20,7 @@ from pumpjack_cli.core.beam.counterbalance import (Counterbalance, counterbalanc
 from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
 from pumpjack_cli.core.beam.masses import MassModel
 from pumpjack_cli.core.beam.torque import (api_net_torque, compare_methods, exact_net_torque, net_torque,
-                                           permissible_load, torque_factor, torque_methods)
+                                           permissible_load, torque_methods)
 from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import TorqueError
@@ -129,7 +129,7 @@ def test_exact_equals_api_without_masses(name):
     both = compare_methods(spatial, ZERO, THETA, load, omega=1.2, alpha=0.05)
     peak = np.max(np.abs(both.api))
     assert np.max(np.abs(both.api - both.exact)) <= 1e-9 * peak
-    assert np.max(np.abs(both.api - torque_factor(spatial.planar, THETA) * load)) <= 1e-12 * peak
+    assert np.max(np.abs(both.api - spatial.planar.torque_factor(THETA) * load)) <= 1e-12 * peak
 
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
@@ -173,8 +173,8 @@ def test_counterbalance_effect_balances_the_torque_at_the_test_angle():
     lk = load_unit("sk8-3.5-4000").geometry.linkage()
     bal = Counterbalance(-800.0, 60e3, 0.0)
     test = np.array([math.pi / 2])
-    cbe = counterbalance_effect(float(torque_factor(lk, test)[0]), bal)
-    assert api_net_torque(test, torque_factor(lk, test), np.array([cbe]), bal)[0] == pytest.approx(0.0, abs=1e-9)
+    cbe = counterbalance_effect(float(lk.torque_factor(test)[0]), bal)
+    assert api_net_torque(test, lk.torque_factor(test), np.array([cbe]), bal)[0] == pytest.approx(0.0, abs=1e-9)
     with pytest.raises(TorqueError, match="test angle"):
         counterbalance_effect(0.0, bal)
 
@@ -184,7 +184,7 @@ def test_permissible_load_by_hand():
     TF < 0 (bounds swapped), and loads on the bounds give |T| = T_r exactly."""
     lk = load_unit("7sk12-2.5-5600").geometry.linkage()
     theta = np.radians([40.0, 90.0, 150.0, 230.0, 300.0])
-    tf = torque_factor(lk, theta)
+    tf = lk.torque_factor(theta)
     bal = Counterbalance(700.0, 80e3, 0.0)
     rating = 5600 * 9.80665
     low, high = permissible_load(theta, tf, bal, rating)
@@ -212,7 +212,7 @@ def test_upstroke_mask_matches_rising_polished_rod():
     """On the upstroke the polished rod rises: TF > 0 there and < 0 on the downstroke."""
     lk = load_unit("sk8-3.5-4000").geometry.linkage()
     up = upstroke_mask(lk, THETA)
-    tf = torque_factor(lk, THETA)
+    tf = lk.torque_factor(THETA)
     dead = lk.dead_positions()
     near = np.minimum(np.abs((THETA - dead.crank_angle_bottom + np.pi) % (2 * np.pi) - np.pi),
                       np.abs((THETA - dead.crank_angle_top + np.pi) % (2 * np.pi) - np.pi)) < 1e-9

@@ -17,8 +17,7 @@ import pytest
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.counterbalance import Counterbalance, counterbalance_from_masses
 from pumpjack_cli.core.beam.torque import (api_net_torque, beam_group_inertia, crank_group_inertia,
-                                           crank_rates_from_time, exact_net_torque, torque_components,
-                                           torque_factor)
+                                           crank_rates_from_time, exact_net_torque, torque_components)
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import TorqueError
 
@@ -61,7 +60,7 @@ def test_components_sum_and_static_limit():
     lk = load_unit("sk8-3.5-4000").geometry.linkage()
     bal = Counterbalance(-800.0, 60e3, 0.1)
     parts = torque_components(lk, THETA, load(THETA), bal, beam_inertia=5e3, rotary_inertia=3e4)
-    tf = torque_factor(lk, THETA)
+    tf = lk.torque_factor(THETA)
     assert np.all(parts.articulating_inertia == 0.0) and np.all(parts.rotary_inertia == 0.0)
     assert parts.net == pytest.approx(api_net_torque(THETA, tf, load(THETA), bal), rel=1e-13, abs=1e-9)
     assert parts.rod_load == pytest.approx(tf * load(THETA), rel=1e-15)

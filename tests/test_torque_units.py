@@ -22,7 +22,7 @@ from pumpjack_cli.core.beam.balance import balance_criteria, recommend_counterba
 from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position, upstroke_points
 from pumpjack_cli.core.beam.counterbalance import Counterbalance, counterbalance_from_masses, upstroke_mask
 from pumpjack_cli.core.beam.loading import card_work
-from pumpjack_cli.core.beam.torque import api_net_torque, crank_rates_from_time, torque_factor
+from pumpjack_cli.core.beam.torque import api_net_torque, crank_rates_from_time
 from pumpjack_cli.core.sampling import crank_grid
 
 REPO = Path(__file__).resolve().parents[1]
@@ -80,7 +80,7 @@ def test_optimisers_agree_with_brute_force_scans(name):
     range, so the tolerance checks the optimiser, not the scan)."""
     linkage, bal, card = balance_of(name)
     w = card_load(card, THETA)
-    base = torque_factor(linkage, THETA) * (w - bal.structural_unbalance)
+    base = linkage.torque_factor(THETA) * (w - bal.structural_unbalance)
     sine = np.sin(THETA - bal.offset)
     up = upstroke_mask(linkage, THETA)
     hi = 2 * np.max(np.abs(base)) / np.max(np.abs(sine))
@@ -108,7 +108,7 @@ def test_mean_net_torque_is_card_work_over_two_pi(name):
     points, 2 deg apart), which differ at second order in the point spacing."""
     linkage, masses, card = bundled(name)
     bal = counterbalance_from_masses(linkage, masses)
-    t = api_net_torque(THETA, torque_factor(linkage, THETA), card_load(card, THETA), bal)
+    t = api_net_torque(THETA, linkage.torque_factor(THETA), card_load(card, THETA), bal)
     assert np.mean(t) == pytest.approx(card_work(linkage, card) / (2 * np.pi), rel=2e-4)
 
 

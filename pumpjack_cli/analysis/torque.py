@@ -164,7 +164,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.omega  # time share of each point of the uniform crank-angle grid
     sine = np.sin(theta - balance.offset)
-    rod_torque = linkage.front_arm * linkage.motion(theta).beam_rate * (dense.run.load - balance.structural_unbalance)
+    rod_torque = linkage.torque_factor(theta) * (dense.run.load - balance.structural_unbalance)
     recommendation = recommend_counterbalance(criterion, linkage, theta, dense.run.load, balance,
                                               extra_torque=dense.net - rod_torque + balance.moment * sine,
                                               weights=dt, test_angle=TEST_ANGLE)
@@ -174,7 +174,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     def shifted(t: _Torques, moment: float) -> np.ndarray:
         return t.net + (balance.moment - moment) * np.sin(t.run.crank_angle - balance.offset)
 
-    tf_test = float(linkage.front_arm * linkage.motion(np.array([TEST_ANGLE])).beam_rate[0])
+    tf_test = float(linkage.torque_factor(np.array([TEST_ANGLE]))[0])
     work = card_work(linkage, card)
     frequency = 1.0 / out.run.period
     summary = [Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi * frequency, "pumping speed of the run"),
@@ -259,10 +259,9 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
     m = linkage.motion(run.crank_angle)
     columns = [
         *crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
-        Column("position", "length", "polished-rod position above the bottom of the stroke",
-               linkage.rod_position(run.crank_angle)),
+        Column("position", "length", "polished-rod position above the bottom of the stroke", m.rod_position),
         Column("rod_load", "force", "polished-rod load from the card", run.load),
-        Column("torque_factor", "length", "API 11E torque factor", linkage.front_arm * m.beam_rate),
+        Column("torque_factor", "length", "API 11E torque factor", m.torque_factor),
         Column("rod_load_torque", "torque", "TF W: torque of the polished-rod load", parts.rod_load),
         Column("structural_torque", "torque", "-TF B: torque of the structural unbalance", parts.structural),
         Column("articulating_inertia_torque", "torque", "inertia of the beam group ([Takacs2016])",
@@ -281,7 +280,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
     columns.append(Column("recommended_net_torque", "torque", "net gearbox torque, recommended counterbalance",
                           recommended))
     if rated.gearbox_torque is not None and moment_known:
-        low, high = permissible_load(run.crank_angle, linkage.front_arm * m.beam_rate, balance, rated.gearbox_torque)
+        low, high = permissible_load(run.crank_angle, m.torque_factor, balance, rated.gearbox_torque)
         columns += [Column("permissible_load_min", "force", "smallest polished-rod load within the gearbox rating",
                            _clip(low, run.load)),
                     Column("permissible_load_max", "force", "largest polished-rod load within the gearbox rating",

@@ -19,7 +19,7 @@ import numpy as np
 
 from ...errors import TorqueError
 from .counterbalance import Counterbalance, counterbalance_effect, upstroke_mask
-from .linkage import Linkage
+from ..mechanism import Mechanism
 
 #: Balance criteria of :func:`recommend_counterbalance`.
 BALANCE_CRITERIA = ("equal-peaks", "min-rms", "min-peak")
@@ -316,7 +316,7 @@ class BalanceRecommendation:
     note: str
 
 
-def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.ndarray, rod_load: np.ndarray,
+def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray,
                              balance: Counterbalance, *, extra_torque: np.ndarray | float = 0.0,
                              weights: np.ndarray | None = None, test_angle: float = math.pi / 2) -> BalanceRecommendation:
     """The counterbalance moment M that meets ``criterion`` for a card, with B and tau kept.
@@ -332,7 +332,7 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     ----------
     criterion : str
         One of :data:`BALANCE_CRITERIA`.
-    linkage : Linkage
+    linkage : Mechanism
         The unit (torque factors, dead positions).
     crank_angle : ndarray
         theta [rad]; a uniform grid over one revolution unless ``weights`` are given.
@@ -359,7 +359,7 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     if criterion not in BALANCE_CRITERIA:
         raise TorqueError(f"unknown balance criterion {criterion!r}; use one of {', '.join(BALANCE_CRITERIA)}")
     theta = np.asarray(crank_angle, dtype=float)
-    tf = linkage.front_arm * linkage.motion(theta).beam_rate
+    tf = linkage.torque_factor(theta)
     base = tf * (np.asarray(rod_load, dtype=float) - balance.structural_unbalance) + extra_torque
     if not np.all(np.isfinite(base)):
         raise TorqueError("balance: the rod load or the extra torque is not finite at every crank angle")
@@ -387,6 +387,6 @@ def recommend_counterbalance(criterion: str, linkage: Linkage, crank_angle: np.n
     u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
     w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
     rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
-    tf_test = float(linkage.front_arm * linkage.motion(np.array([test_angle])).beam_rate[0])
+    tf_test = float(linkage.torque_factor(np.array([test_angle]))[0])
     cbe = counterbalance_effect(tf_test, balance._replace(moment=moment), test_angle)
     return BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note)

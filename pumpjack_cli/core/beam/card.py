@@ -35,7 +35,8 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import CardError
-from .linkage import Linkage
+from ..mechanism import Mechanism
+from .geometry import Linkage
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
 _BRANCH_STEPS = 8192
@@ -136,15 +137,14 @@ def upstroke_points(position: np.ndarray) -> np.ndarray:
     return (np.roll(position, -1) - np.roll(position, 1)) > 0
 
 
-def _rod(linkage: Linkage, crank_angle: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Polished-rod position s = A (psi - psi_bottom) [m] and ds/dtheta = A psi' [m/rad]."""
+def _rod(linkage: Mechanism, crank_angle: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Polished-rod position s [m] and the torque factor ds/dtheta [m/rad]."""
     m = linkage.motion(crank_angle)
-    bottom = linkage.dead_positions().beam_angle_bottom
-    return linkage.front_arm * (m.beam_angle - bottom), linkage.front_arm * m.beam_rate
+    return m.rod_position, m.torque_factor
 
 
 @lru_cache(maxsize=16)
-def _branches(linkage: Linkage) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
+def _branches(linkage: Mechanism) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
     """(position, crank angle) tables of the upstroke and the downstroke, position increasing."""
     dead = linkage.dead_positions()
     up = dead.crank_angle_bottom + np.linspace(0.0, dead.upstroke_crank_travel, _BRANCH_STEPS)
@@ -152,7 +152,7 @@ def _branches(linkage: Linkage) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np
     return (_rod(linkage, up)[0], up), (_rod(linkage, down)[0], down)
 
 
-def crank_angle_from_position(linkage: Linkage, position: np.ndarray, upstroke: np.ndarray) -> np.ndarray:
+def crank_angle_from_position(linkage: Mechanism, position: np.ndarray, upstroke: np.ndarray) -> np.ndarray:
     """Crank angle of each polished-rod position on the branch of its stroke.
 
     Positions must lie within [0, stroke]; the exact position s = A (psi - psi_bottom) is
@@ -284,7 +284,7 @@ def _angles(params: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray,
     return theta, columns, ratio
 
 
-def _least_squares(linkage: Linkage, tc: np.ndarray, p: np.ndarray, params: np.ndarray) -> tuple[np.ndarray, float]:
+def _least_squares(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np.ndarray) -> tuple[np.ndarray, float]:
     """Gauss-Newton on sum (k s(theta(t_i)) + c - p_i)^2 with step halving; parameters and sum of squares.
 
     ``params`` holds the angle parameters of :func:`_angles`, then c [m] and k [-].
@@ -317,7 +317,7 @@ def _least_squares(linkage: Linkage, tc: np.ndarray, p: np.ndarray, params: np.n
     return params, cost
 
 
-def fit_rotation(linkage: Linkage, time: np.ndarray, position: np.ndarray, harmonics: int = 0) -> RotationFit:
+def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, harmonics: int = 0) -> RotationFit:
     """Crank rotation that best explains a time-stamped card, uniform or with a periodic speed variation.
 
     The measured position is p_i = c + k s(theta_i), s the exact position curve of

@@ -13,8 +13,9 @@ the horsehead down. The API net torque is then ([API11E]; [Rowlan2004] method 1)
 
 * B, structural unbalance [N]: the force that must act *downwards* at the polished rod
   to hold the walking beam level with the pitmans disconnected from the crank pins
-  (they then hang from the equalizer pins, at the rear-arm distance C behind the centre
-  bearing). Positive for a rear-heavy beam, whose weight helps lift the rods.
+  (they then hang from the equalizer pins: a distance C behind the centre bearing on a
+  class I unit, in front of it on a class III unit). Positive for a rear-heavy beam,
+  whose weight helps lift the rods.
 * M, maximum counterbalance moment [N·m]: the gravity moment of both crank arms and all
   counterweights about the crank shaft when their resultant is horizontal.
 * tau, crank offset [rad]: the angle by which the resultant of crank arms and
@@ -42,7 +43,7 @@ import numpy as np
 
 from ...errors import TorqueError
 from ..constants import STANDARD_GRAVITY
-from .linkage import Linkage
+from ..mechanism import Mechanism
 from .masses import MassModel
 
 class Counterbalance(NamedTuple):
@@ -53,19 +54,19 @@ class Counterbalance(NamedTuple):
     offset: float = 0.0
 
 
-def counterbalance_from_masses(linkage: Linkage, masses: MassModel, gravity: float = STANDARD_GRAVITY) -> Counterbalance:
+def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: float = STANDARD_GRAVITY) -> Counterbalance:
     """B, M and tau of a unit from the masses of its links.
 
-    B = g [(m_eq + 2 m_p) C - m_b x_b - m_h x_h] / A: the beam group level (psi = 0),
-    both pitmans hanging whole from the equalizer pins at the rear-arm distance C, the
-    beam body and horsehead centres of mass at x_b, x_h from the centre bearing (towards
-    the well positive), the equalizer at D. M exp(-i tau) = g (2 m_a r_a + m_cw r_cw
+    B = -g [(m_eq + 2 m_p) x_eq + m_b x_b + m_h x_h] / A: the beam group level (psi = 0),
+    both pitmans hanging whole from the equalizer pins at the equalizer bearing x_eq (-C
+    on a class I unit), the beam body and horsehead centres of mass at x_b, x_h, all
+    measured from the centre bearing towards the well. M exp(-i tau) = g (2 m_a r_a + m_cw r_cw
     exp(i phi)): both crank arms in line with the pin, all counterweights at phase phi.
 
     Parameters
     ----------
-    linkage : Linkage
-        Front arm A [m] and rear arm C [m] are used.
+    linkage : Mechanism
+        Its horsehead arm A [m] and equalizer arm x_eq [m] are used.
     masses : MassModel
         Link masses [kg] and centres of mass [m].
     gravity : float
@@ -91,14 +92,14 @@ def counterbalance_from_masses(linkage: Linkage, masses: MassModel, gravity: flo
     >>> [round(v, 2) for v in counterbalance_from_masses(lk, m)]
     [-490.33, 9806.65, 0.0]
     """
-    rear = (masses.equalizer_mass + 2.0 * masses.pitman_mass) * linkage.rear_arm
-    front = masses.beam_mass * masses.beam_cg + masses.horsehead_mass * masses.horsehead_cg
+    moment = ((masses.equalizer_mass + 2.0 * masses.pitman_mass) * linkage.equalizer_arm
+              + masses.beam_mass * masses.beam_cg + masses.horsehead_mass * masses.horsehead_cg)
     arms = 2.0 * masses.crank_arm_mass * masses.crank_arm_cg
     weights = masses.counterweight_mass * masses.counterweight_radius
     x = arms + weights * math.cos(masses.counterweight_phase)
     y = weights * math.sin(masses.counterweight_phase)
     offset = 0.0 - math.atan2(y, x)
-    return Counterbalance(gravity * (rear - front) / linkage.front_arm, gravity * math.hypot(x, y), offset)
+    return Counterbalance(-gravity * moment / linkage.horsehead_arm, gravity * math.hypot(x, y), offset)
 
 
 #: API RP 11L's allowance over the mean of the up- and downstroke static loads in its
@@ -265,7 +266,7 @@ def counterweight_placement(moment: float, masses: MassModel, radius_range: tupl
     return CounterweightPlacement(radius, mass, within, note)
 
 
-def upstroke_mask(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
+def upstroke_mask(linkage: Mechanism, crank_angle: np.ndarray) -> np.ndarray:
     """True at crank angles [rad] on the upstroke: from the bottom dead position through the upstroke travel."""
     dead = linkage.dead_positions()
     return ((np.asarray(crank_angle, dtype=float) - dead.crank_angle_bottom) % (2.0 * np.pi)) < dead.upstroke_crank_travel

@@ -87,7 +87,7 @@ class DeadPositions:
 class Linkage:
     """Geometry of the four-bar O-A-B-C of a conventional (class I) pumping unit, SI.
 
-    Implements :class:`pumpjack_cli.core.mechanism.Mechanism`. The letters are those of
+    Implements :class:`pumpjack_cli.core.mechanism.Mechanism` for class I units. The letters are those of
     [API11E], the second names those of GOST 5866-76 units and [SK8Rotation2013].
 
     Parameters
@@ -174,15 +174,49 @@ class Linkage:
     def rod_position(self, crank_angle: Any):
         """Polished-rod position above the bottom of the stroke, s = A (psi - psi_bottom) [m],
         at crank angles [rad] ([SK8Rotation2013] eq. 6 integrated: the horsehead arc)."""
-        from .linkage import motion
+        return self.motion(crank_angle).rod_position
 
-        return self.front_arm * (motion(self, crank_angle).beam_angle - self._dead.beam_angle_bottom)
+    def torque_factor(self, crank_angle: Any):
+        """TF = ds/dtheta = A psi' [m] at crank angles [rad] ([API11E]; [KretzerSWPSC])."""
+        return self.motion(crank_angle).torque_factor
 
-    def pin_rates(self, motion: Any):
-        """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.pin_rates`)."""
-        from .linkage import pin_rates
+    def joint_rates(self, motion: Any):
+        """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.joint_rates`)."""
+        from .linkage import joint_rates
 
-        return pin_rates(self, motion)
+        return joint_rates(self, motion)
+
+    @property
+    def lever_class(self) -> str:
+        """``"I"``: the equalizer bearing behind the centre bearing ([API11E])."""
+        return "I"
+
+    @property
+    def horsehead_arm(self) -> float:
+        """A [m]: radius of the horsehead arc."""
+        return self.front_arm
+
+    @property
+    def equalizer_arm(self) -> float:
+        """-C [m]: the equalizer bearing a rear-arm length behind the centre bearing."""
+        return -self.rear_arm
+
+    @property
+    def pitman_length(self) -> float:
+        """P [m] (the planar pitman)."""
+        return self.pitman
+
+    def equivalent_crank(self):
+        """Amplitude R A / C [m] and crank ratio R / P of the textbook laws ([Aliverdizade1951])."""
+        from ..mechanism import EquivalentCrank
+
+        return EquivalentCrank(self.crank_radius * self.front_arm / self.rear_arm, self.crank_radius / self.pitman)
+
+    def chord_slider_crank(self):
+        """The chord law's slider-crank (:func:`.linkage.chord_slider_crank`)."""
+        from .linkage import chord_slider_crank
+
+        return chord_slider_crank(self)
 
 
 #: Grids of at least this many crank angles have their motion cached (:meth:`Linkage.motion`).

@@ -23,63 +23,13 @@ from __future__ import annotations
 import numpy as np
 
 from ..sampling import crank_grid, largest_magnitude
-from ..slider_crank.mechanism import DENSE_STEPS, InertiaComparison, SliderCrank, exact_motion, law_errors
+from ..slider_crank.mechanism import DENSE_STEPS, InertiaComparison, exact_motion, law_errors
 from .kinematics import APPROXIMATIONS, RodMotion, approximate_motion, rod_motion
-from .linkage import Linkage
+from ..mechanism import Mechanism
+from .geometry import Linkage
 
 
-def chord_slider_crank(linkage: Linkage) -> tuple[SliderCrank, float, float]:
-    """The offset slider-crank of the chord law.
-
-    The chord runs through the equalizer-bearing positions B_bottom and B_top of the two
-    dead positions (|OB| = P + R and P - R). Its axis n is the chord direction signed so
-    that (B_bottom - O) . n > 0 (the slider-crank branch with the rod pointing along n).
-    The crank pin direction in the frame is pi/2 - rotation * theta (theta: the unit's
-    crank angle from 12 o'clock, :mod:`pumpjack_cli.core.beam.linkage`), so in the chord
-    frame it is gamma = pi/2 - rotation * theta - angle(n); mirroring the frame across n
-    by m = -rotation makes phi = m gamma = phase + theta grow with time, with the offset
-    e = m (B_bottom - O) . n_perp.
-
-    Parameters
-    ----------
-    linkage : Linkage
-        The four-bar [m].
-
-    Returns
-    -------
-    tuple
-        (mechanism, phase, direction): the :class:`SliderCrank` with r = R, l = P and
-        the offset e [m]; phase [rad], with phi = phase + theta; direction, +1 if n
-        points from B_bottom to B_top (the polished rod rises as B moves along n), else
-        -1 (dimensionless).
-
-    References
-    ----------
-    [InertiaUNB600A] eq. 7 (the assumption; the formula is reconstructed here).
-
-    Examples
-    --------
-    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    >>> mechanism, phase, direction = chord_slider_crank(sk8)
-    >>> mechanism.crank_radius, mechanism.rod_length   # R and P of the unit
-    (1.01, 3.0)
-    """
-    dead = linkage.dead_positions()
-    o = linkage.crank_shaft
-    b_bottom, b_top = (-linkage.rear_arm * np.array([np.cos(psi), np.sin(psi)])
-                       for psi in (dead.beam_angle_bottom, dead.beam_angle_top))
-    chord = (b_top - b_bottom) / np.hypot(*(b_top - b_bottom))
-    direction = 1.0 if np.dot(b_bottom - o, chord) > 0 else -1.0
-    axis = direction * chord
-    across = np.array([-axis[1], axis[0]])
-    mirror = -linkage.rotation
-    axis_angle = float(np.arctan2(axis[1], axis[0]))
-    offset = mirror * float(np.dot(b_bottom - o, across))
-    phase = mirror * (0.5 * np.pi - axis_angle)
-    return SliderCrank(linkage.crank_radius, linkage.pitman, offset), phase, direction
-
-
-def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> RodMotion:
+def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> RodMotion:
     """Polished-rod motion under the chord law for uniform crank rotation.
 
         s = (A/C) d (x(phi) - x(phi_bottom)),  v = (A/C) d dx/dt,  a = (A/C) d d2x/dt2,
@@ -87,13 +37,13 @@ def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> Rod
     from the exact offset slider-crank
     (:func:`pumpjack_cli.core.slider_crank.mechanism.exact_motion`) with
     phi = phase + theta (so d/dt = omega d/dphi), d the ``direction`` of
-    :func:`chord_slider_crank`. The stroke is (A/C) times the chord,
+    :meth:`Mechanism.chord_slider_crank <pumpjack_cli.core.mechanism.Mechanism.chord_slider_crank>`. The stroke is (A/C) times the chord,
     2 A sin((psi_top - psi_bottom)/2).
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar [m].
+    linkage : Mechanism
+        The unit [m].
     crank_angle : numpy.ndarray
         theta [rad].
     omega : float
@@ -120,13 +70,13 @@ def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> Rod
     >>> [round(abs(float(x)), 3) for x in s]
     [0.0, 2.829]
     """
-    mechanism, phase, direction = chord_slider_crank(linkage)
+    chord = linkage.chord_slider_crank()
     theta = np.asarray(crank_angle, dtype=float)
-    phi = phase + theta
-    bottom = phase + linkage.dead_positions().crank_angle_bottom
-    slider = exact_motion(mechanism, phi, omega)
-    start = exact_motion(mechanism, np.array(bottom), omega).position
-    scale = direction * linkage.front_arm / linkage.rear_arm
+    phi = chord.phase + theta
+    bottom = chord.phase + linkage.dead_positions().crank_angle_bottom
+    slider = exact_motion(chord.slider, phi, omega)
+    start = exact_motion(chord.slider, np.array(bottom), omega).position
+    scale = chord.scale
     return RodMotion(
         position=scale * (slider.position - start),
         velocity=scale * slider.velocity,
@@ -138,18 +88,18 @@ def chord_motion(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> Rod
 BEAM_LAWS = (*APPROXIMATIONS, "chord")
 
 
-def _rod_laws(linkage: Linkage, crank_angle: np.ndarray, omega: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
+def _rod_laws(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
     """Exact polished-rod motion and the acceleration of every law of :data:`BEAM_LAWS`."""
     dead = linkage.dead_positions()
     m = linkage.motion(crank_angle)
-    exact = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
+    exact = rod_motion(m, omega)
     from_bottom = crank_angle - dead.crank_angle_bottom
     laws = {name: approximate_motion(name, linkage, from_bottom, omega).acceleration for name in APPROXIMATIONS}
     laws["chord"] = chord_motion(linkage, crank_angle, omega).acceleration
     return exact, laws
 
 
-def beam_inertia_laws(linkage: Linkage, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
+def beam_inertia_laws(linkage: Mechanism, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
     """Exact polished-rod motion and every law of :data:`BEAM_LAWS`, with their errors.
 
     The inertia force of a mass m moving with the polished rod is -m a for every law,
@@ -159,8 +109,8 @@ def beam_inertia_laws(linkage: Linkage, omega: float, crank_angle: np.ndarray) -
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar [m].
+    linkage : Mechanism
+        The unit [m].
     omega : float
         Crank speed [1/s], positive (uniform rotation).
     crank_angle : numpy.ndarray

@@ -1,11 +1,11 @@
 """Polished-rod kinematics: exact motion and the classical textbook approximations.
 
-The exact motion comes from :mod:`pumpjack_cli.core.beam.linkage`. The horsehead is an
-arc of radius A about the centre bearing, so the polished rod moves by A times the beam
-rotation ([SK8Rotation2013]: "the speed of the suspension point equals the speed of the
-beam end"): position s = A (psi - psi_bottom), velocity v = A psi' omega,
-acceleration a = A (psi'' omega^2 + psi' epsilon), and the torque factor of [API11E]
-TF = ds/dtheta = A psi' (torque on the crank shaft per unit polished-rod load).
+The exact motion comes from the unit's mechanism (:class:`~pumpjack_cli.core.mechanism.Mechanism`):
+the polished-rod position s(theta) and the torque factor of [API11E] TF = ds/dtheta
+(torque on the crank shaft per unit polished-rod load), so velocity v = TF omega and
+acceleration a = TF' omega^2 + TF epsilon; on a beam unit the horsehead is an arc of
+radius A about the centre bearing and s = A (psi - psi_bottom) ([SK8Rotation2013]: "the
+speed of the suspension point equals the speed of the beam end").
 
 The approximations are the "elementary" and "refined" theories of Soviet textbooks
 ([Aliverdizade1951], ref. 1 of [SK8Rotation2013]; restated in the oil-production
@@ -24,8 +24,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..mechanism import DeadPositions, Mechanism, Motion
 from ..sampling import Extreme, crank_grid, cycle_period, extremes, uniform_time
-from .linkage import DeadPositions, Linkage
+from .geometry import Linkage
 
 #: Crank positions used to locate extremes, independent of the output resolution.
 _DENSE_STEPS = 7200
@@ -50,24 +51,17 @@ class RodMotion:
     acceleration: np.ndarray
 
 
-def rod_motion(
-    linkage: Linkage, beam_angle: np.ndarray, beam_rate: np.ndarray, beam_rate2: np.ndarray,
-    beam_angle_bottom: float, omega: np.ndarray | float, epsilon: np.ndarray | float = 0.0,
-) -> RodMotion:
+def rod_motion(m: Motion, omega: np.ndarray | float, epsilon: np.ndarray | float = 0.0) -> RodMotion:
     """Exact polished-rod motion for any crank speed and acceleration.
 
-    The chain rule on s(theta(t)) with s = A (psi - psi_bottom):
+    The chain rule on s(theta(t)):
 
-        s = A (psi - psi_bottom),  v = A psi' omega,  a = A (psi'' omega^2 + psi' epsilon).
+        v = (ds/dtheta) omega = TF omega,  a = TF' omega^2 + TF epsilon.
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar; only its front arm A [m] enters.
-    beam_angle, beam_rate, beam_rate2 : numpy.ndarray
-        psi [rad], psi' (dimensionless) and psi'' [1/rad] from :func:`.linkage.motion`.
-    beam_angle_bottom : float
-        psi at the bottom of the stroke [rad].
+    m : Motion
+        The mechanism's motion at the crank angles (position s [m], TF [m], TF' [m/rad]).
     omega : float or numpy.ndarray
         Crank speed [1/s].
     epsilon : float or numpy.ndarray
@@ -89,16 +83,14 @@ def rod_motion(
 
     >>> inch = 0.0254
     >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
-    >>> m = c114.motion(np.radians([90.0]))
-    >>> rod = rod_motion(c114, m.beam_angle, m.beam_rate, m.beam_rate2, 0.0, omega=1.0)
+    >>> rod = rod_motion(c114.motion(np.radians([90.0])), omega=1.0)
     >>> round(float(rod.velocity[0]) / inch, 2)   # in/s at 1 rad/s
     26.45
     """
-    a = linkage.front_arm
     return RodMotion(
-        position=a * (beam_angle - beam_angle_bottom),
-        velocity=a * beam_rate * omega,
-        acceleration=a * (beam_rate2 * omega**2 + beam_rate * epsilon),
+        position=m.rod_position,
+        velocity=m.torque_factor * omega,
+        acceleration=m.torque_factor_rate * omega**2 + m.torque_factor * epsilon,
     )
 
 
@@ -187,18 +179,19 @@ def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.
     )
 
 
-def approximate_motion(method: str, linkage: Linkage, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
+def approximate_motion(method: str, mechanism: Mechanism, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
     """Polished-rod motion by one of the textbook approximations of :data:`APPROXIMATIONS`.
 
     The amplitude is r_e = R A / C and, for ``"two_term"``, lambda = R / P
-    (:func:`harmonic_motion`, :func:`two_term_motion`).
+    (:func:`harmonic_motion`, :func:`two_term_motion`), the unit's
+    :meth:`~pumpjack_cli.core.mechanism.Mechanism.equivalent_crank`.
 
     Parameters
     ----------
     method : str
         ``"harmonic"`` (elementary theory) or ``"two_term"`` (refined theory).
-    linkage : Linkage
-        The four-bar [m].
+    mechanism : Mechanism
+        The unit [m].
     crank_from_bottom : numpy.ndarray
         phi, crank travel from the bottom dead position [rad].
     omega : float
@@ -227,11 +220,11 @@ def approximate_motion(method: str, linkage: Linkage, crank_from_bottom: np.ndar
     >>> round(float(approximate_motion("harmonic", sk8, np.array([np.pi]), 1.0).position[0]), 3)
     2.828
     """
-    amplitude = linkage.crank_radius * linkage.front_arm / linkage.rear_arm
+    crank = mechanism.equivalent_crank()
     if method == "harmonic":
-        return harmonic_motion(amplitude, crank_from_bottom, omega)
+        return harmonic_motion(crank.amplitude, crank_from_bottom, omega)
     if method == "two_term":
-        return two_term_motion(amplitude, linkage.crank_radius / linkage.pitman, crank_from_bottom, omega)
+        return two_term_motion(crank.amplitude, crank.crank_ratio, crank_from_bottom, omega)
     raise ValueError(f"unknown approximation {method!r}; use one of {', '.join(APPROXIMATIONS)}")
 
 
@@ -352,15 +345,15 @@ def _approximation_error(exact: RodMotion, approx: RodMotion, stroke: float) -> 
     )
 
 
-def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsSummary:
+def _summary(linkage: Mechanism, dead: DeadPositions, omega: float) -> KinematicsSummary:
     theta = crank_grid(_DENSE_STEPS)
     m = linkage.motion(theta)
-    exact = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
+    exact = rod_motion(m, omega)
     stroke = dead.stroke
     from_bottom = theta - dead.crank_angle_bottom
     v_max, v_min = extremes(theta, exact.velocity)
     a_max, a_min = extremes(theta, exact.acceleration)
-    tf_max, tf_min = extremes(theta, linkage.front_arm * m.beam_rate)
+    tf_max, tf_min = extremes(theta, m.torque_factor)
     return KinematicsSummary(
         crank_speed=omega,
         period=cycle_period(omega),
@@ -382,7 +375,7 @@ def _summary(linkage: Linkage, dead: DeadPositions, omega: float) -> KinematicsS
     )
 
 
-def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> KinematicsResult:
+def uniform_kinematics(linkage: Mechanism, omega: float, steps: int = 360) -> KinematicsResult:
     """Kinematics of every link for uniform crank rotation.
 
     One array computation over ``steps`` crank angles (see :func:`crank_grid`); time is
@@ -393,8 +386,8 @@ def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> Kine
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar [m].
+    linkage : Mechanism
+        The unit [m].
     omega : float
         Crank speed [1/s], positive.
     steps : int
@@ -430,13 +423,13 @@ def uniform_kinematics(linkage: Linkage, omega: float, steps: int = 360) -> Kine
     dead = linkage.dead_positions()
     theta = crank_grid(steps)
     m = linkage.motion(theta)
-    rod = rod_motion(linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega)
+    rod = rod_motion(m, omega)
     from_bottom = theta - dead.crank_angle_bottom
     return KinematicsResult(
         crank_angle=theta,
         time=uniform_time(theta, omega),
         rod=rod,
-        torque_factor=linkage.front_arm * m.beam_rate,
+        torque_factor=m.torque_factor,
         beam_angle=m.beam_angle,
         beam_angular_velocity=m.beam_rate * omega,
         beam_angular_acceleration=m.beam_rate2 * omega**2,

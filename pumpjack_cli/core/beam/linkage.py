@@ -9,50 +9,13 @@ constraint |B - A| = P twice ([Spatial7SK12] eqs. 7-12 in planar form).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
+from ..mechanism import ChordSliderCrank, JointRates, Motion
 from .geometry import CLOCKWISE, COUNTERCLOCKWISE, DeadPositions, Linkage, assembly_angle, check_assembly, dead_positions
 
 __all__ = ["CLOCKWISE", "COUNTERCLOCKWISE", "DeadPositions", "Linkage", "Motion", "check_assembly", "crank_pin",
-           "dead_positions", "motion", "pin_rates"]
-
-
-@dataclass(frozen=True)
-class Motion:
-    """Angles of the beam and pitman and their derivatives with respect to crank angle.
-
-    All arrays share the shape of the crank angles they were computed for.
-
-    Attributes
-    ----------
-    crank_angle : numpy.ndarray
-        theta [rad].
-    beam_angle : numpy.ndarray
-        psi, front arm above horizontal [rad].
-    beam_rate : numpy.ndarray
-        dpsi/dtheta, the first transfer function of [SK8Rotation2013] eq. 6
-        (dimensionless, rad/rad).
-    beam_rate2 : numpy.ndarray
-        d2psi/dtheta2 [1/rad].
-    pitman_angle : numpy.ndarray
-        chi, direction crank pin -> equalizer bearing above horizontal [rad].
-    pitman_rate, pitman_rate2 : numpy.ndarray
-        dchi/dtheta (dimensionless) and d2chi/dtheta2 [1/rad].
-
-    References
-    ----------
-    [SK8Rotation2013] eqs. 6-7.
-    """
-
-    crank_angle: np.ndarray
-    beam_angle: np.ndarray
-    beam_rate: np.ndarray
-    beam_rate2: np.ndarray
-    pitman_angle: np.ndarray
-    pitman_rate: np.ndarray
-    pitman_rate2: np.ndarray
+           "chord_slider_crank", "dead_positions", "motion", "joint_rates"]
 
 
 def crank_pin(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
@@ -122,7 +85,7 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
     -------
     Motion
         psi, chi [rad], their first derivatives (dimensionless) and second derivatives
-        [1/rad], arrays shaped like ``crank_angle``.
+        [1/rad]; s [m], TF [m], dTF/dtheta [m/rad]; arrays shaped like ``crank_angle``.
 
     Raises
     ------
@@ -143,7 +106,7 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
     >>> inch = 0.0254
     >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
     >>> m = motion(c114, np.radians([90.0]))
-    >>> round(float(c114.front_arm * m.beam_rate[0] / inch), 2)
+    >>> round(float(m.torque_factor[0] / inch), 2)
     26.45
 
     At a dead position the beam stops, psi' = 0:
@@ -170,8 +133,12 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
     psi_2 = (np.sum(w * a_2, axis=0) + np.sum(w * b, axis=0) * psi_1**2 - np.sum(w_1 * w_1, axis=0)) / w_dot_bpsi
     w_2 = -b * psi_1**2 + b_psi * psi_2 - a_2
     p2 = linkage.pitman**2
+    front = linkage.front_arm
     return Motion(
         crank_angle=theta,
+        rod_position=front * (psi - linkage.dead_positions().beam_angle_bottom),
+        torque_factor=front * psi_1,
+        torque_factor_rate=front * psi_2,
         beam_angle=psi,
         beam_rate=psi_1,
         beam_rate2=psi_2,
@@ -181,9 +148,7 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
     )
 
 
-
-
-def pin_rates(linkage: Linkage, m: Motion) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def joint_rates(linkage: Linkage, m: Motion) -> JointRates:
     """Crank-angle derivatives of the crank pin A and the equalizer bearing B.
 
     A = O + R (s sin theta, cos theta), s = rotation, so A' = R (s cos theta, -sin theta)
@@ -200,7 +165,7 @@ def pin_rates(linkage: Linkage, m: Motion) -> tuple[np.ndarray, np.ndarray, np.n
 
     Returns
     -------
-    tuple of numpy.ndarray
+    JointRates
         dA/dtheta, d2A/dtheta2 [m/rad, m/rad²], dB/dtheta, d2B/dtheta2 [m/rad, m/rad²],
         each of shape (2, N).
 
@@ -209,13 +174,66 @@ def pin_rates(linkage: Linkage, m: Motion) -> tuple[np.ndarray, np.ndarray, np.n
     At 90 degrees the pin of a clockwise crank moves straight down at R per radian:
 
     >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    >>> a1, a2, b1, b2 = pin_rates(sk8, motion(sk8, np.radians([90.0])))
-    >>> np.round(a1[:, 0], 6).tolist()
+    >>> rates = joint_rates(sk8, motion(sk8, np.radians([90.0])))
+    >>> np.round(rates.crank_pin_rate[:, 0], 6).tolist()
     [0.0, -1.01]
     """
     theta, psi, d1, d2 = m.crank_angle, m.beam_angle, m.beam_rate, m.beam_rate2
     r, c, s = linkage.crank_radius, linkage.rear_arm, linkage.rotation
     across = np.stack([np.sin(psi), -np.cos(psi)])
     along = np.stack([np.cos(psi), np.sin(psi)])
-    return (r * np.stack([s * np.cos(theta), -np.sin(theta)]), -r * np.stack([s * np.sin(theta), np.cos(theta)]),
-            c * d1 * across, c * (d2 * across + d1**2 * along))
+    return JointRates(r * np.stack([s * np.cos(theta), -np.sin(theta)]), -r * np.stack([s * np.sin(theta), np.cos(theta)]),
+                      c * d1 * across, c * (d2 * across + d1**2 * along))
+
+
+def chord_slider_crank(linkage: Linkage) -> ChordSliderCrank:
+    """The offset slider-crank of the chord law.
+
+    The chord runs through the equalizer-bearing positions B_bottom and B_top of the two
+    dead positions (|OB| = P + R and P - R). Its axis n is the chord direction signed so
+    that (B_bottom - O) . n > 0 (the slider-crank branch with the rod pointing along n).
+    The crank pin direction in the frame is pi/2 - rotation * theta (theta: the unit's
+    crank angle from 12 o'clock, :mod:`pumpjack_cli.core.beam.linkage`), so in the chord
+    frame it is gamma = pi/2 - rotation * theta - angle(n); mirroring the frame across n
+    by m = -rotation makes phi = m gamma = phase + theta grow with time, with the offset
+    e = m (B_bottom - O) . n_perp.
+
+    Parameters
+    ----------
+    linkage : Linkage
+        The four-bar [m].
+
+    Returns
+    -------
+    ChordSliderCrank
+        The :class:`SliderCrank` with r = R, l = P and the offset e [m]; the phase [rad],
+        with phi = phase + theta; the scale d A / C, d = +1 if n points from B_bottom to
+        B_top (the polished rod rises as B moves along n), else -1 (dimensionless).
+
+    References
+    ----------
+    [InertiaUNB600A] eq. 7 (the assumption; the formula is reconstructed here).
+
+    Examples
+    --------
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> chord = chord_slider_crank(sk8)
+    >>> chord.slider.crank_radius, chord.slider.rod_length, abs(chord.scale)   # R and P of the unit, A/C
+    (1.01, 3.0, 1.4)
+    """
+    from ..slider_crank.geometry import SliderCrank
+
+    dead = linkage.dead_positions()
+    o = linkage.crank_shaft
+    b_bottom, b_top = (-linkage.rear_arm * np.array([np.cos(psi), np.sin(psi)])
+                       for psi in (dead.beam_angle_bottom, dead.beam_angle_top))
+    chord = (b_top - b_bottom) / np.hypot(*(b_top - b_bottom))
+    direction = 1.0 if np.dot(b_bottom - o, chord) > 0 else -1.0
+    axis = direction * chord
+    across = np.array([-axis[1], axis[0]])
+    mirror = -linkage.rotation
+    axis_angle = float(np.arctan2(axis[1], axis[0]))
+    offset = mirror * float(np.dot(b_bottom - o, across))
+    phase = mirror * (0.5 * np.pi - axis_angle)
+    return ChordSliderCrank(SliderCrank(linkage.crank_radius, linkage.pitman, offset), phase,
+                            direction * linkage.front_arm / linkage.rear_arm)

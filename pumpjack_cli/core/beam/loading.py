@@ -32,19 +32,18 @@ import numpy as np
 from ...errors import TorqueError
 from ..sampling import crank_grid
 from .card import Card
-from .linkage import Linkage
+from ..mechanism import Mechanism
 
 
-def card_work(linkage: Linkage, card: Card) -> float:
+def card_work(linkage: Mechanism, card: Card) -> float:
     """Work done on the rods per cycle, the closed integral of W ds [J] (the card area).
 
-    The polished-rod position s = A (psi - psi_bottom) of each card point comes from the
-    exact kinematics; the card is taken in the order of its crank angles (the order of
+    The polished-rod position s of each card point comes from the exact kinematics; the card is taken in the order of its crank angles (the order of
     time) and closed, and integrated by the trapezoidal rule along s.
 
     Parameters
     ----------
-    linkage : Linkage
+    linkage : Mechanism
         The unit.
     card : Card
         Load W [N] at crank angles [rad].
@@ -58,7 +57,7 @@ def card_work(linkage: Linkage, card: Card) -> float:
     ----------
     [API11E] (polished-rod load and position); work of a force along its path.
     """
-    s = linkage.front_arm * linkage.motion(card.crank_angle).beam_angle
+    s = linkage.rod_position(card.crank_angle)
     w = np.asarray(card.load, dtype=float)
     if not (np.all(np.isfinite(s)) and np.all(np.isfinite(w))):
         raise TorqueError("card work: the card is not finite at every point")
@@ -116,7 +115,7 @@ class Loading:
     motor_power: float
 
 
-def loading(net_torque: np.ndarray, card: Card, linkage: Linkage, cycles_per_second: float, *,
+def loading(net_torque: np.ndarray, card: Card, linkage: Mechanism, cycles_per_second: float, *,
             gearbox_rating: float, structure_rating: float, max_stroke: float,
             drive_efficiency: float = 1.0) -> Loading:
     """Loading of the gearbox, the structure and the motor for one card.

@@ -43,7 +43,7 @@ from ...errors import TorqueError
 from .counterbalance import Counterbalance, counterbalance_from_masses
 from . import kinetostatics
 from .kinetostatics import rational_mechanism
-from .linkage import Linkage
+from ..mechanism import Mechanism
 from .masses import MassModel
 from .spatial import SpatialLinkage
 
@@ -55,17 +55,6 @@ def _finite(name: str, *arrays: np.ndarray) -> None:
     for array in arrays:
         if not np.all(np.isfinite(array)):
             raise TorqueError(f"{name}: input is not finite at every crank angle")
-
-
-def torque_factor(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
-    """API torque factor TF = ds/dtheta = A psi' [m] at crank angles theta [rad] ([API11E]; [KretzerSWPSC]).
-
-    >>> from pumpjack_cli.core.beam.geometry import Linkage
-    >>> lk = Linkage(72, 64, 24, 74.5, 64, 116 - 41)   # C-114D-133-54, inches ([Guo2007] Table 12.1)
-    >>> round(float(torque_factor(lk, np.array([np.pi / 2]))[0]), 2)   # printed: 26.45 in
-    26.45
-    """
-    return linkage.front_arm * linkage.motion(np.asarray(crank_angle, dtype=float)).beam_rate
 
 
 def api_net_torque(crank_angle: np.ndarray, torque_factor: np.ndarray, rod_load: np.ndarray,
@@ -121,20 +110,21 @@ class TorqueComponents:
         return self.rod_load + self.structural + self.counterbalance + self.articulating_inertia + self.rotary_inertia
 
 
-def beam_group_inertia(linkage: Linkage, masses: MassModel) -> float:
+def beam_group_inertia(linkage: Mechanism, masses: MassModel) -> float:
     """I_b [kg·m²]: beam, horsehead, equalizer and both pitmans about the saddle bearing.
 
-    I_b = J_b + m_b x_b² + J_h + m_h x_h² + J_eq + m_eq C² + 2 m_p C²: bodies on the beam
+    I_b = J_b + m_b x_b² + J_h + m_h x_h² + J_eq + (m_eq + 2 m_p) x_eq²: bodies on the beam
     line at their centres of mass (parallel-axis theorem), the equalizer at D (turning
     with the beam about its pin line), the pitmans lumped at the equalizer pins, as
     [Takacs2016] defines I_b. (The pitmans' lower ends move with the crank pins, so the
     lumping is an approximation; the exact method treats them exactly.)
 
     >>> m = MassModel(0, 0, 0, 0, 0, 0, 100.0, 1.5, 0, 50.0, 2.0, 0, 1000.0, 0.5, 3000.0, 0, 0, 0)
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
     >>> beam_group_inertia(Linkage(3.5, 2.5, 1.0, 3.0, 2.2, 3.0), m)   # 3000 + 250 + 2 + 312.5 + 1250
     4814.5
     """
-    c = linkage.rear_arm
+    c = linkage.equalizer_arm
     return (masses.beam_inertia + masses.beam_mass * masses.beam_cg**2
             + masses.horsehead_inertia + masses.horsehead_mass * masses.horsehead_cg**2
             + masses.equalizer_inertia + masses.equalizer_mass * c**2 + 2.0 * masses.pitman_mass * c**2)
@@ -152,15 +142,15 @@ def crank_group_inertia(masses: MassModel) -> float:
         masses.counterweight_mass * masses.counterweight_radius**2
 
 
-def torque_components(linkage: Linkage, crank_angle: np.ndarray, rod_load: np.ndarray, balance: Counterbalance, *,
+def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray, balance: Counterbalance, *,
                       beam_inertia: float = 0.0, rotary_inertia: float = 0.0,
                       omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> TorqueComponents:
     """The gearbox torque terms of [Takacs2016] at each crank angle, as arrays.
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar (TF, psi', psi'').
+    linkage : Mechanism
+        The unit (TF, psi', psi'').
     crank_angle : ndarray
         theta [rad].
     rod_load : ndarray
@@ -190,7 +180,7 @@ def torque_components(linkage: Linkage, crank_angle: np.ndarray, rod_load: np.nd
     alpha = np.broadcast_to(np.asarray(alpha, dtype=float), theta.shape)
     _finite("torque components", theta, w, omega, alpha)
     m = linkage.motion(theta)
-    tf = linkage.front_arm * m.beam_rate
+    tf = m.torque_factor
     beam_acceleration = m.beam_rate2 * omega**2 + m.beam_rate * alpha
     return TorqueComponents(
         crank_angle=theta,
@@ -202,7 +192,7 @@ def torque_components(linkage: Linkage, crank_angle: np.ndarray, rod_load: np.nd
     )
 
 
-def crank_rates_from_time(linkage: Linkage, time: np.ndarray, crank_angle: np.ndarray,
+def crank_rates_from_time(linkage: Mechanism, time: np.ndarray, crank_angle: np.ndarray,
                           harmonics: int = 4) -> tuple[np.ndarray, np.ndarray]:
     """Crank speed omega [1/s] and acceleration alpha [1/s²] from time-stamped crank angles of one cycle.
 
@@ -219,7 +209,7 @@ def crank_rates_from_time(linkage: Linkage, time: np.ndarray, crank_angle: np.nd
 
     Parameters
     ----------
-    linkage : Linkage
+    linkage : Mechanism
         The unit (torque factors for the weights).
     time : ndarray
         t [s], increasing.
@@ -260,7 +250,7 @@ def crank_rates_from_time(linkage: Linkage, time: np.ndarray, crank_angle: np.nd
     unwrapped = np.unwrap(theta)
     if not unwrapped[-1] > unwrapped[0]:
         raise TorqueError("crank rates from time: the crank angle does not advance with time")
-    weight = np.abs(linkage.motion(theta).beam_rate)
+    weight = np.abs(linkage.torque_factor(theta))
     k = np.arange(1, harmonics + 1)
     phase = np.outer(unwrapped, k)
     basis = np.hstack([np.ones((t.size, 1)), unwrapped[:, None], np.cos(phase), np.sin(phase)])
@@ -410,7 +400,7 @@ def net_torque(method: str, spatial: SpatialLinkage, masses: MassModel, crank_an
     if method == "exact":
         return exact_net_torque(spatial, masses, crank_angle, rod_load, omega, alpha)
     linkage = spatial.planar
-    return api_net_torque(crank_angle, torque_factor(linkage, crank_angle), np.asarray(rod_load, dtype=float),
+    return api_net_torque(crank_angle, linkage.torque_factor(crank_angle), np.asarray(rod_load, dtype=float),
                           counterbalance_from_masses(linkage, masses))
 
 

@@ -29,7 +29,8 @@ from typing import Protocol
 import numpy as np
 
 from ..beam.card import Card, card_load
-from ..beam.linkage import Linkage, Motion
+from ..beam.geometry import Linkage
+from ..mechanism import Mechanism, Motion
 from ..beam.masses import MassModel
 from ..constants import STANDARD_GRAVITY
 from .drive import MotorCharacteristic, rated_crank_speed
@@ -136,7 +137,7 @@ class Machine:
     26263
     """
 
-    linkage: Linkage
+    linkage: Mechanism
     masses: MassModel
     drive_inertia: float
     drive_ratio: float
@@ -215,32 +216,33 @@ class Coefficients:
     motion: Motion
 
 
-def _pitman_cg_derivatives(linkage: Linkage, masses: MassModel, m: Motion) -> tuple[np.ndarray, np.ndarray]:
+def _pitman_cg_derivatives(linkage: Mechanism, masses: MassModel, m: Motion) -> tuple[np.ndarray, np.ndarray]:
     """dS/dtheta [m/rad] and d2S/dtheta2 [m/rad²] of the pitman's centre of mass S = (1 - f) A + f B, f = AS / P.
 
     A the crank pin and B the equalizer bearing, their derivatives from the mechanism
-    (:meth:`~pumpjack_cli.core.beam.geometry.Linkage.pin_rates`). Shape (2, N) each [m/rad, m/rad^2].
+    (:meth:`~pumpjack_cli.core.mechanism.Mechanism.joint_rates`). Shape (2, N) each [m/rad, m/rad^2].
     """
-    f = masses.pitman_cg / linkage.pitman
-    a1, a2, b1, b2 = linkage.pin_rates(m)
-    return (1.0 - f) * a1 + f * b1, (1.0 - f) * a2 + f * b2
+    f = masses.pitman_cg / linkage.pitman_length
+    j = linkage.joint_rates(m)
+    return (1.0 - f) * j.crank_pin_rate + f * j.equalizer_rate, (1.0 - f) * j.crank_pin_rate2 + f * j.equalizer_rate2
 
 
-def reduced_inertia(linkage: Linkage, masses: MassModel, m: Motion, rod_mass: np.ndarray | float,
+def reduced_inertia(linkage: Mechanism, masses: MassModel, m: Motion, rod_mass: np.ndarray | float,
                     constant: float) -> tuple[np.ndarray, np.ndarray]:
     """Reduced moment of inertia I(theta) and dI/dtheta, from the kinetic energy T = I omega^2 / 2.
 
-        I = constant + 2 [m_2 |dS_2/dtheta|^2 + J_2 chi'^2] + I_C psi'^2 + m_rod (A psi')^2,
+        I = constant + 2 [m_2 |dS_2/dtheta|^2 + J_2 chi'^2] + I_C psi'^2 + m_rod TF^2,
 
     with the two pitmans (mass m_2, centroidal inertia J_2, centre S_2), the beam group
     about the centre bearing I_C = J_beam + m_beam x_beam^2 + J_head + m_head x_head^2
-    + J_eq + m_eq C^2 (equalizer at D, turning with the beam), and m_rod the mass moving
-    with the polished rod. dI/dtheta differentiates each square: d(x^2)/dtheta = 2 x x'.
+    + J_eq + m_eq x_eq^2 (equalizer at D, a distance |x_eq| from the centre bearing,
+    turning with the beam), and m_rod the mass moving with the polished rod (TF = ds/dtheta).
+    dI/dtheta differentiates each square: d(x^2)/dtheta = 2 x x'.
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar [m].
+    linkage : Mechanism
+        The unit [m].
     masses : MassModel
         The moving links [kg, m, kg·m²].
     m : Motion
@@ -274,29 +276,28 @@ def reduced_inertia(linkage: Linkage, masses: MassModel, m: Motion, rod_mass: np
     s1, s2 = _pitman_cg_derivatives(linkage, masses, m)
     beam = (masses.beam_inertia + masses.beam_mass * masses.beam_cg**2
             + masses.horsehead_inertia + masses.horsehead_mass * masses.horsehead_cg**2
-            + masses.equalizer_inertia + masses.equalizer_mass * linkage.rear_arm**2)
-    rod = rod_mass * linkage.front_arm**2
+            + masses.equalizer_inertia + masses.equalizer_mass * linkage.equalizer_arm**2)
     inertia = (constant + 2.0 * (masses.pitman_mass * np.sum(s1 * s1, axis=0) + masses.pitman_inertia * m.pitman_rate**2)
-               + (beam + rod) * m.beam_rate**2)
+               + beam * m.beam_rate**2 + rod_mass * m.torque_factor**2)
     rate = (4.0 * (masses.pitman_mass * np.sum(s1 * s2, axis=0) + masses.pitman_inertia * m.pitman_rate * m.pitman_rate2)
-            + 2.0 * (beam + rod) * m.beam_rate * m.beam_rate2)
+            + 2.0 * (beam * m.beam_rate * m.beam_rate2 + rod_mass * m.torque_factor * m.torque_factor_rate))
     return inertia, rate
 
 
-def gravity_torque(linkage: Linkage, masses: MassModel, m: Motion, gravity: float = STANDARD_GRAVITY) -> np.ndarray:
+def gravity_torque(linkage: Mechanism, masses: MassModel, m: Motion, gravity: float = STANDARD_GRAVITY) -> np.ndarray:
     """Gravity torque of all links reduced to the crank, M_gravity = dV/dtheta.
 
         V = g [2 m_1 r_1 cos theta + m_cw r_cw cos(theta + phase) + 2 m_2 y_S2
-               + (m_beam x_beam + m_head x_head - m_eq C) sin psi]:
+               + (m_beam x_beam + m_head x_head + m_eq x_eq) sin psi]:
 
     crank arms and counterweights at their radii (heights from the shaft), pitmans at
-    their centres, the beam group on the beam line (equalizer at D, a distance C behind
-    the centre bearing).
+    their centres, the beam group on the beam line (equalizer at D, x_eq from the centre
+    bearing towards the well: -C on a class I unit).
 
     Parameters
     ----------
-    linkage : Linkage
-        The four-bar [m].
+    linkage : Mechanism
+        The unit [m].
     masses : MassModel
         The moving links [kg, m, rad].
     m : Motion
@@ -330,7 +331,7 @@ def gravity_torque(linkage: Linkage, masses: MassModel, m: Motion, gravity: floa
     theta = m.crank_angle
     s1, _ = _pitman_cg_derivatives(linkage, masses, m)
     beam_moment = (masses.beam_mass * masses.beam_cg + masses.horsehead_mass * masses.horsehead_cg
-                   - masses.equalizer_mass * linkage.rear_arm)
+                   + masses.equalizer_mass * linkage.equalizer_arm)
     return gravity * (
         -2.0 * masses.crank_arm_mass * masses.crank_arm_cg * np.sin(theta)
         - masses.counterweight_mass * masses.counterweight_radius * np.sin(theta + masses.counterweight_phase)
@@ -370,7 +371,7 @@ def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray
     load = machine.rod_load
     rod_mass = np.where(up, load.mass_upstroke, load.mass_downstroke)
     inertia, rate = reduced_inertia(machine.linkage, machine.masses, m, rod_mass, machine.constant_inertia)
-    tf = machine.linkage.front_arm * m.beam_rate
+    tf = m.torque_factor
     force = np.asarray(load.force(theta, up), dtype=float)
     return Coefficients(
         inertia=inertia,
@@ -384,7 +385,7 @@ def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray
     )
 
 
-def mean_rod_speeds(linkage: Linkage, omega: float) -> tuple[float, float]:
+def mean_rod_speeds(linkage: Mechanism, omega: float) -> tuple[float, float]:
     """Mean polished-rod speeds of the upstroke and the downstroke at uniform crank speed.
 
     v = S / t, with t = (crank travel of the stroke) / omega.

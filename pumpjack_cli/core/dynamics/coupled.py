@@ -106,9 +106,7 @@ class _Tables:
         linkage = machine.linkage
         m = linkage.motion(theta)
         inertia, rate = reduced_inertia(linkage, machine.masses, m, 0.0, machine.constant_inertia)
-        bottom = linkage.dead_positions().beam_angle_bottom
-        columns = np.stack([linkage.front_arm * (m.beam_angle - bottom), linkage.front_arm * m.beam_rate,
-                            linkage.front_arm * m.beam_rate2, inertia, rate,
+        columns = np.stack([m.rod_position, m.torque_factor, m.torque_factor_rate, inertia, rate,
                             gravity_torque(linkage, machine.masses, m, machine.gravity)], axis=1)
         if not (np.all(np.isfinite(columns)) and np.all(inertia > 0)):
             raise PredictionError("the machine's inertia or gravity torque is not finite and positive; check the unit data")

@@ -22,7 +22,7 @@ import numpy as np
 
 from ...errors import DynamicsError
 from ..beam.kinematics import RodMotion, rod_motion
-from ..beam.linkage import DeadPositions
+from ..mechanism import DeadPositions
 from ..sampling import Extreme, crank_grid, extremes
 from .coefficients import Machine, coefficients
 
@@ -407,9 +407,8 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
     u = machine.drive_ratio
     motor_speed = u * omega
     motor_torque = drive / u
-    rod = rod_motion(machine.linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom, omega, epsilon)
-    rod_uniform = rod_motion(machine.linkage, m.beam_angle, m.beam_rate, m.beam_rate2, dead.beam_angle_bottom,
-                             machine.rated_crank_speed)
+    rod = rod_motion(m, omega, epsilon)
+    rod_uniform = rod_motion(m, machine.rated_crank_speed)
     summary = _summary(machine, strokes, solutions, at, period, float(end[2]), work, convergence)
     return SteadyState(
         crank_angle=theta_out,

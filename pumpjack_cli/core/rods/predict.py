@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ...errors import PredictionError
-from ..beam.geometry import Linkage
+from ..mechanism import Mechanism
 from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
 from .predict_solver import (Convergence, PumpMarch, WellModel, converge, periodic_carry,
                              periodic_fields, spectral_derivatives, well_model)
@@ -225,7 +225,7 @@ def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np
     )
 
 
-def predict_cards(linkage: Linkage, crank_speed: float, rods: RodString, pump: Pump, *, damping: float,
+def predict_cards(linkage: Mechanism, crank_speed: float, rods: RodString, pump: Pump, *, damping: float,
                   fluid_density: float, samples: int = 360, rod_density: float = STEEL_DENSITY,
                   resolution: int = 1024) -> Prediction:
     """Cards of a beam unit turning uniformly, on ``samples`` points of one cycle from crank angle 0.
