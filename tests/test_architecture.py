@@ -96,3 +96,58 @@ def test_every_package_is_listed_for_installation():
     found = {".".join(p.parent.relative_to(ROOT).parts) for p in PACKAGE.rglob("__init__.py")}
     found.add("pumpjack_cli.configs")
     assert listed == found
+
+
+# --- the mechanism seam -------------------------------------------------------------
+
+#: Modules that are mechanisms (or build them from a unit file), or models specific to the
+#: conventional unit's six-link mechanism (spatial kinetostatics and the real mechanism), or
+#: another kind of machine (the slider-crank of drill pumps): they may read a linkage's dimensions.
+MECHANISM_MODULES = {
+    "core/beam/geometry.py", "core/beam/linkage.py",
+    "core/beam/spatial.py", "core/beam/kinetostatics.py", "core/beam/reactions.py", "core/beam/redundancy.py",
+    "config/beam_unit.py", "config/geometry_names.py",
+}
+#: The class I four-bar's own dimensions and helpers; everything else asks the Mechanism protocol.
+CLASS_I_ATTRIBUTES = {"front_arm", "rear_arm", "crank_radius", "pitman", "horizontal_offset", "vertical_offset",
+                      "crank_shaft", "frame_length", "pin_rates"}
+ARMS = {"front_arm", "horsehead_arm"}
+
+
+def _seam_modules() -> list[Path]:
+    return [p for p in sorted(PACKAGE.rglob("*.py")) if str(p.relative_to(PACKAGE)) not in MECHANISM_MODULES
+            and "slider_crank" not in p.parts and p.stem != "slider_crank"]
+
+
+def _names(node: ast.AST) -> set[str]:
+    return {n.attr for n in ast.walk(node) if isinstance(n, ast.Attribute)} | {
+        n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
+
+
+@pytest.mark.parametrize("path", _seam_modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor(path):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    read = sorted({f"{node.attr} (line {node.lineno})" for node in ast.walk(tree)
+                   if isinstance(node, ast.Attribute) and node.attr in CLASS_I_ATTRIBUTES})
+    assert not read, f"{path.relative_to(ROOT)} reads class-I dimensions: {read}; use the Mechanism protocol"
+    products = [node.lineno for node in ast.walk(tree) if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult)
+                and ({"beam_rate", "beam_rate2"} & _names(node.left) and ARMS & _names(node.right)
+                     or {"beam_rate", "beam_rate2"} & _names(node.right) and ARMS & _names(node.left))]
+    assert not products, f"{path.relative_to(ROOT)} computes a torque factor at lines {products}; ask the mechanism"
+
+
+def test_the_seam_test_sees_a_torque_factor(tmp_path):
+    """The check above fails on the pattern it forbids (a test that can fail)."""
+    tree = ast.parse("tf = unit.front_arm * m.beam_rate\nother = m.beam_rate * q.horsehead_arm\n")
+    found = [n for n in ast.walk(tree) if isinstance(n, ast.BinOp) and isinstance(n.op, ast.Mult)
+             and {"beam_rate"} & (_names(n.left) | _names(n.right)) and ARMS & (_names(n.left) | _names(n.right))]
+    assert len(found) == 2
+
+
+def test_the_core_type_checks(tmp_path):
+    """mypy over the numerical core: 0 errors (settings in pyproject.toml's [tool.mypy])."""
+    pytest.importorskip("mypy")
+    done = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "cache"),
+                           "--config-file", str(ROOT / "pyproject.toml"), str(PACKAGE / "core")],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert done.returncode == 0, done.stdout + done.stderr

@@ -51,10 +51,17 @@ class DeadPositions(Protocol):
     [API11E] (crank-angle convention).
     """
 
-    crank_angle_bottom: float
-    crank_angle_top: float
-    beam_angle_bottom: float
-    beam_angle_top: float
+    @property
+    def crank_angle_bottom(self) -> float: ...
+
+    @property
+    def crank_angle_top(self) -> float: ...
+
+    @property
+    def beam_angle_bottom(self) -> float: ...
+
+    @property
+    def beam_angle_top(self) -> float: ...
 
     @property
     def stroke(self) -> float: ...
@@ -171,11 +178,24 @@ class Mechanism(Protocol):
     [API11E] (torque factor, crank-angle convention, unit classes).
     """
 
-    rotation: int
-    lever_class: str
-    horsehead_arm: float
-    equalizer_arm: float
-    pitman_length: float
+    @property
+    def rotation(self) -> int: ...
+
+    @property
+    def lever_class(self) -> str: ...
+
+    @property
+    def horsehead_arm(self) -> float: ...
+
+    @property
+    def equalizer_arm(self) -> float: ...
+
+    @property
+    def pitman_length(self) -> float: ...
+
+    def __hash__(self) -> int:
+        """Mechanisms are immutable values: analyses cache their tables per mechanism."""
+        ...
 
     def check(self) -> None:
         """Raise :class:`~pumpjack_cli.errors.GeometryError` unless the crank turns through a revolution."""

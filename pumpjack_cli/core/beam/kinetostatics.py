@@ -219,8 +219,8 @@ def applied_loads(
     # Equalizer: centre of mass at D on the beam; inertia about its pin line u goes to the beam.
     u = sm.pin_b - sm.pin_b1
     u = u / np.linalg.norm(u, axis=-1, keepdims=True)
-    along = np.sum(sm.e4 * u, axis=-1, keepdims=True) * u
-    axial_moment = -masses.equalizer_inertia * along
+    spin = np.sum(sm.e4 * u, axis=-1, keepdims=True) * u
+    axial_moment = -masses.equalizer_inertia * spin
     gyro = (masses.equalizer_inertia - masses.equalizer_transverse_inertia) * np.sum(
         sm.w4 * u, axis=-1, keepdims=True) * cross(sm.w4, u)
     a_d = _point_acceleration(sm.e5, sm.w5, sm.pin_d)

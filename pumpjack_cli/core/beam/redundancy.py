@@ -658,7 +658,7 @@ def _joined(parts: list):
     """Results of consecutive chunks of crank angles as one: arrays joined along the crank
     angles, nested results joined field by field, anything else taken from the first."""
     first = parts[0]
-    if dataclasses.is_dataclass(first):
+    if dataclasses.is_dataclass(first) and not isinstance(first, type):
         return dataclasses.replace(first, **{f.name: _joined([getattr(p, f.name) for p in parts])
                                              for f in dataclasses.fields(first)})
     if isinstance(first, np.ndarray) and first.ndim >= 1:

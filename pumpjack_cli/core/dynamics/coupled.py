@@ -338,7 +338,7 @@ class _CoupledMarch:
                          discharged, period, convergence)
         tables = np.array([self.tables.at(t) for t in theta])
         tf, inertia, rate, gravity = tables[:, 1], tables[:, 3], tables[:, 4], tables[:, 5]
-        drive_torque = machine.drive_torque(omega)
+        drive_torque = np.asarray(machine.drive_torque(omega))
         load_torque = cards.polished_rod_load * tf
         inertia_torque = inertia * eps + 0.5 * rate * omega**2
         gearbox = drive_torque - machine.drive_inertia * eps

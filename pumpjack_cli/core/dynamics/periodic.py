@@ -17,6 +17,7 @@ the mean speed of the energy balance (a u + b u^2 <omega>_theta = E / 2 pi).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -25,6 +26,9 @@ from ..beam.kinematics import RodMotion, rod_motion
 from ..mechanism import DeadPositions
 from ..sampling import Extreme, crank_grid, extremes
 from .coefficients import Machine, coefficients
+
+if TYPE_CHECKING:  # scipy is imported when a solution is computed
+    from scipy.interpolate import CubicSpline
 
 #: Default relative tolerance of the integration; absolute tolerances are rtol x state scale.
 DEFAULT_RTOL = 1e-10
@@ -50,7 +54,7 @@ class _Stroke:
 
     start: float
     travel: float
-    spline: object
+    spline: CubicSpline
 
 
 @dataclass(frozen=True)
@@ -241,6 +245,18 @@ def _cycle_work(strokes: tuple[_Stroke, _Stroke]) -> float:
     return sum(float(s.spline.integrate(s.start, s.start + s.travel)[2]) for s in strokes)
 
 
+class _Stall:
+    """The integration's terminal event: the crank speed falls to the stall floor [1/s]."""
+
+    terminal = True
+
+    def __init__(self, floor: float):
+        self.floor = floor
+
+    def __call__(self, theta: float, y: np.ndarray) -> float:
+        return y[0] - self.floor
+
+
 class _Shooter:
     """Integrates one cycle from the start of the upstroke for a given start speed."""
 
@@ -257,10 +273,7 @@ class _Shooter:
         machine = self.machine
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
 
-        def stalled(theta, y):
-            return y[0] - self.floor
-
-        stalled.terminal = True
+        stalled = _Stall(self.floor)
         y = np.array([omega0, 0.0, 0.0])
         solutions = []
         for stroke in self.strokes:

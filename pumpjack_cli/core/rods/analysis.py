@@ -161,8 +161,8 @@ def summarise_pump_card(pump_position, pump_load) -> PumpCardSummary:
     if not (stroke > 0).all():
         index = int(np.flatnonzero(~(stroke > 0))[0])
         raise DownholeError(f"pump card {index + 1} has no plunger stroke")
-    index = np.arange(p.shape[-1])
-    upstroke = index[None, :] <= top[:, None]
+    sample = np.arange(p.shape[-1])
+    upstroke = sample[None, :] <= top[:, None]
     up = _band_median(p, f, upstroke, low, stroke, UPSTROKE_BAND, "upstroke")
     down = _band_median(p, f, ~upstroke, low, stroke, DOWNSTROKE_BAND, "downstroke")
     middle = 0.5 * (up + down)

@@ -92,7 +92,7 @@ def pump_pressures(pump_depth: float, fluid_density: float, *, submergence: floa
         if not 0.0 <= submergence <= pump_depth:
             raise PredictionError(f"submergence {submergence:.6g} m must lie between 0 and the pump depth {pump_depth:.6g} m")
         intake = casing_head_pressure + fluid_density * gravity * submergence
-    else:
+    elif intake_pressure is not None:
         intake = float(intake_pressure)
     if not (math.isfinite(intake) and math.isfinite(discharge)):
         raise PredictionError("pump pressures must be finite")

@@ -17,7 +17,7 @@ T_s(x) is the buoyant weight of the rods below x; the wave equation carries the 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -83,8 +83,8 @@ class RodString:
     area: np.ndarray
     youngs_modulus: np.ndarray
     mass_per_length: np.ndarray
-    material_density: np.ndarray | None = None
-    tensile_strength: np.ndarray | None = None
+    material_density: np.ndarray = field(default_factory=lambda: np.array(STEEL_DENSITY))
+    tensile_strength: np.ndarray = field(default_factory=lambda: np.array(np.nan))
     names: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
@@ -93,10 +93,8 @@ class RodString:
         fields = {"length": length}
         for name in ("area", "youngs_modulus", "mass_per_length"):
             fields[name] = _sections(name, getattr(self, name), count)
-        density = STEEL_DENSITY if self.material_density is None else self.material_density
-        fields["material_density"] = _sections("material_density", np.broadcast_to(density, count), count)
-        strength = np.nan if self.tensile_strength is None else self.tensile_strength
-        fields["tensile_strength"] = _sections("tensile_strength", np.broadcast_to(strength, count), count)
+        for name in ("material_density", "tensile_strength"):
+            fields[name] = _sections(name, np.broadcast_to(getattr(self, name), count), count)
         for name, array in fields.items():
             if name == "tensile_strength":
                 bad = ~(np.isnan(array) | (np.isfinite(array) & (array > 0)))
@@ -204,7 +202,7 @@ class RodString:
         """
         if not (np.isfinite(fluid_density) and fluid_density >= 0):
             raise DownholeError(f"fluid density must be finite and not negative, got {fluid_density:g} kg/m^3")
-        floating = fluid_density >= self.material_density
+        floating = np.asarray(fluid_density >= self.material_density)
         if floating.any():
             index = int(np.flatnonzero(floating)[0])
             raise DownholeError(f"fluid density {fluid_density:g} kg/m^3 is not below the density of rod section "

@@ -304,5 +304,6 @@ def rod_string(sections: Sequence[RodSection]) -> RodString:
         raise DownholeError("a rod string needs at least one section")
     rows = [_section_data(section, index) for index, section in enumerate(sections)]
     names, area, modulus, mass, density, strength = zip(*rows)
-    return RodString(length=[section.length for section in sections], area=area, youngs_modulus=modulus,
-                     mass_per_length=mass, material_density=density, tensile_strength=strength, names=names)
+    return RodString(length=np.array([section.length for section in sections]), area=np.array(area),
+                     youngs_modulus=np.array(modulus), mass_per_length=np.array(mass),
+                     material_density=np.array(density), tensile_strength=np.array(strength), names=names)
