@@ -225,7 +225,7 @@ def applied_loads(
         sm.w4 * u, axis=-1, keepdims=True) * cross(sm.w4, u)
     a_d = _point_acceleration(sm.e5, sm.w5, sm.pin_d)
     equalizer = body(([masses.equalizer_mass], sm.pin_d[:, None, :]), a_d[:, None, :],
-                     -masses.equalizer_transverse_inertia * (sm.e4 - along) - gyro)
+                     -masses.equalizer_transverse_inertia * (sm.e4 - spin) - gyro)
 
     # Beam body and horsehead on the beam line; rod load at the horsehead tangent point E.
     line = np.stack([np.cos(sm.beam_angle), np.sin(sm.beam_angle), np.zeros(n)], axis=-1)
