@@ -15,13 +15,16 @@ import typer
 from .errors import PumpjackError
 from .quantities import parse_quantity
 from .render import Outputs
+from .render.formats import CSV, FORMATS, PLOT_SUFFIXES, TABLE
 from .results import Result
 
+#: The ``--format`` choices, one member per name of :data:`~pumpjack_cli.render.formats.FORMATS`.
+Format = Enum("Format", {name: name for name in FORMATS}, module=__name__, type=str)
 
-class Format(str, Enum):
-    table = "table"
-    csv = "csv"
-    json = "json"
+
+def _either(names: tuple[str, ...]) -> str:
+    """Names for a help text: "a, b or c"."""
+    return f"{', '.join(names[:-1])} or {names[-1]}"
 
 
 class UnitSystem(str, Enum):
@@ -38,7 +41,7 @@ class Rotation(str, Enum):
 
 FormatOption = Annotated[
     Format | None,
-    typer.Option("--format", "-f", help="table, csv or json [default: table on a terminal, csv in a pipe]"),
+    typer.Option("--format", "-f", help=f"{_either(FORMATS)} [default: {TABLE} on a terminal, {CSV} in a pipe]"),
 ]
 OutputOption = Annotated[
     Path | None,
@@ -46,7 +49,7 @@ OutputOption = Annotated[
 ]
 PlotOption = Annotated[
     Path | None,
-    typer.Option("--plot", help="also draw the curves to FILE.png, .svg or .pdf", dir_okay=False),
+    typer.Option("--plot", help=f"also draw the curves to FILE{_either(PLOT_SUFFIXES)}", dir_okay=False),
 ]
 UnitsOption = Annotated[
     UnitSystem,

@@ -16,10 +16,11 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli import render
+from pumpjack_cli.render.delimited import write_json
+from pumpjack_cli.render.display import CSV_BLOCK
 from pumpjack_cli.results import STORED, TEXT, Column, Result, Scalar
 
-ROWS = 2 * render.CSV_BLOCK + 17
+ROWS = 2 * CSV_BLOCK + 17
 
 
 def _document(result: Result, system: str) -> str:
@@ -41,7 +42,7 @@ def _document(result: Result, system: str) -> str:
 
 def _full(result: Result, system: str) -> str:
     written = io.StringIO()
-    render.write_json(result, system, written)
+    write_json(result, system, written)
     return written.getvalue()
 
 

@@ -1,0 +1,86 @@
+"""The one renderer: a :class:`~pumpjack_cli.results.Result` to a text table, CSV, JSON or a plot.
+
+Analyses build a result (SI values plus the quantity kind of each); commands hand it
+to :meth:`Outputs.emit`; nothing else in the package prints results. Unit systems are
+applied here only (``si`` or oilfield ``field``), and column names carry the unit suffix
+of the system (``position_m`` / ``position_in``; dimensionless quantities carry none).
+One module per job: :mod:`.formats` (the format names and plot suffixes, declared once),
+:mod:`.delimited` (CSV and JSON), :mod:`.table` (the terminal table), :mod:`.plot`
+(matplotlib), :mod:`.targets` (output files and standard output), :mod:`.display`
+(values and unit labels in the unit system, shared by the writers).
+
+This package imports nothing heavy at start-up (matplotlib only for a plot).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+from ..errors import PumpjackError
+from ..results import Result, check_finite
+from ..text_input import describe_os_error
+from .delimited import write_csv, write_json
+from .formats import CSV, JSON, PLOT_SUFFIXES, TABLE, choose_format
+from .plot import draw_plot
+from .table import FILE_TABLE_WIDTH, write_table
+from .targets import Target, drop_stdout
+
+__all__ = ["Outputs", "drop_stdout"]
+
+_WRITERS = {CSV: write_csv, JSON: write_json, TABLE: write_table}
+
+
+class Outputs:
+    """Where a result goes, checked when a command starts (before anything is computed):
+    stdout or an ``--output`` file in a format, and an optional ``--plot`` file.
+
+    :meth:`emit` writes the plot and the output to temporary files (or stdout) and moves
+    them into place only when both are complete, so a failure leaves every pre-existing
+    file as it was and no temporary file behind.
+    """
+
+    def __init__(self, fmt: str | None, system: str, output: Path | None, plot: Path | None):
+        if plot is not None and plot.suffix.lower() not in PLOT_SUFFIXES:
+            raise PumpjackError(f"--plot {plot}: use a file ending in {', '.join(PLOT_SUFFIXES)}")
+        if output is not None and plot is not None and os.path.abspath(output) == os.path.abspath(plot):
+            raise PumpjackError(f"--output and --plot name the same file {output}")
+        if output is None and sys.stdout is None:
+            raise PumpjackError("standard output is closed: give --output FILE")
+        self.system = system
+        self.format = choose_format(fmt, output)
+        self.output = None if output is None else Target(output, "--output")
+        self.plot = None if plot is None else Target(plot, "--plot")
+
+    def emit(self, result: Result) -> None:
+        """Write the result (and its plot); one line on failure, nothing half-written."""
+        check_finite(result)
+        targets = [t for t in (self.plot, self.output) if t is not None]
+        for target in targets:
+            target.refuse_input()
+        try:
+            if self.plot is not None:
+                with self.plot.open(binary=True) as stream:
+                    draw_plot(result, self.system, stream, self.plot.path.suffix.lstrip(".").lower())
+            if self.output is None:
+                _WRITERS[self.format](result, self.system, sys.stdout)
+                sys.stdout.flush()
+            else:
+                with self.output.open() as stream:
+                    if self.format == TABLE:
+                        write_table(result, self.system, stream, width=FILE_TABLE_WIDTH)
+                    else:
+                        _WRITERS[self.format](result, self.system, stream)
+            for target in targets:
+                target.commit()
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            if self.output is None and exc.filename is None:
+                drop_stdout()
+                raise PumpjackError(f"cannot write standard output: {describe_os_error(exc)}") from None
+            raise PumpjackError(f"cannot write {exc.filename or 'the output'}: {describe_os_error(exc)}") from None
+        finally:
+            for target in targets:
+                target.discard()
