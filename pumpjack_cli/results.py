@@ -13,15 +13,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
 from .errors import PumpjackError
+from .names import TEXT, lookup
 from .quantities import output_unit
 
-#: Quantity kind of a text column (no unit, no conversion).
-TEXT = "text"
 #: Quantity of a column of numbers already in SI display units under their suffixed
 #: names (a results store's columns): shown as they are, None where a value is missing.
 STORED = "stored"
@@ -29,25 +28,41 @@ STORED = "stored"
 
 @dataclass(frozen=True)
 class Column:
-    """A per-row series: name, quantity kind (:data:`pumpjack_cli.quantities.OUTPUT_QUANTITIES`
-    or :data:`TEXT`), description and values (SI). ``brief`` columns are the ones the
-    terminal table shows; CSV, JSON and plots carry every column."""
+    """A per-row series: an output name of the catalogue (:mod:`pumpjack_cli.names`, which
+    gives its quantity kind and description) and its values (SI). ``brief`` columns are the
+    ones the terminal table shows; CSV, JSON and plots carry every column. A results store's
+    columns, already suffixed and converted, give ``quantity=STORED`` and a description."""
 
     name: str
-    quantity: str
-    description: str
     values: Any
     brief: bool = False
+    quantity: str = ""
+    description: str = ""
+
+    def __post_init__(self) -> None:
+        if not self.quantity:
+            quantity, description = lookup(self.name)
+            object.__setattr__(self, "quantity", quantity)
+            object.__setattr__(self, "description", description)
 
 
 @dataclass(frozen=True)
 class Scalar:
-    """One summary value (SI) with its quantity kind and description."""
+    """One summary value: an output name of the catalogue (:mod:`pumpjack_cli.names`, which
+    gives its quantity kind and description) and its value, a number (SI) or a text (a label)."""
 
     name: str
-    quantity: str
-    value: float
-    description: str
+    value: float | str
+
+    @property
+    def quantity(self) -> str:
+        """The quantity kind of the catalogue."""
+        return lookup(self.name)[0]
+
+    @property
+    def description(self) -> str:
+        """The meaning of the catalogue."""
+        return lookup(self.name)[1]
 
 
 @dataclass(frozen=True)
@@ -110,11 +125,6 @@ class Result:
         return len(self.columns[0].values) if self.columns else 0
 
 
-def columns_from(table: Sequence[tuple[str, str, str, Any]]) -> tuple[Column, ...]:
-    """Columns from rows of (name, quantity, description, values), declared once each."""
-    return tuple(Column(name, quantity, description, values) for name, quantity, description, values in table)
-
-
 def display_name(name: str, quantity: str, system: str) -> str:
     """Column or summary key with the unit suffix of the unit system (none for text or pure numbers)."""
     if quantity in (TEXT, STORED):
@@ -123,10 +133,11 @@ def display_name(name: str, quantity: str, system: str) -> str:
     return f"{name}_{suffix}" if suffix else name
 
 
-def converted_summary(result: Result, system: str) -> dict[str, float]:
-    """Summary values in the display units of ``system``, keyed by suffixed name."""
+def converted_summary(result: Result, system: str) -> dict[str, float | str]:
+    """Summary values in the display units of ``system``, keyed by suffixed name (text as it is)."""
     return {
-        display_name(s.name, s.quantity, system): float(output_unit(s.quantity, system).convert(float(s.value)))
+        display_name(s.name, s.quantity, system):
+            s.value if isinstance(s.value, str) else float(output_unit(s.quantity, system).convert(float(s.value)))
         for s in result.summary
     }
 
@@ -134,7 +145,7 @@ def converted_summary(result: Result, system: str) -> dict[str, float]:
 def check_finite(result: Result) -> None:
     """Refuse to output NaN or infinity: name the value, or the column and the first bad row."""
     for s in result.summary:
-        if not math.isfinite(s.value):
+        if not isinstance(s.value, str) and not math.isfinite(s.value):
             raise PumpjackError(f"result {s.name} is not finite ({s.value}); the computation failed")
     for c in result.columns:
         if c.quantity == TEXT:

@@ -101,16 +101,16 @@ def test_constant_part_of_the_reduced_inertia_is_the_seeds(machine):
 # --- the coefficients against the independent spatial kinetostatics -------------------
 
 
-def test_gravity_torque_equals_the_kinetostatic_balancing_torque_of_the_weights(sk8, machine):
+def test_gravity_torque_equals_the_kinetostatic_net_torque_of_the_weights(sk8, machine):
     theta = crank_grid(72)
     r = coefficients(machine, theta, np.zeros(theta.size, bool))
     _, reactions = rational_mechanism(sk8.geometry.spatial(), machine.masses, theta, 1.0, 0.0,
                                       np.zeros(theta.size), weights=True, inertia=False)
     scale = np.max(np.abs(r.gravity_torque))
-    np.testing.assert_allclose(r.gravity_torque, reactions.balancing_torque, rtol=0, atol=1e-12 * scale)
+    np.testing.assert_allclose(r.gravity_torque, reactions.net_torque, rtol=0, atol=1e-12 * scale)
 
 
-def test_link_inertia_torque_equals_the_kinetostatic_balancing_torque_of_the_inertia_forces(sk8, machine):
+def test_link_inertia_torque_equals_the_kinetostatic_net_torque_of_the_inertia_forces(sk8, machine):
     # Virtual work: with weights and rod load off, the torque that keeps the links moving
     # is d/dt(dT/d omega) - dT/d theta = I eps + 1/2 I' omega^2 over the links alone
     # (no drive, no rods: the kinetostatics has neither).
@@ -121,7 +121,7 @@ def test_link_inertia_torque_equals_the_kinetostatic_balancing_torque_of_the_ine
     _, reactions = rational_mechanism(sk8.geometry.spatial(), machine.masses, theta, omega, eps,
                                       np.zeros(theta.size), weights=False, inertia=True)
     mine = r.inertia * eps + 0.5 * r.inertia_rate * omega**2
-    np.testing.assert_allclose(mine, reactions.balancing_torque, rtol=0, atol=1e-12 * np.max(np.abs(mine)))
+    np.testing.assert_allclose(mine, reactions.net_torque, rtol=0, atol=1e-12 * np.max(np.abs(mine)))
 
 
 def test_reduced_inertia_is_twice_the_kinetic_energy_at_unit_speed(machine):
@@ -257,8 +257,8 @@ def test_motor_columns_and_inertia_torque_are_consistent(machine, solution):
     np.testing.assert_allclose(solution.motor_speed, u * solution.omega, rtol=1e-15)
     np.testing.assert_allclose(solution.power, solution.motor_torque * solution.motor_speed, rtol=1e-15)
     # Crank-shaft balance at every angle: drive torque = load + gravity + inertia torque.
-    balance = solution.motor_torque * u - solution.load_torque - solution.gravity_torque - solution.inertia_torque
-    assert np.max(np.abs(balance)) <= 1e-9 * np.max(np.abs(solution.load_torque))
+    balance = solution.motor_torque * u - solution.rod_load_torque - solution.gravity_torque - solution.inertia_torque
+    assert np.max(np.abs(balance)) <= 1e-9 * np.max(np.abs(solution.rod_load_torque))
     np.testing.assert_allclose(solution.constant_inertia_torque, machine.constant_inertia * solution.epsilon)
 
 

@@ -1,8 +1,10 @@
-"""Every output name of every command is in docs/glossary.md (one name per quantity).
+"""Every output name of every command is in the catalogue and the glossary, with one meaning.
 
-Each command runs with ``-f json``; every summary key and column key, stripped of the
-unit suffix of its system, must be a name the glossary lists in a code span. A code
-span may hold brace alternatives (``r{12,13}_{x,y}``), expanded here.
+The catalogue (``pumpjack_cli/names.py``) declares each name once; the glossary's output
+sections are generated from it and must be what it generates. Each command runs with
+``-f json``; every summary key and column key, stripped of the unit suffix of its system,
+must be a name of the catalogue and of the glossary (a code span there may hold brace
+alternatives, ``r{12,13}_{x,y}``, expanded here).
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from pumpjack_cli.names import SECTIONS, catalogue, glossary_sections, lookup
 from pumpjack_cli.quantities import OUTPUT_QUANTITIES
 
 GLOSSARY = Path(__file__).resolve().parents[1] / "docs" / "glossary.md"
@@ -35,7 +38,7 @@ RUNS = [
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1"),
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1", "--rotation", "dynamic"),
     ("predict", "c-80d-133-48", "--samples", "64", "--damping", "0.1", "--spm", "8"),
-    ("dynamics", "sk8-3.5-4000", "--steps", "64", "--well-model", "wave", "--damping", "0.1"),
+    ("dynamics", "sk8-3.5-4000", "--samples", "64", "--well-model", "wave", "--damping", "0.1"),
 ]
 
 
@@ -77,6 +80,9 @@ def test_every_output_name_is_in_the_glossary(run_cli, sk8_drivable_card, argv, 
     keys = list(document["summary"]) + list(document["columns"])
     missing = sorted({key for key in keys if _base(key, system, names) not in names})
     assert not missing, f"not in docs/glossary.md: {missing}"
+    for key, column in document["columns"].items():  # the quantity the catalogue declares is the one shown
+        quantity = lookup(_base(key, system, names))[0]
+        assert column["unit"] == ("" if quantity == "text" else OUTPUT_QUANTITIES[quantity][system].label), key
 
 
 def test_batch_store_names_are_in_the_glossary(run_cli, tmp_path):
@@ -91,3 +97,20 @@ def test_batch_store_names_are_in_the_glossary(run_cli, tmp_path):
         keys = json.loads(out)["columns"]
         missing = sorted({key for key in keys if _base(key, "si", names) not in names})
         assert not missing, f"not in docs/glossary.md: {missing}"
+
+
+def test_the_glossary_shows_the_catalogue():
+    """docs/glossary.md's output sections are exactly what the catalogue generates."""
+    text = GLOSSARY.read_text(encoding="utf-8")
+    start, end = "<!-- output names: generated from pumpjack_cli/names.py; do not edit by hand -->\n\n", \
+        "\n<!-- end of generated output names -->"
+    assert text[text.index(start) + len(start):text.index(end)] == glossary_sections()
+
+
+def test_one_meaning_per_name_and_every_quantity_known():
+    names = catalogue()  # raises if a name is declared twice
+    assert all(quantity == "text" or quantity in OUTPUT_QUANTITIES for quantity, _ in names.values())
+    families = [entry.pattern for section in SECTIONS for entry in section.entries]
+    assert len(families) == len(set(families))
+    with pytest.raises(KeyError, match="not in the catalogue"):
+        lookup("balancing_torque")  # a name of the past, unified into net_torque

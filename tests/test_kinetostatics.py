@@ -110,7 +110,7 @@ def test_virtual_work(name, epsilon):
     psi_rate = motion(lk, theta).beam_rate
     power = i_red * omega * epsilon + 0.5 * di_red * omega**3 + dv * omega + load * lk.front_arm * psi_rate * omega
     scale = np.max(np.abs(power))
-    assert np.max(np.abs(r.balancing_torque * omega - power)) < 1e-6 * scale
+    assert np.max(np.abs(r.net_torque * omega - power)) < 1e-6 * scale
 
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
@@ -123,7 +123,7 @@ def test_massless_links_give_the_api_torque_factor_method(name):
     _, r = rational_mechanism(spatial, massless, theta, 1.0, 0.0, load)
     tf = spatial.planar.front_arm * motion(spatial.planar, theta).beam_rate
     expected = tf * load
-    assert np.max(np.abs(r.balancing_torque - expected)) < 1e-9 * np.max(np.abs(expected))
+    assert np.max(np.abs(r.net_torque - expected)) < 1e-9 * np.max(np.abs(expected))
 
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
@@ -158,7 +158,7 @@ def test_every_link_is_in_equilibrium(name):
         "equalizer": (loads.equalizer, [(r.r24, sm.pin_b), (r.r34, sm.pin_b1), (-r.r45, sm.pin_d)], 0.0),
         "beam": (loads.beam, [(r.r45, sm.pin_d), (r.r05, origin)], r.m05),
         "crank": (loads.crank, [(-r.r12, sm.pin_a), (-r.r13, sm.pin_a1), (r.r01, sm.crank_shaft)],
-                  r.m01 + r.balancing_torque[:, None] * spatial.crank_spin),
+                  r.m01 + r.net_torque[:, None] * spatial.crank_spin),
     }
     scale = np.max(rod_load(theta))
     for link, (applied, reactions, couple) in links.items():
@@ -178,7 +178,7 @@ def test_counterweight_gravity_torque():
     _, with_cw = rational_mechanism(spatial, m, theta, 1.1, 0.0, load)
     _, without = rational_mechanism(spatial, dataclasses.replace(m, counterweight_mass=0.0), theta, 1.1, 0.0, load)
     expected = m.counterweight_mass * STANDARD_GRAVITY * m.counterweight_radius * np.sin(theta + m.counterweight_phase)
-    assert np.max(np.abs((without.balancing_torque - with_cw.balancing_torque) - expected)) < 1e-9 * np.max(expected)
+    assert np.max(np.abs((without.net_torque - with_cw.net_torque) - expected)) < 1e-9 * np.max(expected)
 
 
 def test_switches_separate_contributions():
@@ -188,7 +188,7 @@ def test_switches_separate_contributions():
     load = rod_load(theta)
 
     def torque(**kw):
-        return rational_mechanism(spatial, m, theta, 1.1, 0.05, load, **kw)[1].balancing_torque
+        return rational_mechanism(spatial, m, theta, 1.1, 0.05, load, **kw)[1].net_torque
 
     combined = torque(inertia=False) + torque(weights=False) - torque(weights=False, inertia=False)
     assert np.allclose(torque(), combined, rtol=0, atol=1e-9 * np.max(load))

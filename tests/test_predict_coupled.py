@@ -109,10 +109,10 @@ def test_coupled_torques_balance_at_every_sample(sk8, coupled):
     # columns (gearbox torque = M_drive - I_drive eps; load torque P TF; polished-rod velocity TF omega).
     machine = sk8
     drive = coupled.motor_torque * machine.drive_ratio
-    balance = coupled.inertia_torque + coupled.gravity_torque + coupled.load_torque
+    balance = coupled.inertia_torque + coupled.gravity_torque + coupled.rod_load_torque
     assert np.max(np.abs(drive - balance)) < 1e-6 * np.max(np.abs(drive))
-    assert np.allclose(coupled.gearbox_torque, drive - machine.drive_inertia * coupled.crank_acceleration, rtol=1e-12)
-    tf = coupled.load_torque / coupled.cards.polished_rod_load
+    assert np.allclose(coupled.net_torque, drive - machine.drive_inertia * coupled.crank_acceleration, rtol=1e-12)
+    tf = coupled.rod_load_torque / coupled.cards.polished_rod_load
     assert np.allclose(coupled.cards.polished_rod_velocity, tf * coupled.crank_speed, rtol=1e-9, atol=1e-12)
 
 

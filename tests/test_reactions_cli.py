@@ -47,11 +47,11 @@ def test_json_equals_the_library(run_cli, sk8_card):
     for name in ("r12", "r13", "r24", "r34", "r45", "r05", "r01"):
         for i, axis in enumerate("xyz"):
             assert series[f"{name}_{axis}_n"] == getattr(r, name)[:, i].tolist()
-    assert series["balancing_torque_n_m"] == r.balancing_torque.tolist()
+    assert series["net_torque_n_m"] == r.net_torque.tolist()
     summary = data["summary"]
     # the summary's extremes come from a fixed 3600-point grid, refined between points
     dense_theta, _, dense = library(sk8_card, SUMMARY_STEPS)
-    assert summary["max_balancing_torque_n_m"] == extremes(dense_theta, dense.balancing_torque)[0].value
+    assert summary["max_net_torque_n_m"] == extremes(dense_theta, dense.net_torque)[0].value
     assert summary["peak_r12_n"] == peak(dense_theta, dense.r12).value
     assert summary["peak_r12_n"] >= np.linalg.norm(r.r12, axis=-1).max()
     assert summary["equilibrium_residual"] < 1e-9
@@ -65,7 +65,7 @@ def test_csv_and_field_units(run_cli, sk8_card):
     theta, load, r = library(sk8_card, 24)
     lbf, lbf_in = 4.4482216152605, 4.4482216152605 * 0.0254
     assert float(rows[5]["r45_y_lbf"]) == pytest.approx(r.r45[5, 1] / lbf, rel=1e-12)
-    assert float(rows[5]["balancing_torque_lbf_in"]) == pytest.approx(r.balancing_torque[5] / lbf_in, rel=1e-12)
+    assert float(rows[5]["net_torque_lbf_in"]) == pytest.approx(r.net_torque[5] / lbf_in, rel=1e-12)
 
 
 def test_counterweight_options_change_only_the_counterweight_torque(run_cli, sk8_card):
@@ -75,7 +75,7 @@ def test_counterweight_options_change_only_the_counterweight_torque(run_cli, sk8
     def torque(*extra):
         code, out, err = run_cli("reactions", SK8, "--card", sk8_card, "--steps", "36", "-f", "json", *extra)
         assert (code, err) == (0, "")
-        return np.array(json.loads(out)["series"]["balancing_torque_n_m"])
+        return np.array(json.loads(out)["series"]["net_torque_n_m"])
 
     theta = crank_grid(36)
     lighter = torque("--counterweight-count", "6") - torque()
@@ -95,7 +95,7 @@ def test_no_weights_no_inertia_is_the_torque_factor_method(run_cli, sk8_card):
     theta = crank_grid(36)
     tf = config.geometry.linkage().front_arm * motion(config.geometry.linkage(), theta).beam_rate
     expected = tf * np.array(data["rod_load_n"])
-    assert np.allclose(data["balancing_torque_n_m"], expected, rtol=0, atol=1e-9 * np.abs(expected).max())
+    assert np.allclose(data["net_torque_n_m"], expected, rtol=0, atol=1e-9 * np.abs(expected).max())
 
 
 @pytest.mark.parametrize(
@@ -154,7 +154,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     state = steady_state(machine, theta)
     assert series["crank_speed_rad_s"] == state.omega.tolist()
     expected = machine.drive_ratio * state.motor_torque - machine.drive_inertia * state.epsilon
-    torque = np.array(series["balancing_torque_n_m"])
+    torque = np.array(series["net_torque_n_m"])
     assert np.max(np.abs(torque - expected)) < 1e-9 * np.max(np.abs(expected))
 
 

@@ -68,7 +68,7 @@ def test_no_errors_real_equals_rational(setup):
     scale = np.max(load)
     for name in ("r12", "r13", "r24", "r34", "r45", "r05", "r01", "m05", "m01"):
         assert np.max(np.abs(getattr(real, name) - getattr(rational, name))) < 1e-9 * scale, name
-    assert np.max(np.abs(real.balancing_torque - rational.balancing_torque)) < 1e-9 * scale
+    assert np.max(np.abs(real.net_torque - rational.net_torque)) < 1e-9 * scale
     assert np.max(np.abs(real.r12 - real.r13)) < 1e-9 * scale
     for name in ("m12", "m13", "m24", "m34"):
         assert np.max(np.abs(getattr(joints, name))) < 1e-9 * scale
@@ -230,7 +230,7 @@ def test_command_without_errors_matches_reactions(run_cli):
     code, out, _ = run_cli("reactions", UNIT, "--card", CARD, "--spm", "8", "--steps", "72", "-f", "json")
     reactions = json.loads(out)["series"]
     assert series["r12_y_rational_n"] == reactions["r12_y_n"]
-    assert series["balancing_torque_rational_n_m"] == reactions["balancing_torque_n_m"]
+    assert series["net_torque_rational_n_m"] == reactions["net_torque_n_m"]
 
 
 def test_command_deviation_options_reach_the_solver(run_cli):
@@ -302,7 +302,7 @@ def _same_errors(setup, case: str, scale: float):
     tilts = PinTilts(**{f.name: scale * getattr(tilts, f.name) for f in dataclasses.fields(PinTilts)})
     _, _, real = real_mechanism(ideal, actual, tilts, section, masses, theta, OMEGA, 0.0, load)
     _, rational = rational_mechanism(actual, masses, theta, OMEGA, 0.0, load)
-    return real.balancing_torque - rational.balancing_torque, real.r12[:, 1] - real.r13[:, 1]
+    return real.net_torque - rational.net_torque, real.r12[:, 1] - real.r13[:, 1]
 
 
 @pytest.mark.parametrize("case", ["crank_phase", "crank_radius", "pitman_length", "equalizer_pin_roll"])
@@ -336,12 +336,12 @@ def test_kinematic_part_is_the_rational_mechanisms_own_change(run_cli):
     actual = dataclasses.replace(ideal, crank_phase_offset=np.radians(0.1))
     _, with_error = rational_mechanism(actual, masses, theta, reading.speed, 0.0, load)
     _, without = rational_mechanism(ideal, masses, theta, reading.speed, 0.0, load)
-    kinematic = np.array(series["balancing_torque_kinematic_n_m"])
-    assert np.max(np.abs(kinematic - (with_error.balancing_torque - without.balancing_torque))) < 1e-9 * np.max(
-        np.abs(without.balancing_torque))
-    total = np.array(series["balancing_torque_real_n_m"]) - np.array(series["balancing_torque_ideal_n_m"])
-    assert np.allclose(kinematic + np.array(series["balancing_torque_difference_n_m"]), total, rtol=0, atol=1e-6)
-    assert np.max(np.abs(kinematic)) > 10.0 * np.max(np.abs(series["balancing_torque_difference_n_m"]))
+    kinematic = np.array(series["net_torque_kinematic_n_m"])
+    assert np.max(np.abs(kinematic - (with_error.net_torque - without.net_torque))) < 1e-9 * np.max(
+        np.abs(without.net_torque))
+    total = np.array(series["net_torque_real_n_m"]) - np.array(series["net_torque_ideal_n_m"])
+    assert np.allclose(kinematic + np.array(series["net_torque_difference_n_m"]), total, rtol=0, atol=1e-6)
+    assert np.max(np.abs(kinematic)) > 10.0 * np.max(np.abs(series["net_torque_difference_n_m"]))
 
 
 def test_whole_arm_phase_adds_the_turned_arms_gravity_torque(setup):
@@ -359,8 +359,8 @@ def test_whole_arm_phase_adds_the_turned_arms_gravity_torque(setup):
     expected = -g * (masses.crank_arm_mass * masses.crank_arm_cg * (np.sin(theta + phi) - np.sin(theta))
                      + 0.5 * masses.counterweight_mass * masses.counterweight_radius
                      * (np.sin(theta + phi + masses.counterweight_phase) - np.sin(theta + masses.counterweight_phase)))
-    assert np.max(np.abs(by_arm.balancing_torque - by_pin.balancing_torque - expected)) < 1e-9 * np.max(
-        np.abs(by_pin.balancing_torque))
+    assert np.max(np.abs(by_arm.net_torque - by_pin.net_torque - expected)) < 1e-9 * np.max(
+        np.abs(by_pin.net_torque))
     assert np.max(np.abs(expected)) > 50.0  # N·m: the 0.5 deg of 4 x 840 kg at 1 m matters
 
 
@@ -418,5 +418,5 @@ def test_zero_clearance_and_rigid_pins_give_unchanged_results(setup):
     offsets = {"crank_phase_offset": np.radians(0.1), "crank_radius_offset": 1e-3}
     _, base_moments, base = _split(setup, offsets)
     _, moments, same = _split(setup, offsets, joints=redundancy.JointCompliance(np.inf, np.inf, 0.0, 0.0))
-    assert np.array_equal(same.r12, base.r12) and np.array_equal(same.balancing_torque, base.balancing_torque)
+    assert np.array_equal(same.r12, base.r12) and np.array_equal(same.net_torque, base.net_torque)
     assert np.all(moments.contact.iterations == 1)

@@ -43,7 +43,7 @@ def card_like(theta: np.ndarray) -> np.ndarray:
 def static_exact(spatial, masses, load) -> np.ndarray:
     """Balancing torque of the rational mechanism with weights and no inertia."""
     _, reactions = rational_mechanism(spatial, masses, THETA, 0.0, 0.0, load, inertia=False)
-    return reactions.balancing_torque
+    return reactions.net_torque
 
 
 def crank_only(masses: MassModel, phase: float) -> MassModel:

@@ -64,42 +64,34 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     surface_work = float(card_work(surface.position, surface.load))
     pump_work = float(card_work(pump.pump_position, pump.pump_load))
     summary = [
-        Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / surface.period, "pumping speed"),
-        Scalar("damping_factor", "ratio", nu, f"Gibbs' nu of the rods ({source})"),
-        Scalar("max_rod_load", "force", float(reading.card.load.max()), "peak polished-rod load of the card (PPRL)"),
-        Scalar("min_rod_load", "force", float(reading.card.load.min()), "minimum polished-rod load of the card (MPRL)"),
-        Scalar("buoyant_rod_weight", "force", pump.buoyant_weight, "rods with couplings in the well fluid: the datum"),
-        Scalar("gross_pump_stroke", "length", float(figures.gross_stroke), "plunger travel"),
-        Scalar("net_pump_stroke", "length", float(figures.net_stroke),
-               "plunger travel through liquid (from the downstroke's unloading point)"),
-        Scalar("pump_fillage", "percent", float(figures.fillage), "net / gross pump stroke"),
-        Scalar("fluid_load", "force", float(figures.fluid_load), "upstroke minus downstroke load level of the pump card"),
-        Scalar("rp11l_counterbalance_effect", "force",
-               rp11l_counterbalance_effect(pump.buoyant_weight, float(figures.fluid_load)),
-               "design counterbalance effect of API RP 11L, 1.06 (W_rf + F_o/2)"),
-        Scalar("max_pump_load", "force", float(figures.peak_load), "largest net plunger load"),
-        Scalar("min_pump_load", "force", float(figures.minimum_load),
-               "smallest net plunger load; negative: compression at the pump (buckling tendency)"),
-        Scalar("surface_card_work", "energy", surface_work, "work of the surface card per cycle"),
-        Scalar("pump_card_work", "energy", pump_work, "work of the pump card per cycle"),
-        Scalar("pump_displacement", "flow_rate", float(displacement_rate(figures.net_stroke, surface.period,
-                                                                         well.plunger_diameter)),
-               "net stroke x plunger area x strokes per unit time"),
+        Scalar("strokes_per_minute", 2.0 * np.pi / surface.period),
+        Scalar("damping_factor", nu),
+        Scalar("max_rod_load", float(reading.card.load.max())),
+        Scalar("min_rod_load", float(reading.card.load.min())),
+        Scalar("buoyant_rod_weight", pump.buoyant_weight),
+        Scalar("gross_pump_stroke", float(figures.gross_stroke)),
+        Scalar("net_pump_stroke", float(figures.net_stroke)),
+        Scalar("pump_fillage", float(figures.fillage)),
+        Scalar("fluid_load", float(figures.fluid_load)),
+        Scalar("rp11l_counterbalance_effect", rp11l_counterbalance_effect(pump.buoyant_weight, float(figures.fluid_load))),
+        Scalar("max_pump_load", float(figures.peak_load)),
+        Scalar("min_pump_load", float(figures.minimum_load)),
+        Scalar("surface_card_work", surface_work),
+        Scalar("pump_card_work", pump_work),
+        Scalar("pump_displacement", float(displacement_rate(figures.net_stroke, surface.period,
+                                                                         well.plunger_diameter))),
     ]
     found = pressures(unit)
     if found is not None:
-        summary.append(Scalar("pump_intake_pressure", "pressure",
-                              float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0])),
-                              "discharge pressure minus fluid load / plunger area"))
+        summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0]))))
     summary += taper_summary(string, loads, service_factor)
     columns = (
-        Column("time", "time", "time from crank angle 0", surface.time),
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", surface.crank_angle),
-        Column("position", "length", "polished-rod position above the bottom of the stroke", surface.position),
-        Column("rod_load", "force", "polished-rod load", surface.load),
-        Column("pump_position", "length", "plunger position, up positive, from the surface datum", pump.pump_position),
-        Column("pump_load", "force", "net plunger load: rod tension at the pump above the buoyant-weight datum",
-               pump.pump_load),
+        Column("time", surface.time),
+        Column("crank_angle", surface.crank_angle),
+        Column("position", surface.position),
+        Column("rod_load", surface.load),
+        Column("pump_position", pump.pump_position),
+        Column("pump_load", pump.pump_load),
     )
     panels = (
         Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),

@@ -21,68 +21,45 @@ from ..quantities import parse_quantity
 from ..results import Column, Panel, Result, Scalar
 from .inputs import crank_speed
 
-#: Law names in output columns and what they are.
-SLIDER_LAWS = {
-    "harmonic": "sinusoidal law, [InertiaUNB600A] eq. 3",
-    "two_term": "first approximation cos phi + lambda cos 2phi, [InertiaUNB600A] eq. 4",
-    "series4": "trigonometric series to the 4th harmonic",
-    "series6": "trigonometric series to the 6th harmonic",
-}
-BEAM_LAWS = {
-    "harmonic": "elementary theory (harmonic)",
-    "two_term": "refined theory (two-term)",
-    "chord": "horsehead arc taken as its chord, [InertiaUNB600A] eq. 7",
-}
-
-
-def _comparison(title: str, c: InertiaComparison, omega: float, mass: float | None, laws: dict[str, str],
+def _comparison(title: str, c: InertiaComparison, omega: float, mass: float | None,
                 extra: tuple[Scalar, ...] = ()) -> Result:
     """A law comparison: accelerations always, inertia forces -m a when a mass is known."""
     summary = [
-        Scalar("crank_speed", "angular_velocity", omega, "crank angular velocity omega"),
-        Scalar("strokes_per_minute", "stroke_rate", omega, "double strokes (crank revolutions) per minute"),
-        Scalar("stroke", "length", c.stroke, "stroke, exact"),
+        Scalar("crank_speed", omega),
+        Scalar("strokes_per_minute", omega),
+        Scalar("stroke", c.stroke),
         *extra,
-        Scalar("peak_acceleration", "acceleration", c.peak, "max |a| over the cycle, exact"),
-        Scalar("peak_crank_angle", "angle", c.peak_crank_angle, "crank angle of the exact max |a|"),
+        Scalar("peak_acceleration", c.peak),
+        Scalar("peak_crank_angle", c.peak_crank_angle),
     ]
     if mass is not None:
-        summary.append(Scalar("peak_inertia_force", "force", abs(inertia_force(mass, c.peak)),
-                              "max |Phi| = m max |a|, exact"))
+        summary.append(Scalar("peak_inertia_force", abs(inertia_force(mass, c.peak))))
     for name, error in c.errors.items():
-        law = laws[name]
         summary += [
-            Scalar(f"{name}_peak_acceleration", "acceleration", error.peak, f"{law}: max |a|"),
-            *([Scalar(f"{name}_peak_inertia_force", "force", abs(inertia_force(mass, error.peak)), f"{law}: max |Phi|")]
+            Scalar(f"{name}_peak_acceleration", error.peak),
+            *([Scalar(f"{name}_peak_inertia_force", abs(inertia_force(mass, error.peak)))]
               if mass is not None else []),
-            Scalar(f"{name}_peak_error", "percent", error.peak_error,
-                   f"{law}: |1 - max|Phi| / exact max|Phi|| ([InertiaUNB600A] delta)"),
-            Scalar(f"{name}_peak_error_of_law", "percent", error.peak_error_of_law,
-                   f"{law}: |1 - exact max|Phi| / max|Phi||"),
-            Scalar(f"{name}_max_deviation", "percent", error.max_deviation,
-                   f"{law}: max |Phi - exact Phi| / exact max|Phi|"),
-            Scalar(f"{name}_rms_deviation", "percent", error.rms_deviation,
-                   f"{law}: rms(Phi - exact Phi) / rms(exact Phi)"),
+            Scalar(f"{name}_peak_error", error.peak_error),
+            Scalar(f"{name}_peak_error_of_law", error.peak_error_of_law),
+            Scalar(f"{name}_max_deviation", error.max_deviation),
+            Scalar(f"{name}_rms_deviation", error.rms_deviation),
         ]
     columns = [
-        Column("crank_angle", "angle", "crank angle", c.crank_angle),
-        Column("time", "time", "time from crank angle 0", uniform_time(c.crank_angle, omega)),
-        Column("position", "length", "from the inner dead centre (slider) or the bottom (polished rod), exact",
-               c.position),
-        Column("velocity", "velocity", "velocity along the same axis, exact", c.velocity),
-        Column("acceleration", "acceleration", "acceleration along the same axis, exact", c.acceleration),
+        Column("crank_angle", c.crank_angle),
+        Column("time", uniform_time(c.crank_angle, omega)),
+        Column("position", c.position),
+        Column("velocity", c.velocity),
+        Column("acceleration", c.acceleration),
     ]
     if mass is not None:
-        columns.append(Column("inertia_force", "force", "inertia force -m a, exact", inertia_force(mass, c.acceleration)))
+        columns.append(Column("inertia_force", inertia_force(mass, c.acceleration)))
     for name, values in c.laws.items():
         columns += [
-            Column(f"acceleration_{name}", "acceleration", f"acceleration, {laws[name]}", values),
-            Column(f"deviation_{name}", "acceleration", f"acceleration of the law minus exact, {laws[name]}",
-                   values - c.acceleration),
+            Column(f"acceleration_{name}", values),
+            Column(f"deviation_{name}", values - c.acceleration),
         ]
         if mass is not None:
-            columns.append(Column(f"inertia_force_{name}", "force", f"inertia force -m a, {laws[name]}",
-                                  inertia_force(mass, values)))
+            columns.append(Column(f"inertia_force_{name}", inertia_force(mass, values)))
     names = tuple(c.laws)
     panels = [
         Panel("acceleration", ("acceleration",), tuple(f"acceleration_{n}" for n in names)),
@@ -114,44 +91,35 @@ def support_friction(unit, steps: int) -> Result:
     result = reactions(travel)
     at_dead = reactions(np.array([0.0, mechanism.stroke]))
     summary = [
-        Scalar("slider_length", "length", slider.length, "L: clamped end A to guide B"),
-        *(Scalar(f"alpha_{i}", "ratio", alpha, f"alpha_{i} = J_{i} / J_0, J_0 the smallest section")
+        Scalar("slider_length", slider.length),
+        *(Scalar(f"alpha_{i}", alpha)
           for i, alpha in enumerate(reduction_coefficients(second_moments), start=1)),
-        Scalar("guide_friction_outer_dead_centre", "force", at_dead.guide_friction[0],
-               "F = f (|R'| + |R''|) in guide B at the outer dead centre"),
-        Scalar("guide_friction_inner_dead_centre", "force", at_dead.guide_friction[1],
-               "F in guide B at the inner dead centre"),
-        Scalar("total_friction_outer_dead_centre", "force", at_dead.total_friction[0],
-               "guide B and intermediate support, outer dead centre"),
-        Scalar("total_friction_inner_dead_centre", "force", at_dead.total_friction[1],
-               "guide B and intermediate support, inner dead centre"),
+        Scalar("guide_friction_outer_dead_centre", at_dead.guide_friction[0]),
+        Scalar("guide_friction_inner_dead_centre", at_dead.guide_friction[1]),
+        Scalar("total_friction_outer_dead_centre", at_dead.total_friction[0]),
+        Scalar("total_friction_inner_dead_centre", at_dead.total_friction[1]),
     ]
     for label, extreme in zip(("max", "min"), signed_extremes(theta, result.guide_friction)):
         summary += [
-            Scalar(f"{label}_guide_friction", "force", extreme.value, f"{label} F in guide B over the cycle"),
-            Scalar(f"{label}_guide_friction_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {label} F"),
+            Scalar(f"{label}_guide_friction", extreme.value),
+            Scalar(f"{label}_guide_friction_crank_angle", extreme.crank_angle),
         ]
     columns = [
-        Column("crank_angle", "angle", "crank angle from the line of stroke", theta),
-        Column("travel", "length", "s: slider travel from the outer dead centre towards the crank", travel),
-        Column("guide_force", "force", "R_B: force of guide B on the slider, up positive", result.force),
-        Column("guide_moment", "torque", "M_B: moment of guide B on the slider, counterclockwise positive",
-               result.moment),
-        Column("outer_edge_reaction", "force", "R': reaction at the outer edge of guide B", result.outer_edge),
-        Column("inner_edge_reaction", "force", "R'': reaction at the inner edge of guide B", result.inner_edge),
-        Column("guide_friction", "force", "F = f (|R'| + |R''|), friction in guide B", result.guide_friction),
+        Column("crank_angle", theta),
+        Column("travel", travel),
+        Column("guide_force", result.force),
+        Column("guide_moment", result.moment),
+        Column("outer_edge_reaction", result.outer_edge),
+        Column("inner_edge_reaction", result.inner_edge),
+        Column("guide_friction", result.guide_friction),
     ]
     reaction_curves, friction_curves = ("outer_edge_reaction", "inner_edge_reaction"), ("guide_friction",)
     if support is not None:
         columns += [
-            Column("support_position", "length", "z_C: intermediate support from the clamped end A",
-                   support.position - travel),
-            Column("support_reaction", "force", "Y_C: force of the intermediate support on the slider",
-                   result.intermediate),
-            Column("support_friction", "force", "f |Y_C|, friction at the intermediate support",
-                   result.intermediate_friction),
-            Column("total_friction", "force", "friction in guide B and at the intermediate support",
-                   result.total_friction),
+            Column("support_position", support.position - travel),
+            Column("support_reaction", result.intermediate),
+            Column("support_friction", result.intermediate_friction),
+            Column("total_friction", result.total_friction),
         ]
         reaction_curves += ("support_reaction",)
         friction_curves += ("total_friction",)
@@ -172,12 +140,12 @@ def inertia_error(unit, spm: float | None, mass: float | None, support: bool, st
         return _comparison(
             f"{unit.name}: inertia force, exact and approximate laws",
             slider_inertia_laws(mechanism, omega, crank_grid(steps)), omega,
-            unit.reciprocating.mass if mass is None else mass, SLIDER_LAWS,
-            (Scalar("crank_to_rod_ratio", "ratio", mechanism.crank_ratio, "lambda = r / l2"),
-             Scalar("offset", "length", unit.geometry.offset, "e: line of stroke above the crank shaft")),
+            unit.reciprocating.mass if mass is None else mass,
+            (Scalar("crank_to_rod_ratio", mechanism.crank_ratio),
+             Scalar("offset", unit.geometry.offset)),
         )
     if support:
         raise PumpjackError(f"unit {unit.name} is a beam pumping unit: --support-friction needs a slider-crank unit")
     omega = crank_speed(unit, spm)
     return _comparison(f"{unit.name}: polished-rod inertia, exact and approximate laws",
-                       beam_inertia_laws(unit.geometry.linkage(), omega, crank_grid(steps)), omega, mass, BEAM_LAWS)
+                       beam_inertia_laws(unit.geometry.linkage(), omega, crank_grid(steps)), omega, mass)

@@ -32,19 +32,19 @@ def crank_columns(crank_angle, time, speed, acceleration) -> list[Column]:
     """The crank's motion at each row: angle [rad], time [s], speed [1/s] and acceleration [1/s²],
     the first columns of every per-angle table."""
     return [
-        Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation", crank_angle),
-        Column("time", "time", "time from crank angle 0", time),
-        Column("crank_speed", "angular_velocity", "crank angular velocity omega1", speed),
-        Column("crank_acceleration", "angular_acceleration", "crank angular acceleration epsilon1", acceleration),
+        Column("crank_angle", crank_angle),
+        Column("time", time),
+        Column("crank_speed", speed),
+        Column("crank_acceleration", acceleration),
     ]
 
 
 def extreme_scalars(rows) -> list[Scalar]:
     """Summary values of extremes and where they occur: for each (name, extreme with
-    ``value`` and ``crank_angle`` [rad], quantity, meaning), ``name`` and ``name_crank_angle``."""
+    ``value`` and ``crank_angle`` [rad]), ``name`` and ``name_crank_angle``."""
     found = []
-    for name, extreme, quantity, what in rows:
-        found += [Scalar(name, quantity, extreme.value, what),
-                  Scalar(f"{name}_crank_angle", "angle", extreme.crank_angle, f"crank angle of the {what}")]
+    for name, extreme in rows:
+        found += [Scalar(name, extreme.value),
+                  Scalar(f"{name}_crank_angle", extreme.crank_angle)]
     return found
 

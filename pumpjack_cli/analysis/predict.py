@@ -34,8 +34,6 @@ from .torque import SUMMARY_STEPS, card_torque
 DEFAULT_SAMPLES = 360
 #: Rotation models of a prediction.
 ROTATIONS = ("uniform", "dynamic")
-#: Torque-analysis names that repeat what the prediction reports itself.
-_TORQUE_REPEATS = ("strokes_per_minute", "card_work", "polished_rod_power")
 
 
 @dataclass(frozen=True)
@@ -171,55 +169,51 @@ def _card_summary(cards: Prediction, nu: float, fillage: float) -> list[Scalar]:
     high, low = s.peak_polished_rod_load, s.minimum_polished_rod_load
     c = s.convergence
     return [
-        Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / s.period, "pumping speed (mean)"),
-        Scalar("period", "time", s.period, "time of one stroke cycle"),
-        Scalar("damping_factor", "ratio", nu, "Gibbs' nu of the rods"),
-        Scalar("max_rod_load", "force", high.value, "peak polished-rod load (PPRL)"),
-        Scalar("max_rod_load_crank_angle", "angle", high.crank_angle, "crank angle of the PPRL"),
-        Scalar("min_rod_load", "force", low.value, "minimum polished-rod load (MPRL)"),
-        Scalar("min_rod_load_crank_angle", "angle", low.crank_angle, "crank angle of the MPRL"),
-        Scalar("buoyant_rod_weight", "force", s.buoyant_rod_weight, "rods with couplings in the well fluid, W_rf"),
-        Scalar("fluid_load", "force", s.fluid_load, "F_o = (p_d - p_i) A_p on the plunger"),
-        Scalar("rp11l_counterbalance_effect", "force", rp11l_counterbalance_effect(s.buoyant_rod_weight, s.fluid_load),
-               "design counterbalance effect of API RP 11L, 1.06 (W_rf + F_o/2)"),
-        Scalar("stroke", "length", s.polished_rod_stroke, "polished-rod stroke"),
-        Scalar("gross_pump_stroke", "length", s.gross_plunger_stroke, "plunger travel"),
-        Scalar("net_pump_stroke", "length", s.net_plunger_stroke, "liquid discharged per stroke / plunger area"),
-        Scalar("pump_fillage", "percent", fillage, "share of the barrel filled with liquid (input)"),
-        Scalar("static_stretch", "length", s.static_stretch, "F_o x (rods' and tubing's compliance): stretch under the "
-               "fluid load"),
-        Scalar("pump_displacement", "flow_rate", s.pump_rate, "liquid discharged per unit time"),
-        Scalar("surface_card_work", "energy", s.surface_card_work, "polished-rod work per cycle"),
-        Scalar("pump_card_work", "energy", s.pump_card_work, "work on the fluid per cycle"),
-        Scalar("damping_dissipation", "energy", s.damping_dissipation, "work of the rods' damping per cycle"),
-        Scalar("rod_energy_residual", "ratio", s.energy_residual, "(surface - pump - damping work) / surface work"),
-        Scalar("polished_rod_power", "power", s.polished_rod_power, "surface card work x cycles per second"),
-        Scalar("cycles", "count", c.cycles, "cycles marched to the periodic state"),
-        Scalar("periodicity_error", "ratio", c.change, "largest relative change of the pump card in the last cycle"),
+        Scalar("strokes_per_minute", 2.0 * np.pi / s.period),
+        Scalar("period", s.period),
+        Scalar("damping_factor", nu),
+        Scalar("max_rod_load", high.value),
+        Scalar("max_rod_load_crank_angle", high.crank_angle),
+        Scalar("min_rod_load", low.value),
+        Scalar("min_rod_load_crank_angle", low.crank_angle),
+        Scalar("buoyant_rod_weight", s.buoyant_rod_weight),
+        Scalar("fluid_load", s.fluid_load),
+        Scalar("rp11l_counterbalance_effect", rp11l_counterbalance_effect(s.buoyant_rod_weight, s.fluid_load)),
+        Scalar("stroke", s.polished_rod_stroke),
+        Scalar("gross_pump_stroke", s.gross_plunger_stroke),
+        Scalar("net_pump_stroke", s.net_plunger_stroke),
+        Scalar("pump_fillage", fillage),
+        Scalar("static_stretch", s.static_stretch),
+        Scalar("pump_displacement", s.pump_rate),
+        Scalar("surface_card_work", s.surface_card_work),
+        Scalar("pump_card_work", s.pump_card_work),
+        Scalar("damping_dissipation", s.damping_dissipation),
+        Scalar("rod_energy_residual", s.energy_residual),
+        Scalar("polished_rod_power", s.polished_rod_power),
+        Scalar("cycles", c.cycles),
+        Scalar("periodicity_error", c.change),
     ]
 
 
 def coupled_summary(s) -> list[Scalar]:
     """The machine's side of a coupled solution (:class:`~pumpjack_cli.core.dynamics.coupled.CoupledSummary`)."""
-    rows = [Scalar("mean_crank_speed", "angular_velocity", s.mean_speed, "mean crank speed, 2 pi / cycle time"),
-            Scalar("speed_fluctuation", "percent", s.speed_fluctuation, "(max - min) / mean crank speed")]
+    rows = [Scalar("mean_crank_speed", s.mean_speed),
+            Scalar("speed_fluctuation", s.speed_fluctuation)]
     rows += extreme_scalars((
-        ("max_crank_speed", s.max_speed, "angular_velocity", "max crank speed"),
-        ("min_crank_speed", s.min_speed, "angular_velocity", "min crank speed"),
-        ("max_crank_acceleration", s.max_acceleration, "angular_acceleration", "max crank acceleration"),
-        ("min_crank_acceleration", s.min_acceleration, "angular_acceleration", "min crank acceleration"),
-        ("max_motor_torque", s.peak_motor_torque, "torque", "max motor torque"),
-        ("min_motor_torque", s.min_motor_torque, "torque", "min motor torque (negative: generating)"),
-        ("max_inertia_torque", s.peak_inertia_torque, "torque", "max inertia torque of links and drive"),
-        ("min_inertia_torque", s.min_inertia_torque, "torque", "min inertia torque of links and drive"),
+        ("max_crank_speed", s.max_speed),
+        ("min_crank_speed", s.min_speed),
+        ("max_crank_acceleration", s.max_acceleration),
+        ("min_crank_acceleration", s.min_acceleration),
+        ("max_motor_torque", s.peak_motor_torque),
+        ("min_motor_torque", s.min_motor_torque),
+        ("max_inertia_torque", s.peak_inertia_torque),
+        ("min_inertia_torque", s.min_inertia_torque),
     ))
-    rows += [Scalar("energy_per_cycle", "energy", s.motor_work, "energy the motor delivers per cycle"),
-             Scalar("rod_work_per_cycle", "energy", s.polished_rod_work, "work of the polished-rod load per cycle"),
-             Scalar("machine_energy_residual", "ratio", s.energy_residual,
-                    "(motor work - polished-rod work) / motor work: the equation of motion's energy closure"),
-             Scalar("breakdown_torque_margin", "ratio", s.breakdown_torque_margin,
-                    "motor pull-out torque / max motor torque"),
-             Scalar("revolutions", "count", s.convergence.cycles, "revolutions marched to the periodic state")]
+    rows += [Scalar("energy_per_cycle", s.motor_work),
+             Scalar("rod_work_per_cycle", s.polished_rod_work),
+             Scalar("machine_energy_residual", s.energy_residual),
+             Scalar("breakdown_torque_margin", s.breakdown_torque_margin),
+             Scalar("revolutions", s.convergence.cycles)]
     return rows
 
 
@@ -236,25 +230,18 @@ def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
                               found.damping)
     card, runs = _runs(uniform_found, SUMMARY_STEPS)
     method = "exact" if unit.masses is not None else "api"
-    uniform_peak = next(s.value for s in card_torque(unit, card, runs, method, "equal-peaks").summary
-                        if s.name == "peak_net_torque")
+    uniform_peak = card_torque(unit, card, runs, method, "equal-peaks").peak_net_torque
     rigid = steady_state(machine(unit), crank_grid(SUMMARY_STEPS))
     rigid_load = rigid.rod_load
     rows = [
-        Scalar("uniform_max_rod_load", "force", uniform.summary.peak_polished_rod_load.value,
-               "PPRL at uniform rotation at the same mean speed"),
-        Scalar("uniform_min_rod_load", "force", uniform.summary.minimum_polished_rod_load.value,
-               "MPRL at uniform rotation at the same mean speed"),
-        Scalar("uniform_peak_net_torque", "torque", uniform_peak,
-               "largest |net torque| at uniform rotation at the same mean speed"),
-        Scalar("rigid_rod_speed_fluctuation", "percent", rigid.summary.speed_fluctuation,
-               "speed fluctuation of the rigid-rod model ([SK8Rotation2013], `pumpjack dynamics`)"),
-        Scalar("rigid_rod_max_motor_torque", "torque", rigid.summary.max_motor_torque.value,
-               "max motor torque of the rigid-rod model"),
-        Scalar("rigid_rod_peak_inertia_torque", "torque", float(np.max(np.abs(rigid.inertia_torque))),
-               "largest |inertia torque| of the rigid-rod model"),
-        Scalar("rigid_rod_max_rod_load", "force", float(np.max(rigid_load)), "PPRL of the rigid-rod model"),
-        Scalar("rigid_rod_min_rod_load", "force", float(np.min(rigid_load)), "MPRL of the rigid-rod model"),
+        Scalar("uniform_max_rod_load", uniform.summary.peak_polished_rod_load.value),
+        Scalar("uniform_min_rod_load", uniform.summary.minimum_polished_rod_load.value),
+        Scalar("uniform_peak_net_torque", uniform_peak),
+        Scalar("rigid_rod_speed_fluctuation", rigid.summary.speed_fluctuation),
+        Scalar("rigid_rod_max_motor_torque", rigid.summary.max_motor_torque.value),
+        Scalar("rigid_rod_peak_inertia_torque", float(np.max(np.abs(rigid.inertia_torque)))),
+        Scalar("rigid_rod_max_rod_load", float(np.max(rigid_load))),
+        Scalar("rigid_rod_min_rod_load", float(np.min(rigid_load))),
     ]
     return rows
 
@@ -274,35 +261,25 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
     card, runs = _runs(found, steps)
     method = "exact" if unit.masses is not None else "api"
     torque = card_torque(unit, card, runs, method, "equal-peaks")
-    summary += [s for s in torque.summary if s.name not in _TORQUE_REPEATS]
-    named = {c.name: c for c in torque.columns}
-    torque_column = named.get("net_torque", named["recommended_net_torque"])
-    rating = next(panel.levels for panel in torque.panels if panel.title == "net torque")
+    summary += torque.summary
     columns = [
         *crank_columns(cards.crank_angle, cards.time, found.crank_speed, found.crank_acceleration),
-        Column("position", "length", "polished-rod position above the bottom of the stroke",
-               cards.polished_rod_position),
-        Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
-        Column("rod_load", "force", "polished-rod load", cards.polished_rod_load),
-        Column("pump_position", "length", "plunger position, up positive, from where it hangs without fluid load "
-               "with the polished rod at the bottom", cards.plunger_position),
-        Column("pump_load", "force", "net plunger load (p_d - p_chamber) A_p", cards.pump_load),
-        Column("chamber_pressure", "pressure", "pressure in the pump chamber below the plunger",
-               cards.chamber_pressure),
-        torque_column,
+        Column("position", cards.polished_rod_position),
+        Column("velocity", cards.polished_rod_velocity),
+        Column("rod_load", cards.polished_rod_load),
+        Column("pump_position", cards.plunger_position),
+        Column("pump_load", cards.pump_load),
+        Column("chamber_pressure", cards.chamber_pressure),
+        torque.net_torque,
     ]
     if found.coupled is not None:
         both = found.coupled
-        columns += [Column("motor_torque", "torque", "motor shaft torque", both.motor_torque),
-                    Column("gearbox_torque", "torque", "gearbox torque on the crank from the equation of motion",
-                           both.gearbox_torque),
-                    Column("inertia_torque", "torque", "I epsilon1 + 1/2 I' omega1^2 of links and drive",
-                           both.inertia_torque)]
+        columns += [Column("motor_torque", both.motor_torque), Column("inertia_torque", both.inertia_torque)]
         summary += coupled_summary(both.summary)
         summary += _comparison(unit, found, samples)
     panels = [Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
                                         Curve("pump card", "pump_position", "pump_load")), x_label="position"),
-              Panel("net torque", (torque_column.name,), x="crank_angle", levels=rating),
+              Panel("net torque", (torque.net_torque.name,), x="crank_angle", levels=torque.rating_levels),
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
@@ -316,23 +293,21 @@ def wave_dynamics(unit, samples: int, damping: float | None) -> Result:
     of the unit's ``[well]`` instead of the rigid-rod model ([SK8Rotation2013], [Gibbs1963])."""
     found = predicted(unit, None, "dynamic", samples, damping)
     both, cards = found.coupled, found.cards
-    summary = [Scalar("damping_factor", "ratio", found.damping, "Gibbs' nu of the rods"),
-               Scalar("period", "time", cards.summary.period, "time of one stroke cycle"),
-               Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi / cards.summary.period, "pumping speed"),
+    summary = [Scalar("damping_factor", found.damping),
+               Scalar("period", cards.summary.period),
+               Scalar("strokes_per_minute", 2.0 * np.pi / cards.summary.period),
                *coupled_summary(both.summary),
-               Scalar("max_rod_load", "force", cards.summary.peak_polished_rod_load.value, "peak polished-rod load"),
-               Scalar("min_rod_load", "force", cards.summary.minimum_polished_rod_load.value,
-                      "minimum polished-rod load")]
+               Scalar("max_rod_load", cards.summary.peak_polished_rod_load.value),
+               Scalar("min_rod_load", cards.summary.minimum_polished_rod_load.value)]
     columns = (
         *crank_columns(cards.crank_angle, cards.time, both.crank_speed, both.crank_acceleration),
-        Column("motor_torque", "torque", "motor shaft torque (linear characteristic)", both.motor_torque),
-        Column("velocity", "velocity", "polished-rod velocity, up positive", cards.polished_rod_velocity),
-        Column("inertia_torque", "torque", "I epsilon1 + 1/2 I' omega1^2 of links and drive", both.inertia_torque),
-        Column("rod_load", "force", "polished-rod load (elastic rods)", cards.polished_rod_load),
-        Column("load_torque", "torque", "polished-rod load x torque factor", both.load_torque),
-        Column("gravity_torque", "torque", "torque of the links' weights and counterweights", both.gravity_torque),
-        Column("gearbox_torque", "torque", "gearbox torque on the crank, M_drive - I_drive epsilon1",
-               both.gearbox_torque),
+        Column("motor_torque", both.motor_torque),
+        Column("velocity", cards.polished_rod_velocity),
+        Column("inertia_torque", both.inertia_torque),
+        Column("rod_load", cards.polished_rod_load),
+        Column("rod_load_torque", both.rod_load_torque),
+        Column("gravity_torque", both.gravity_torque),
+        Column("net_torque", both.net_torque),
     )
     panels = (Panel("crank speed omega1", ("crank_speed",)), Panel("motor torque", ("motor_torque",)),
               Panel("polished-rod load", ("rod_load",)))

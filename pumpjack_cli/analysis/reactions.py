@@ -1,4 +1,4 @@
-"""Joint reactions and balancing torque from a dynamometer card: `reactions` and `compare-redundancy`."""
+"""Joint reactions and net gearbox torque from a dynamometer card: `reactions` and `compare-redundancy`."""
 
 from __future__ import annotations
 
@@ -14,25 +14,15 @@ from .card_runs import CardRun, CardSource, card_runs
 from .inputs import crank_columns, require
 from .machine import mass_model
 
-#: Reaction vectors of the output: name, description.
-REACTIONS = {
-    "r12": "crank on pitman 2 at crank pin A",
-    "r13": "crank on pitman 3 at crank pin A1",
-    "r24": "pitman 2 on equalizer at B",
-    "r34": "pitman 3 on equalizer at B1",
-    "r45": "equalizer on beam at D",
-    "r05": "frame on beam at centre bearing C",
-    "r01": "frame on crank at the shaft bearings O, O1",
-}
-BEARING_MOMENTS = {"m05": "bearing moment of the frame on the beam at C",
-                   "m01": "bearing moment of the frame on the crank"}
-JOINT_MOMENTS = {"m12": "crank on pitman 2 at A", "m13": "crank on pitman 3 at A1",
-                 "m24": "pitman 2 on equalizer at B", "m34": "pitman 3 on equalizer at B1"}
+#: Reaction vectors, bearing moments and joint moments of the output (their meanings: the catalogue).
+REACTIONS = ("r12", "r13", "r24", "r34", "r45", "r05", "r01")
+BEARING_MOMENTS = ("m05", "m01")
+JOINT_MOMENTS = ("m12", "m13", "m24", "m34")
 #: Crank positions of the grid on which `reactions` finds its summary's extremes.
 SUMMARY_STEPS = 3600
 #: The same for `compare-redundancy` (each position costs a small least-squares solve).
 REDUNDANCY_SUMMARY_STEPS = 720
-#: Deviation options: field of [deviations], dimension of its value.
+#: Deviation options: field of [deviations], dimension of its value (for the options' units).
 DEVIATIONS = {
     "crank_phase": "angle",
     "crank_radius": "length",
@@ -46,14 +36,14 @@ DEVIATIONS = {
 
 def _run_columns(run: CardRun) -> list[Column]:
     return [*crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
-            Column("rod_load", "force", "polished-rod load from the card", run.load)]
+            Column("rod_load", run.load)]
 
 
-def _peak(summary: list[Scalar], name: str, theta, values, quantity: str, what: str) -> None:
+def _peak(summary: list[Scalar], name: str, theta, values) -> None:
     """A peak (largest magnitude) and its crank angle, refined on the summary grid."""
     found = peak(theta, values)
-    summary += [Scalar(name, quantity, found.value, what),
-                Scalar(f"{name}_crank_angle", "angle", found.crank_angle, f"crank angle of {name}")]
+    summary += [Scalar(name, found.value),
+                Scalar(f"{name}_crank_angle", found.crank_angle)]
 
 
 def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: str, *,
@@ -71,30 +61,26 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: s
                                 weights=weights, inertia=inertia).reactions for run in runs)
     run, theta = runs[0], runs[1].crank_angle
     columns = _run_columns(run)
-    summary = [Scalar("mean_crank_speed", "angular_velocity", run.mean_crank_speed, "2 pi / cycle time"),
-               Scalar("max_rod_load", "force", float(reading.card.load.max()), "peak polished-rod load of the card"),
-               Scalar("min_rod_load", "force", float(reading.card.load.min()), "minimum polished-rod load of the card")]
-    for name, what in (REACTIONS | BEARING_MOMENTS).items():
-        vector, is_moment = getattr(r, name), name in BEARING_MOMENTS
-        quantity = "torque" if is_moment else "force"
-        columns += [Column(f"{name}_{axis}", quantity, f"{what}, {axis}", vector[:, i])
-                    for i, axis in enumerate("xy" if is_moment else "xyz")]
-        _peak(summary, f"peak_{name}", theta, getattr(dense, name), quantity, f"peak |{name.upper()}|: {what}")
-    columns.append(Column("balancing_torque", "torque", "M_z: gearbox torque on the crank, + driving",
-                          r.balancing_torque))
-    for label, extreme in zip(("max", "min"), extremes(theta, dense.balancing_torque)):
-        summary += [Scalar(f"{label}_balancing_torque", "torque", extreme.value, f"{label} M_z (net gearbox torque)"),
-                    Scalar(f"{label}_balancing_torque_crank_angle", "angle", extreme.crank_angle,
-                           f"crank angle of {label} M_z")]
-    summary.append(Scalar("equilibrium_residual", "ratio", float(max(r.residual.max(), dense.residual.max())),
-                          "max |E x - f| of the group 2-3-4-5 / largest load"))
+    summary = [Scalar("mean_crank_speed", run.mean_crank_speed),
+               Scalar("max_rod_load", float(reading.card.load.max())),
+               Scalar("min_rod_load", float(reading.card.load.min()))]
+    for name in REACTIONS + BEARING_MOMENTS:
+        vector = getattr(r, name)
+        columns += [Column(f"{name}_{axis}", vector[:, i])
+                    for i, axis in enumerate("xy" if name in BEARING_MOMENTS else "xyz")]
+        _peak(summary, f"peak_{name}", theta, getattr(dense, name))
+    columns.append(Column("net_torque", r.net_torque))
+    for label, extreme in zip(("max", "min"), extremes(theta, dense.net_torque)):
+        summary += [Scalar(f"{label}_net_torque", extreme.value),
+                    Scalar(f"{label}_net_torque_crank_angle", extreme.crank_angle)]
+    summary.append(Scalar("equilibrium_residual", float(max(r.residual.max(), dense.residual.max()))))
     panels = (
         Panel("rod load", ("rod_load",)),
         Panel("pitman reactions", ("r12_x", "r12_y", "r13_x", "r13_y")),
         Panel("beam reactions", ("r45_y", "r05_x", "r05_y")),
-        Panel("balancing torque", ("balancing_torque",)),
+        Panel("net gearbox torque", ("net_torque",)),
     )
-    title = f"{unit.name}: reactions and balancing torque, card {card.name}, {rotation} rotation"
+    title = f"{unit.name}: reactions and net gearbox torque, card {card.name}, {rotation} rotation"
     return Result(title, tuple(summary), tuple(columns), panels)
 
 
@@ -138,89 +124,66 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
 
     (ideal_r, rational, real, joints), (d_ideal, d_rational, d_real, d_joints) = (solve(run) for run in runs)
     run, theta = runs[0], runs[1].crank_angle
-    columns = [Column("crank_angle", "angle", "crank angle from 12 o'clock in the direction of rotation",
-                      run.crank_angle),
-               Column("rod_load", "force", "polished-rod load from the card", run.load)]
+    columns = [Column("crank_angle", run.crank_angle),
+               Column("rod_load", run.load)]
 
-    def split(label: str, quantity: str, what: str, get) -> list[Column]:
+    def split(label: str, get) -> list[Column]:
         a, b, c = get(ideal_r), get(rational), get(real)
-        return [Column(f"{label}_{part}", quantity, f"{what}: {meaning}", values) for part, meaning, values in (
-            ("ideal", "rational mechanism, no errors", a), ("rational", "rational mechanism, same errors", b),
-            ("real", "real mechanism", c), ("kinematic", "rational with errors - without (the errors' kinematic part)",
-                                            b - a),
-            ("difference", "real - rational, same errors (the redundancy part)", c - b))]
+        return [Column(f"{label}_{part}", values) for part, values in (
+            ("ideal", a), ("rational", b), ("real", c), ("kinematic", b - a), ("difference", c - b))]
 
-    for name, what in REACTIONS.items():
+    for name in REACTIONS:
         for i, axis in enumerate("xyz"):
-            columns += split(f"{name}_{axis}", "force", f"{what}, {axis}", lambda r, n=name, k=i: getattr(r, n)[:, k])
-    columns += split("balancing_torque", "torque", "M_z", lambda r: r.balancing_torque)
-    for name, what in JOINT_MOMENTS.items():
-        columns += [Column(f"{name}_{axis}", "torque", f"joint moment M_R{name[1:]}: {what}, {axis}",
-                           getattr(joints, name)[:, i]) for i, axis in enumerate("xyz")]
+            columns += split(f"{name}_{axis}", lambda r, n=name, k=i: getattr(r, n)[:, k])
+    columns += split("net_torque", lambda r: r.net_torque)
+    for name in JOINT_MOMENTS:
+        columns += [Column(f"{name}_{axis}", getattr(joints, name)[:, i]) for i, axis in enumerate("xyz")]
     for side in ("2", "3"):
-        columns.append(Column(f"torsion_{side}", "torque", f"torque of pitman {side} about its axis",
-                              getattr(joints, f"torsion{side}")))
+        columns.append(Column(f"torsion_{side}", getattr(joints, f"torsion{side}")))
     contact, d_contact = joints.contact, d_joints.contact
-    columns += [Column("compatibility_residual", "ratio", "|A y - b + g^T lambda| / |b|: Menabrea's condition",
-                       contact.compatibility_residual),
-                Column("contact_residual", "ratio", "largest violation of the joints' contact conditions, "
-                       "relative to the moments' scale", contact.contact_residual)]
+    columns += [Column("compatibility_residual", contact.compatibility_residual),
+                Column("contact_residual", contact.contact_residual)]
 
-    fields = type(unit.deviations).model_fields
-    summary = [Scalar(f"deviation_{field}", kind, getattr(errors, field),
-                      "deviation: " + fields[field].description.rsplit(" [", 1)[0])
-               for field, kind in DEVIATIONS.items()]
+    summary = [Scalar(f"deviation_{field}", getattr(errors, field)) for field in DEVIATIONS]
     dead = ideal.planar.dead_positions()
-    summary += [Scalar("crank_angle_bottom", "angle", dead.crank_angle_bottom, "bottom dead position"),
-                Scalar("crank_angle_top", "angle", dead.crank_angle_top, "top dead position")]
-    for name, values, quantity, what in (
-        ("peak_difference_r12_y", d_real.r12[:, 1] - d_rational.r12[:, 1], "force",
-         "max |dR12y|, real - rational with the same errors (redundancy part)"),
-        ("peak_difference_r13_y", d_real.r13[:, 1] - d_rational.r13[:, 1], "force",
-         "max |dR13y|, real - rational with the same errors (redundancy part)"),
-        ("peak_pitman_split_y", d_real.r12[:, 1] - d_real.r13[:, 1], "force", "max |R12y - R13y| in the real mechanism"),
-        ("peak_rational_pitman_split_y", d_rational.r12[:, 1] - d_rational.r13[:, 1], "force",
-         "max |R12y - R13y| in the rational mechanism with the same errors"),
-        ("peak_difference_r12_x", d_real.r12[:, 0] - d_rational.r12[:, 0], "force", "max |dR12x|, redundancy part"),
-        ("peak_difference_r13_x", d_real.r13[:, 0] - d_rational.r13[:, 0], "force", "max |dR13x|, redundancy part"),
-        ("peak_difference_balancing_torque", d_real.balancing_torque - d_rational.balancing_torque, "torque",
-         "max |dM_z|, real - rational with the same errors (redundancy part)"),
-        ("peak_kinematic_r12_y", d_rational.r12[:, 1] - d_ideal.r12[:, 1], "force",
-         "max |dR12y|, rational with errors - without (kinematic part)"),
-        ("peak_kinematic_r13_y", d_rational.r13[:, 1] - d_ideal.r13[:, 1], "force",
-         "max |dR13y|, rational with errors - without (kinematic part)"),
-        ("peak_kinematic_balancing_torque", d_rational.balancing_torque - d_ideal.balancing_torque, "torque",
-         "max |dM_z|, rational with errors - without (kinematic part)"),
-        ("peak_total_difference_balancing_torque", d_real.balancing_torque - d_ideal.balancing_torque, "torque",
-         "max |dM_z|, real with errors - error-free rational (both parts)"),
-        ("peak_torsion_2", d_joints.torsion2, "torque", "max |torque| of pitman 2 about its axis"),
-        ("peak_torsion_3", d_joints.torsion3, "torque", "max |torque| of pitman 3 about its axis"),
-        *((f"peak_{name}", getattr(d_joints, name), "torque", f"max |M_R{name[1:]}|") for name in JOINT_MOMENTS),
+    summary += [Scalar("crank_angle_bottom", dead.crank_angle_bottom),
+                Scalar("crank_angle_top", dead.crank_angle_top)]
+    for name, values in (
+        ("peak_difference_r12_y", d_real.r12[:, 1] - d_rational.r12[:, 1]),
+        ("peak_difference_r13_y", d_real.r13[:, 1] - d_rational.r13[:, 1]),
+        ("peak_pitman_split_y", d_real.r12[:, 1] - d_real.r13[:, 1]),
+        ("peak_rational_pitman_split_y", d_rational.r12[:, 1] - d_rational.r13[:, 1]),
+        ("peak_difference_r12_x", d_real.r12[:, 0] - d_rational.r12[:, 0]),
+        ("peak_difference_r13_x", d_real.r13[:, 0] - d_rational.r13[:, 0]),
+        ("peak_difference_net_torque", d_real.net_torque - d_rational.net_torque),
+        ("peak_kinematic_r12_y", d_rational.r12[:, 1] - d_ideal.r12[:, 1]),
+        ("peak_kinematic_r13_y", d_rational.r13[:, 1] - d_ideal.r13[:, 1]),
+        ("peak_kinematic_net_torque", d_rational.net_torque - d_ideal.net_torque),
+        ("peak_total_difference_net_torque", d_real.net_torque - d_ideal.net_torque),
+        ("peak_torsion_2", d_joints.torsion2),
+        ("peak_torsion_3", d_joints.torsion3),
+        *((f"peak_{name}", getattr(d_joints, name)) for name in JOINT_MOMENTS),
     ):
-        _peak(summary, name, theta, values, quantity, what)
-    summary.append(Scalar("equilibrium_residual", "ratio", float(max(real.residual.max(), d_real.residual.max())),
-                          "real mechanism: max |E X - f| / largest load"))
+        _peak(summary, name, theta, values)
+    summary.append(Scalar("equilibrium_residual", float(max(real.residual.max(), d_real.residual.max()))))
     model = pins.model()
-    for name, value, kind in (("crank_pin_stiffness", model.crank_pin_stiffness, "rotational_stiffness"),
-                              ("equalizer_pin_stiffness", model.equalizer_pin_stiffness, "rotational_stiffness"),
-                              ("crank_pin_clearance", model.crank_pin_clearance, "angle"),
-                              ("equalizer_pin_clearance", model.equalizer_pin_clearance, "angle")):
+    for name, value in (("crank_pin_stiffness", model.crank_pin_stiffness),
+                        ("equalizer_pin_stiffness", model.equalizer_pin_stiffness),
+                        ("crank_pin_clearance", model.crank_pin_clearance),
+                        ("equalizer_pin_clearance", model.equalizer_pin_clearance)):
         if np.isfinite(value):
-            summary.append(Scalar(name, kind, value, type(unit.joints).model_fields[name].description.split(" [")[0]))
+            summary.append(Scalar(name, value))
     summary += [
-        Scalar("compatibility_residual", "ratio", float(max(contact.compatibility_residual.max(),
-                                                            d_contact.compatibility_residual.max())),
-               "real mechanism: max |A y - b + g^T lambda| / |b| (Menabrea's condition)"),
-        Scalar("contact_residual", "ratio", float(max(contact.contact_residual.max(), d_contact.contact_residual.max())),
-               "real mechanism: largest violation of the joints' contact conditions"),
-        Scalar("contact_iterations", "count", float(max(contact.iterations.max(), d_contact.iterations.max())),
-               "most active-set iterations at one crank angle (1: no clearance)"),
+        Scalar("compatibility_residual", float(max(contact.compatibility_residual.max(),
+                                                            d_contact.compatibility_residual.max()))),
+        Scalar("contact_residual", float(max(contact.contact_residual.max(), d_contact.contact_residual.max()))),
+        Scalar("contact_iterations", float(max(contact.iterations.max(), d_contact.iterations.max()))),
     ]
     panels = (
         Panel("R12 y ([Spatial7SK12] fig. 11)", ("r12_y_real",), ("r12_y_rational",)),
         Panel("R13 y ([Spatial7SK12] fig. 12)", ("r13_y_real",), ("r13_y_rational",)),
         Panel("R12, R13 x ([Spatial7SK12] fig. 13)", ("r12_x_real", "r13_x_real"), ("r12_x_rational",)),
-        Panel("balancing torque ([Spatial7SK12] fig. 14)", ("balancing_torque_real",), ("balancing_torque_rational",)),
+        Panel("net gearbox torque M_z ([Spatial7SK12] fig. 14)", ("net_torque_real",), ("net_torque_rational",)),
     )
     title = (f"{unit.name}: real against rational mechanism (same errors; crank phase of the "
              f"{errors.crank_phase_mode.replace('-', ' ')}), card {card.name}, {rotation} rotation")

@@ -91,15 +91,13 @@ def taper_summary(string, loads, service_factor: float) -> list[Scalar]:
     if not graded:
         warn("a rod section has no grade or tensile_strength: the Goodman loading is left out")
     goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
-    for i, name in enumerate(string.names or [f"taper {i + 1}" for i in range(len(string.length))], start=1):
+    for i in range(1, len(string.length) + 1):
         for end in ("top", "bottom"):
             for label in ("max", "min"):
-                found.append(Scalar(f"taper_{i}_{end}_{label}_stress", "stress",
-                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1]),
-                                    f"{label} stress at the {end} of taper {i} ({name})"))
+                found.append(Scalar(f"taper_{i}_{end}_{label}_stress",
+                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1])))
         if math.isfinite(float(goodman[i - 1])):
-            found.append(Scalar(f"taper_{i}_goodman_loading", "percent", float(goodman[i - 1]),
-                                f"modified Goodman loading of taper {i} ({name}), service factor {service_factor:g}"))
+            found.append(Scalar(f"taper_{i}_goodman_loading", float(goodman[i - 1])))
     return found
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..errors import PumpjackError
-from ..results import STORED, TEXT, Column, Result
+from ..results import STORED, Column, Result
 from .batch import ANALYSES
 from .store import FIXED, Store
 
@@ -38,8 +38,9 @@ def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
         store.close()
     if well is not None and not rows:
         raise PumpjackError(f"--well {well}: no {analysis + ' ' if analysis else ''}results for this well in {path}")
-    columns = tuple(Column(name, TEXT if name in FIXED else STORED, name.replace("_", " "),
-                           [row[i] for row in rows]) for i, name in enumerate(names))
+    columns = tuple(Column(name, [row[i] for row in rows]) if name in FIXED else
+                    Column(name, [row[i] for row in rows], quantity=STORED, description=name.replace("_", " "))
+                    for i, name in enumerate(names))
     return Result(f"{path}: {len(rows)} results", (), columns)
 
 
@@ -59,16 +60,14 @@ def trend_result(path: Path, well: str) -> Result:
         entry = cards.setdefault((row[index["timestamp"]], row[index["card"]]), {})
         entry[row[index["analysis"]]] = row
     order = sorted(cards)
-    columns = [Column("timestamp", TEXT, "time stamp from the manifest", [key[0] for key in order]),
-               Column("card", TEXT, "card file", [key[1] for key in order])]
+    columns = [Column("timestamp", [key[0] for key in order]), Column("card", [key[1] for key in order])]
     for analysis in ("torque", "downhole"):
-        columns.append(Column(f"{analysis}_status", TEXT, f"status of the {analysis} analysis",
-                              [cards[key][analysis][index["status"]] if analysis in cards[key] else ""
-                               for key in order]))
+        columns.append(Column(f"{analysis}_status", [cards[key][analysis][index["status"]] if analysis in cards[key]
+                                                     else "" for key in order]))
     for name, analysis in TREND:
         if name not in index:
             continue
-        columns.append(Column(name, STORED, f"{name.replace('_', ' ')} ({analysis})",
-                              [cards[key][analysis][index[name]] if analysis in cards[key] else None
-                               for key in order]))
+        columns.append(Column(name, [cards[key][analysis][index[name]] if analysis in cards[key] else None
+                                     for key in order], quantity=STORED,
+                              description=f"{name.replace('_', ' ')} ({analysis})"))
     return Result(f"{well}: {len(order)} cards in time order ({path})", (), tuple(columns))

@@ -31,7 +31,7 @@ from ..core.sampling import extremes, peak
 from ..errors import PumpjackError, warn
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import crank_columns
+from .inputs import crank_columns, extreme_scalars
 from .machine import mass_model
 
 #: Crank positions of the grid on which the summary's extremes, balance and loading are computed.
@@ -127,7 +127,7 @@ def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
     found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
     title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
              f"balance {criterion}")
-    return Result(title, found.summary, found.columns, found.panels)
+    return Result(title, found.card_summary + found.summary, found.columns, found.panels)
 
 
 def check_options(method: str, criterion: str) -> None:
@@ -140,11 +140,19 @@ def check_options(method: str, criterion: str) -> None:
 
 @dataclass(frozen=True)
 class CardTorque:
-    """The torque analysis of a card: summary, columns on the output grid, plot panels."""
+    """The torque analysis of a card: the card's own figures (speed, work, polished-rod
+    power), the torque summary, columns on the output grid, plot panels, and what other
+    analyses read of it: the net torque column of the present counterbalance (of the
+    recommended one when the present moment is unknown), its largest magnitude [N·m] on
+    the summary grid, and the gearbox rating's lines for a torque plot."""
 
+    card_summary: tuple[Scalar, ...]
     summary: tuple[Scalar, ...]
     columns: tuple[Column, ...]
     panels: tuple[Panel, ...]
+    net_torque: Column
+    peak_net_torque: float
+    rating_levels: tuple[tuple[str, float], ...]
 
 
 def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: str,
@@ -177,40 +185,31 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     tf_test = float(linkage.torque_factor(np.array([TEST_ANGLE]))[0])
     work = card_work(linkage, card)
     frequency = 1.0 / out.run.period
-    summary = [Scalar("strokes_per_minute", "stroke_rate", 2.0 * np.pi * frequency, "pumping speed of the run"),
-               Scalar("structural_unbalance", "force", balance.structural_unbalance, "B, downward positive"),
-               Scalar("crank_offset", "angle", balance.offset, "tau, counterweights lagging the crank pin")]
+    summary = [Scalar("structural_unbalance", balance.structural_unbalance),
+               Scalar("crank_offset", balance.offset)]
     current = dense.net if moment_known else None
     if moment_known:
         found = peak(theta, current)
-        summary += [Scalar("counterbalance_moment", "torque", balance.moment, "M, present counterbalance"),
-                    Scalar("counterbalance_effect", "force", counterbalance_effect(tf_test, balance, TEST_ANGLE),
-                           "CBE at the polished rod with the cranks horizontal, present counterbalance"),
-                    Scalar("peak_net_torque", "torque", found.value, f"largest |net torque|, {method} method"),
-                    Scalar("peak_net_torque_crank_angle", "angle", found.crank_angle, "crank angle of the peak")]
-        summary += [Scalar(f"{label}_net_torque", "torque", extreme.value, f"{label} net torque")
-                    for label, extreme in zip(("max", "min"), extremes(theta, current))]
+        summary += [Scalar("counterbalance_moment", balance.moment),
+                    Scalar("counterbalance_effect", counterbalance_effect(tf_test, balance, TEST_ANGLE)),
+                    Scalar("peak_net_torque", found.value),
+                    Scalar("peak_net_torque_crank_angle", found.crank_angle)]
+        summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))
     recommended = shifted(dense, recommendation.moment)
     summary += [
-        Scalar("recommended_counterbalance_moment", "torque", recommendation.moment, f"M for --balance {criterion}"),
-        Scalar("recommended_counterbalance_effect", "force", recommendation.counterbalance_effect,
-               "CBE at the polished rod, cranks horizontal, recommended counterbalance"),
-        Scalar("recommended_peak_net_torque", "torque", peak(theta, recommended).value,
-               "largest |net torque| with the recommended counterbalance"),
-        Scalar("recommended_upstroke_peak_torque", "torque", recommendation.upstroke_peak,
-               "largest net torque of the upstroke, recommended counterbalance"),
-        Scalar("recommended_downstroke_peak_torque", "torque", recommendation.downstroke_peak,
-               "largest net torque of the downstroke, recommended counterbalance"),
+        Scalar("recommended_counterbalance_moment", recommendation.moment),
+        Scalar("recommended_counterbalance_effect", recommendation.counterbalance_effect),
+        Scalar("recommended_peak_net_torque", peak(theta, recommended).value),
+        Scalar("recommended_upstroke_peak_torque", recommendation.upstroke_peak),
+        Scalar("recommended_downstroke_peak_torque", recommendation.downstroke_peak),
     ]
     if masses is not None:
         placement = counterweight_placement(recommendation.moment, masses,
                                             unit.masses.counterweights.radius_range or (0.0, MAX_RADIUS))
         if placement.radius is not None:
-            summary.append(Scalar("recommended_counterweight_radius", "length", placement.radius,
-                                  "radius of the present blocks that gives the recommended M"))
+            summary.append(Scalar("recommended_counterweight_radius", placement.radius))
         if placement.mass is not None:
-            summary.append(Scalar("recommended_counterweight_mass", "mass", placement.mass,
-                                  "mass of all blocks at the present radius that gives the recommended M"))
+            summary.append(Scalar("recommended_counterweight_mass", placement.mass))
         if placement.note:
             warn(placement.note)
     base = current if current is not None else recommended
@@ -218,39 +217,36 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     mean = float(np.sum(base * dt) / np.sum(dt))
     rms = clf * mean
     summary += [
-        Scalar("card_work", "energy", work, "work on the rods per cycle (card area)"),
-        Scalar("polished_rod_power", "power", work * frequency, "card work x cycles per second"),
-        Scalar("rms_net_torque", "torque", rms, "RMS (equivalent) net torque over time"),
-        Scalar("cyclic_load_factor", "ratio", clf, "RMS / mean net torque ([DurhamLockard1988])"),
-        Scalar("motor_power", "power", rms * 2.0 * np.pi * frequency / drive_efficiency,
-               "motor power for the RMS torque at the mean speed, / drive efficiency ([DurhamLockard1988])"),
+        Scalar("rms_net_torque", rms),
+        Scalar("cyclic_load_factor", clf),
+        Scalar("rms_motor_power", rms * 2.0 * np.pi * frequency / drive_efficiency),
     ]
     summary += _loading(rated, card.load.max(), linkage.stroke, current, recommended, theta)
     if dense.exact is not None:
-        summary.append(Scalar("peak_exact_minus_api_torque", "torque", peak(theta, dense.exact - dense.api).value,
-                              "largest |exact - API net torque|"))
+        summary.append(Scalar("peak_exact_minus_api_torque", peak(theta, dense.exact - dense.api).value))
     columns = _columns(linkage, out, balance, moment_known, shifted(out, recommendation.moment), rated)
-    return CardTorque(tuple(summary), tuple(columns), _panels(columns, rated, moment_known))
+    headline = next(c for c in columns if c.name == ("net_torque" if moment_known else "recommended_net_torque"))
+    levels = _rating_levels(rated)
+    card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency), Scalar("card_work", work),
+                    Scalar("polished_rod_power", work * frequency))
+    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(columns, levels, moment_known), headline,
+                      peak(theta, base).value, levels)
 
 
 def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommended, theta) -> list[Scalar]:
     """Loading against the ratings that are known (fractions, shown in %)."""
     found = []
     if rated.gearbox_torque is not None:
-        found.append(Scalar("gearbox_rating", "torque", rated.gearbox_torque, "gearbox peak torque rating"))
+        found.append(Scalar("gearbox_rating", rated.gearbox_torque))
         if current is not None:
-            found.append(Scalar("gearbox_loading", "percent", peak(theta, current).value / rated.gearbox_torque,
-                                "peak net torque / gearbox rating, present counterbalance"))
-        found.append(Scalar("recommended_gearbox_loading", "percent",
-                            peak(theta, recommended).value / rated.gearbox_torque,
-                            "peak net torque / gearbox rating, recommended counterbalance"))
+            found.append(Scalar("gearbox_loading", peak(theta, current).value / rated.gearbox_torque))
+        found.append(Scalar("recommended_gearbox_loading", peak(theta, recommended).value / rated.gearbox_torque))
     if rated.structure_load is not None:
-        found += [Scalar("structure_rating", "force", rated.structure_load, "structure (polished-rod load) rating"),
-                  Scalar("structure_loading", "percent", peak_load / rated.structure_load,
-                         "peak polished-rod load / structure rating")]
+        found += [Scalar("structure_rating", rated.structure_load),
+                  Scalar("structure_loading", peak_load / rated.structure_load)]
     if rated.max_stroke is not None:
-        found += [Scalar("max_stroke", "length", rated.max_stroke, "maximum stroke of the unit"),
-                  Scalar("stroke_loading", "percent", stroke / rated.max_stroke, "stroke / maximum stroke")]
+        found += [Scalar("max_stroke", rated.max_stroke),
+                  Scalar("stroke_loading", stroke / rated.max_stroke)]
     return found
 
 
@@ -259,32 +255,26 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
     m = linkage.motion(run.crank_angle)
     columns = [
         *crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
-        Column("position", "length", "polished-rod position above the bottom of the stroke", m.rod_position),
-        Column("rod_load", "force", "polished-rod load from the card", run.load),
-        Column("torque_factor", "length", "API 11E torque factor", m.torque_factor),
-        Column("rod_load_torque", "torque", "TF W: torque of the polished-rod load", parts.rod_load),
-        Column("structural_torque", "torque", "-TF B: torque of the structural unbalance", parts.structural),
-        Column("articulating_inertia_torque", "torque", "inertia of the beam group ([Takacs2016])",
-               parts.articulating_inertia),
-        Column("rotary_inertia_torque", "torque", "inertia of cranks and counterweights, I_r alpha",
-               parts.rotary_inertia),
+        Column("position", m.rod_position),
+        Column("rod_load", run.load),
+        Column("torque_factor", m.torque_factor),
+        Column("rod_load_torque", parts.rod_load),
+        Column("structural_torque", parts.structural),
+        Column("articulating_inertia_torque", parts.articulating_inertia),
+        Column("rotary_inertia_torque", parts.rotary_inertia),
     ]
     if moment_known:
-        columns += [Column("counterbalance_torque", "torque", "-M sin(theta - tau): torque of the counterbalance",
-                           parts.counterbalance),
-                    Column("net_torque", "torque", "net gearbox torque, present counterbalance (+ driving)", t.net)]
+        columns += [Column("counterbalance_torque", parts.counterbalance),
+                    Column("net_torque", t.net)]
     if t.exact is not None:
-        columns += [Column("api_net_torque", "torque", "net torque by the API 11E method", t.api),
-                    Column("exact_net_torque", "torque", "net torque by the spatial kinetostatics", t.exact),
-                    Column("exact_minus_api_torque", "torque", "exact - API net torque", t.exact - t.api)]
-    columns.append(Column("recommended_net_torque", "torque", "net gearbox torque, recommended counterbalance",
-                          recommended))
+        columns += [Column("api_net_torque", t.api),
+                    Column("exact_net_torque", t.exact),
+                    Column("exact_minus_api_torque", t.exact - t.api)]
+    columns.append(Column("recommended_net_torque", recommended))
     if rated.gearbox_torque is not None and moment_known:
         low, high = permissible_load(run.crank_angle, m.torque_factor, balance, rated.gearbox_torque)
-        columns += [Column("permissible_load_min", "force", "smallest polished-rod load within the gearbox rating",
-                           _clip(low, run.load)),
-                    Column("permissible_load_max", "force", "largest polished-rod load within the gearbox rating",
-                           _clip(high, run.load))]
+        columns += [Column("permissible_load_min", _clip(low, run.load)),
+                    Column("permissible_load_max", _clip(high, run.load))]
     return columns
 
 
@@ -295,10 +285,14 @@ def _clip(bound: np.ndarray, load: np.ndarray) -> np.ndarray:
     return np.clip(bound, np.min(load) - span, np.max(load) + span)
 
 
-def _panels(columns: list[Column], rated: Ratings, moment_known: bool) -> tuple[Panel, ...]:
+def _rating_levels(rated: Ratings) -> tuple[tuple[str, float], ...]:
+    """The gearbox rating's lines on a net-torque plot (none without a rating)."""
+    return () if rated.gearbox_torque is None else (("gearbox rating", rated.gearbox_torque),
+                                                    ("", -rated.gearbox_torque))
+
+
+def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], moment_known: bool) -> tuple[Panel, ...]:
     names = {c.name for c in columns}
-    levels = () if rated.gearbox_torque is None else (("gearbox rating", rated.gearbox_torque),
-                                                      ("", -rated.gearbox_torque))
     panels = []
     if "permissible_load_min" in names:
         panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),

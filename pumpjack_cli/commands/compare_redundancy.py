@@ -20,7 +20,7 @@ class PhaseMode(str, Enum):
     whole_arm = "whole-arm"
 
 
-SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "balancing_torque_real")
+SHOWN = ("crank_angle", "r12_y_rational", "r12_y_real", "r13_y_rational", "r13_y_real", "net_torque_real")
 
 
 def _deviation(help_text: str):

@@ -19,7 +19,9 @@ from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output,
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
 #: The elastic-rod model needs this many time samples per revolution at least.
-WAVE_STEPS = 64
+WAVE_SAMPLES = 64
+#: Crank positions (rigid-rod model) or time samples (wave model) per revolution by default.
+DEFAULT_POINTS = 360
 
 
 class WellModel(str, Enum):
@@ -36,11 +38,16 @@ def dynamics(
     card_columns: CardColumnsOption = None,
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
                                         min=1e-13, max=1e-3, callback=finite)] = DEFAULT_RTOL,
-    steps: Annotated[int, typer.Option(help="crank positions per revolution in the output", min=4, max=1_000_000)] = 360,
+    steps: Annotated[int | None, typer.Option(
+        help="crank positions per revolution in the output of the rigid-rod model [default: 360]", min=4,
+        max=1_000_000)] = None,
     well_model: Annotated[WellModel, typer.Option(
         help="rigid: the rigid-rod well model of [SK8Rotation2013]; wave: the elastic rods of the unit's [well] "
-             "(damped wave equation, pump valves) solved together with the machine, on --steps time samples")
+             "(damped wave equation, pump valves) solved together with the machine, on --samples time samples")
     ] = WellModel.rigid,
+    samples: Annotated[int | None, typer.Option(
+        help=f"with --well-model wave: time samples per revolution, {WAVE_SAMPLES} to 20000 [default: 360]",
+        min=WAVE_SAMPLES, max=20_000)] = None,
     damping: Annotated[float | None, typer.Option(
         help="with --well-model wave: Gibbs' damping factor nu of the rods, above 0 [default: the unit file's, "
              "else 0.05]", max=2.0, callback=positive)] = None,
@@ -55,17 +62,19 @@ def dynamics(
     card) and the weights."""
     sink = Output(fmt, units, out, plot)
     if well_model is WellModel.rigid:
-        if damping is not None:
-            raise PumpjackError("--damping applies to --well-model wave")
+        for given, option in ((damping, "--damping"), (samples, "--samples")):
+            if given is not None:
+                raise PumpjackError(f"{option} applies to --well-model wave")
         source = None if card is None else CardSource(card, card_units, card_columns)
-        sink.emit(run(load_unit(unit), source, rtol, steps), SHOWN)
+        sink.emit(run(load_unit(unit), source, rtol, DEFAULT_POINTS if steps is None else steps), SHOWN)
         return
     if card is not None:
         raise PumpjackError("--card drives the unit with a measured load; --well-model wave predicts it: give one")
-    if not WAVE_STEPS <= steps <= 20_000:
-        raise PumpjackError(f"--steps: the wave model takes {WAVE_STEPS} to 20000 time samples per revolution")
+    if steps is not None:
+        raise PumpjackError("--steps counts the rigid-rod model's crank positions; the wave model takes --samples "
+                            "(time samples per revolution)")
     from ..analysis.predict import wave_dynamics
 
-    sink.emit(wave_dynamics(load_unit(unit), steps, damping), ("crank_angle", "time", "crank_speed",
+    sink.emit(wave_dynamics(load_unit(unit), DEFAULT_POINTS if samples is None else samples, damping), ("crank_angle", "time", "crank_speed",
                                                               "crank_acceleration", "motor_torque", "rod_load",
                                                               "inertia_torque"))

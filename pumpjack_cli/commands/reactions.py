@@ -12,7 +12,7 @@ from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
 
-SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque")
+SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
 
 
 def reactions(

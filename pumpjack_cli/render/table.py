@@ -35,6 +35,9 @@ def _summary_lines(result: Result, system: str, width: int) -> list[str]:
     """Summary as aligned lines: name, value, unit, and the meaning wrapped to the width."""
     rows = []
     for s in result.summary:
+        if isinstance(s.value, str):
+            rows.append((s.name, s.value, "", s.description))
+            continue
         unit = output_unit(s.quantity, system)
         rows.append((s.name, _format(unit.convert(float(s.value))), unit.label, s.description))
     if not rows:

@@ -5,7 +5,7 @@ moment that best balances a card is :mod:`.balance`).
 Conventions (those of the whole package, :mod:`.geometry`): crank angle theta from 12
 o'clock in the direction of rotation, well to the right; net gearbox torque T positive
 when the gearbox drives the crank in its direction of rotation (the sign of
-:attr:`.kinetostatics.Reactions.balancing_torque`); torque factor TF = A psi' = ds/dtheta,
+:attr:`.kinetostatics.Reactions.net_torque`); torque factor TF = A psi' = ds/dtheta,
 positive on the upstroke of a conventional unit; polished-rod load W positive pulling
 the horsehead down. The API net torque is then ([API11E]; [Rowlan2004] method 1)
 

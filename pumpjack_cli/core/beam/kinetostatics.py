@@ -107,7 +107,7 @@ class Reactions:
     m05, m01 : numpy.ndarray
         Bearing moments of the beam (C) and the crank shaft (O) across their axes, shape
         (N, 3) [N·m].
-    balancing_torque : numpy.ndarray
+    net_torque : numpy.ndarray
         M_z [N·m], the gearbox output torque on the crank, positive when it drives the
         crank in its direction of rotation ([PopovychSenchishak] eqs. 8-9).
     residual : numpy.ndarray
@@ -128,7 +128,7 @@ class Reactions:
     m05: np.ndarray
     r01: np.ndarray
     m01: np.ndarray
-    balancing_torque: np.ndarray
+    net_torque: np.ndarray
     residual: np.ndarray
 
 
@@ -342,7 +342,7 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     r01, m01, torque = crank_reactions(spatial, sm, loads.crank, r12, r13)
     return Reactions(
         r12=r12, r13=r13, r24=r24, r34=r34, r45=r45, r05=r05,
-        m05=m05, r01=r01, m01=m01, balancing_torque=torque, residual=residual,
+        m05=m05, r01=r01, m01=m01, net_torque=torque, residual=residual,
     )
 
 
@@ -440,7 +440,7 @@ def rational_mechanism(
     >>> massless = MassModel(*[0.0] * 18)
     >>> _, r = rational_mechanism(SpatialLinkage(c114, 0.6, 0.6), massless, np.radians([90.0]), 1.0, 0.0,
     ...                           np.array([10000 * lbf]))
-    >>> round(float(r.balancing_torque[0]) / (lbf * inch) / 10000, 2)   # M_z / F = TF [in]
+    >>> round(float(r.net_torque[0]) / (lbf * inch) / 10000, 2)   # M_z / F = TF [in]
     26.45
 
     The weight of 5200 kg of counterweights at 0.83 m ([SK8Rotation2013]), crank at
@@ -450,7 +450,7 @@ def rational_mechanism(
     >>> blocks = dataclasses.replace(massless, counterweight_mass=5200.0, counterweight_radius=0.83)
     >>> sk8 = SpatialLinkage(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), 0.8, 0.8)
     >>> _, r = rational_mechanism(sk8, blocks, np.radians([90.0]), 1.0, 0.0, np.array([0.0]))
-    >>> round(float(r.balancing_torque[0]), 1)
+    >>> round(float(r.net_torque[0]), 1)
     -42325.5
     """
     theta = np.asarray(crank_angle, dtype=float)

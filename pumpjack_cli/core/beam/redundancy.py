@@ -522,7 +522,7 @@ def real_mechanism(
     reactions = Reactions(
         r12=r["r12"], r13=r["r13"], r24=r["r24"], r34=r["r34"], r45=r["r45"], r05=r["r05"],
         m05=np.stack([x[:, 18], x[:, 19], np.zeros(n)], axis=-1), r01=r01, m01=m01,
-        balancing_torque=torque, residual=residual,
+        net_torque=torque, residual=residual,
     )
     return sm, moments, reactions
 

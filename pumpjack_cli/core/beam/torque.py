@@ -337,7 +337,7 @@ def exact_net_torque(spatial: SpatialLinkage, masses: MassModel, crank_angle: np
     load = np.asarray(rod_load, dtype=float)
     _finite("exact net torque", theta, load, np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float))
     _, reactions = rational_mechanism(spatial, masses, theta, omega, alpha, load)
-    return reactions.balancing_torque
+    return reactions.net_torque
 
 
 @dataclass(frozen=True)
@@ -374,7 +374,7 @@ def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) 
     n = theta.size
     unit = np.repeat(np.eye(4), n, axis=1)
     _, reactions = rational_mechanism(spatial, masses, np.tile(theta, 4), unit[2], unit[3], unit[1])
-    return reactions.balancing_torque.reshape(4, n)
+    return reactions.net_torque.reshape(4, n)
 
 
 def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:

@@ -194,7 +194,7 @@ class Coefficients:
         dI/dtheta [kg·m²/rad].
     gravity_torque : numpy.ndarray
         M_gravity = dV/dtheta [N·m].
-    load_torque : numpy.ndarray
+    rod_load_torque : numpy.ndarray
         M_load = P TF [N·m].
     rod_load : numpy.ndarray
         P [N].
@@ -209,7 +209,7 @@ class Coefficients:
     inertia: np.ndarray
     inertia_rate: np.ndarray
     gravity_torque: np.ndarray
-    load_torque: np.ndarray
+    rod_load_torque: np.ndarray
     rod_load: np.ndarray
     torque_factor: np.ndarray
     upstroke: np.ndarray
@@ -377,7 +377,7 @@ def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray
         inertia=inertia,
         inertia_rate=rate,
         gravity_torque=gravity_torque(machine.linkage, machine.masses, m, machine.gravity),
-        load_torque=force * tf,
+        rod_load_torque=force * tf,
         rod_load=force,
         torque_factor=tf,
         upstroke=up,

@@ -51,7 +51,7 @@ class CoupledSummary:
 
     mean_speed 2 pi / period [1/s]; speed_fluctuation (max - min) / mean; torques [N·m]
     at the motor shaft (motor_torque) and on the crank shaft from the gearbox
-    (gearbox_torque = M_drive - I_drive epsilon); inertia torque I epsilon + 1/2 I' omega^2
+    (net_torque = M_drive - I_drive epsilon); inertia torque I epsilon + 1/2 I' omega^2
     of links and drive; motor_work and polished_rod_work per cycle [J] and their relative
     difference energy_residual; breakdown_torque_margin = pull-out torque / largest motor
     torque (below 1 the linear motor characteristic is used beyond its validity: the motor
@@ -66,8 +66,8 @@ class CoupledSummary:
     min_acceleration: CardExtreme
     peak_motor_torque: CardExtreme
     min_motor_torque: CardExtreme
-    peak_gearbox_torque: CardExtreme
-    min_gearbox_torque: CardExtreme
+    max_net_torque: CardExtreme
+    min_net_torque: CardExtreme
     peak_inertia_torque: CardExtreme
     min_inertia_torque: CardExtreme
     period: float
@@ -83,7 +83,7 @@ class CoupledPrediction:
     """Cards (on t_k = k T / N from crank angle 0) and the machine's motion and torques at the same samples.
 
     crank_speed omega [1/s], crank_acceleration epsilon [1/s^2]; motor_torque [N·m] at
-    the motor shaft; gearbox_torque, load_torque P TF, gravity_torque, inertia_torque
+    the motor shaft; net_torque, rod_load_torque P TF, gravity_torque, inertia_torque
     [N·m] on the crank shaft.
     """
 
@@ -91,8 +91,8 @@ class CoupledPrediction:
     crank_speed: np.ndarray
     crank_acceleration: np.ndarray
     motor_torque: np.ndarray
-    gearbox_torque: np.ndarray
-    load_torque: np.ndarray
+    net_torque: np.ndarray
+    rod_load_torque: np.ndarray
     gravity_torque: np.ndarray
     inertia_torque: np.ndarray
     summary: CoupledSummary
@@ -339,7 +339,7 @@ class _CoupledMarch:
         tables = np.array([self.tables.at(t) for t in theta])
         tf, inertia, rate, gravity = tables[:, 1], tables[:, 3], tables[:, 4], tables[:, 5]
         drive_torque = np.asarray(machine.drive_torque(omega))
-        load_torque = cards.polished_rod_load * tf
+        rod_load_torque = cards.polished_rod_load * tf
         inertia_torque = inertia * eps + 0.5 * rate * omega**2
         gearbox = drive_torque - machine.drive_inertia * eps
         motor_work = float(np.sum(drive_torque * omega) * h)
@@ -354,8 +354,8 @@ class _CoupledMarch:
             min_acceleration=card_extreme(eps, time, angle, np.argmin),
             peak_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmax),
             min_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmin),
-            peak_gearbox_torque=card_extreme(gearbox, time, angle, np.argmax),
-            min_gearbox_torque=card_extreme(gearbox, time, angle, np.argmin),
+            max_net_torque=card_extreme(gearbox, time, angle, np.argmax),
+            min_net_torque=card_extreme(gearbox, time, angle, np.argmin),
             peak_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmax),
             min_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmin),
             period=period,
@@ -365,7 +365,7 @@ class _CoupledMarch:
             breakdown_torque_margin=machine.motor.breakdown_torque / float(np.max(np.abs(drive_torque)) / machine.drive_ratio),
             convergence=convergence,
         )
-        return CoupledPrediction(cards, omega, eps, drive_torque / machine.drive_ratio, gearbox, load_torque,
+        return CoupledPrediction(cards, omega, eps, drive_torque / machine.drive_ratio, gearbox, rod_load_torque,
                                  gravity, inertia_torque, summary)
 
 

@@ -176,7 +176,7 @@ class SteadyState:
         At the motor shaft [rad/s], [N·m], [W].
     rod_load : numpy.ndarray
         P [N].
-    load_torque, gravity_torque : numpy.ndarray
+    rod_load_torque, gravity_torque : numpy.ndarray
         M_load, M_gravity [N·m].
     reduced_inertia, reduced_inertia_rate : numpy.ndarray
         I [kg·m²], dI/dtheta [kg·m²/rad].
@@ -201,7 +201,7 @@ class SteadyState:
     motor_torque: np.ndarray
     power: np.ndarray
     rod_load: np.ndarray
-    load_torque: np.ndarray
+    rod_load_torque: np.ndarray
     gravity_torque: np.ndarray
     reduced_inertia: np.ndarray
     reduced_inertia_rate: np.ndarray
@@ -229,7 +229,7 @@ def _strokes(machine: Machine, dead: DeadPositions) -> tuple[_Stroke, _Stroke]:
                 f"{np.degrees(theta[i]) % 360:.2f}°; it must stay positive (the drive and the crank need inertia): "
                 f"check the masses, inertias and drive inertias"
             )
-        table = np.stack([r.inertia, r.inertia_rate, r.load_torque + r.gravity_torque], axis=1)
+        table = np.stack([r.inertia, r.inertia_rate, r.rod_load_torque + r.gravity_torque], axis=1)
         if not np.all(np.isfinite(table)):
             raise DynamicsError("the load or gravity torque is not finite; check the unit data")
         strokes.append(_Stroke(start, travel, CubicSpline(theta, table)))
@@ -411,7 +411,7 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
         r = coefficients(machine, theta, _upstroke_mask(strokes, theta))
         omega = states[0]
         drive = machine.drive_torque(omega)
-        epsilon = (drive - r.load_torque - r.gravity_torque - 0.5 * omega**2 * r.inertia_rate) / r.inertia
+        epsilon = (drive - r.rod_load_torque - r.gravity_torque - 0.5 * omega**2 * r.inertia_rate) / r.inertia
         return states, r, omega, epsilon, drive
 
     states, r, omega, epsilon, drive = at(theta_out)
@@ -432,7 +432,7 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
         motor_torque=motor_torque,
         power=motor_torque * motor_speed,
         rod_load=r.rod_load,
-        load_torque=r.load_torque,
+        rod_load_torque=r.rod_load_torque,
         gravity_torque=r.gravity_torque,
         reduced_inertia=r.inertia,
         reduced_inertia_rate=r.inertia_rate,
@@ -457,7 +457,7 @@ def _summary(machine: Machine, strokes, solutions, at, period: float, energy: fl
     e_max, e_min = extremes(theta, epsilon)
     p_max, p_min = extremes(theta, power)
     t_max, t_min = extremes(theta, torque)
-    static_max, _ = extremes(theta, r.load_torque + r.gravity_torque)
+    static_max, _ = extremes(theta, r.rod_load_torque + r.gravity_torque)
     peak = max(t_max.value, -t_min.value)
     if peak > motor.breakdown_torque:
         where = t_max if t_max.value >= -t_min.value else t_min
