@@ -18,7 +18,7 @@ import pytest
 
 from pumpjack_cli.render.delimited import write_json
 from pumpjack_cli.render.display import CSV_BLOCK
-from pumpjack_cli.results import STORED, TEXT, Column, Result, Scalar
+from pumpjack_cli.results import STORED, Column, Result, Scalar
 
 ROWS = 2 * CSV_BLOCK + 17
 
@@ -31,8 +31,8 @@ def _document(result: Result, system: str) -> str:
         "title": result.title,
         "units": system,
         "summary": {f"stroke_{unit}": 2.5 * factor},
-        "columns": {f"position_{unit}": {"unit": unit, "description": "a length"},
-                    "name": {"unit": "", "description": "text"},
+        "columns": {f"position_{unit}": {"unit": unit, "description": position.description},
+                    "name": {"unit": "", "description": name.description},
                     "value": {"unit": "", "description": "stored"}},
         "series": {f"position_{unit}": [float(v) * factor for v in position.values], "name": list(name.values),
                    "value": list(value.values)},
@@ -51,9 +51,9 @@ def _result(rows: int) -> Result:
     position = rng.normal(size=rows) * 10.0 ** rng.integers(-6, 6, size=rows)
     names = [f"well \"{i}\" é" for i in range(rows)]
     stored = [None if i % 7 == 0 else (f"t{i}" if i % 5 == 0 else i / 3) for i in range(rows)]
-    return Result("streamed: \u00b0 and \"quotes\"", (Scalar("stroke", "length", 2.5, "a stroke"),),
-                  (Column("position", "length", "a length", position), Column("name", TEXT, "text", names),
-                   Column("value", STORED, "stored", stored)))
+    return Result("streamed: \u00b0 and \"quotes\"", (Scalar("stroke", 2.5),),
+                  (Column("position", position), Column("name", names),
+                   Column("value", stored, quantity=STORED, description="stored")))
 
 
 @pytest.mark.parametrize("system", ["si", "field"])
@@ -68,7 +68,7 @@ def test_streamed_json_is_the_json_modules_text(system, rows):
 
 
 def test_a_result_without_columns():
-    result = Result("nothing", (Scalar("stroke", "length", 2.5, "a stroke"),), ())
+    result = Result("nothing", (Scalar("stroke", 2.5),), ())
     text = _full(result, "si")
     assert text == json.dumps({"title": "nothing", "units": "si", "summary": {"stroke_m": 2.5}, "columns": {},
                                "series": {}}, indent=1) + "\n"
