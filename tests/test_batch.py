@@ -264,17 +264,17 @@ def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, a
 
 def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_path, monkeypatch):
     """A bug that raises on one card (simulated) is recorded as that card's error; the others run."""
-    from pumpjack_cli.analysis import batch
+    from pumpjack_cli.analysis.batch import per_card
 
     rows = field(tmp_path, 3)
-    real = batch._CardOnce.read
+    real = per_card._CardOnce.read
 
     def faulty(self, linkage):
         if self.name == rows[1][2]:
             raise ZeroDivisionError("simulated")
         return real(self, linkage)
 
-    monkeypatch.setattr(batch._CardOnce, "read", faulty)
+    monkeypatch.setattr(per_card._CardOnce, "read", faulty)
     store = tmp_path / "r.sqlite"
     code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
     assert code == 0, err
