@@ -1,7 +1,8 @@
 """The layers hold: who imports whom, what start-up imports, and the command table.
 
 Layers (docs/architecture.md): core <- config <- analysis (run layer) <- render <- commands.
-The core imports nothing of the layers above it and no I/O or validation library;
+The core imports nothing of the layers above it and no I/O or validation library; the
+file readers (readers/) import only errors, quantities and text_input of this package;
 commands never import each other; ``--help``, ``--version`` and ``units`` import
 neither numpy nor a unit model.
 """
