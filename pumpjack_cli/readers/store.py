@@ -5,8 +5,8 @@ analysis, options_sha256) so that a card already done with the same analysis and
 options is skipped and never stored twice; ``status`` is ``ok`` or ``error`` with the
 one-line message in ``error``; the analysis' summary values (SI, the suffixed names of
 the single command's ``-f json`` summary) are columns of their own, added as new names
-appear: ``REAL`` for a number, ``TEXT`` for text (a label). A card's rows are written in one transaction, so a run killed at any moment
-leaves every card either complete or absent.
+appear: ``REAL`` for a number, ``TEXT`` for text (a label). A card's rows are written in
+one transaction, so a run killed at any moment leaves every card either complete or absent.
 """
 
 from __future__ import annotations
