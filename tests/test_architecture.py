@@ -1,7 +1,8 @@
 """The layers hold: who imports whom, what start-up imports, and the command table.
 
 Layers (docs/architecture.md): core <- config <- analysis (run layer) <- render <- commands.
-The core imports nothing of the layers above it and no I/O or validation library;
+The core imports nothing of the layers above it and no I/O or validation library; the
+file readers (readers/) import only errors, quantities and text_input of this package;
 commands never import each other; ``--help``, ``--version`` and ``units`` import
 neither numpy nor a unit model.
 """
@@ -49,7 +50,8 @@ def test_commands_never_import_each_other(path):
 
 FORBIDDEN = {
     "core": ("pumpjack_cli.config", "pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands",
-             "pumpjack_cli.cli", "pumpjack_cli.options", "pumpjack_cli.card_files", "pydantic", "typer", "rich"),
+             "pumpjack_cli.cli", "pumpjack_cli.options", "pumpjack_cli.card_files", "pumpjack_cli.readers", "pydantic",
+             "typer", "rich"),
     "config": ("pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli",
                "pumpjack_cli.options", "typer", "rich"),
     "analysis": ("pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli", "pumpjack_cli.options",
@@ -61,6 +63,17 @@ FORBIDDEN = {
                          ids=lambda x: x if isinstance(x, str) else x.name)
 def test_layers_import_only_downwards(layer, path):
     bad = {name for name in _imports(path) if name.startswith(FORBIDDEN[layer])}
+    assert not bad, f"{path.relative_to(ROOT)} imports {sorted(bad)}"
+
+
+#: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other.
+READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cli.text_input", "pumpjack_cli.readers")
+
+
+@pytest.mark.parametrize("path", _modules("readers"), ids=lambda p: p.name)
+def test_readers_import_only_errors_quantities_and_text_input(path):
+    bad = {name for name in _imports(path) if name.startswith(("pumpjack_cli", "pydantic", "typer", "rich"))
+           and not name.startswith(READERS_IMPORT)}
     assert not bad, f"{path.relative_to(ROOT)} imports {sorted(bad)}"
 
 

@@ -251,30 +251,32 @@ def test_a_store_that_is_not_a_store(run_cli, tmp_path):
     (("--balance", "level"), "--balance level"),
     (("--analyses", "torque,bogus"), "unknown analysis 'bogus'"),
     (("--analyses", ","), "--analyses"),
-    (("--store", "/nonexistent/r.sqlite"), "directory /nonexistent does not exist"),
+    (("--store", "{tmp}/missing/r.sqlite"), "directory {tmp}/missing does not exist"),
     (("--workers", "0"), "--workers"),
 ])
 def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, argv, fragment):
+    """{tmp} is this test's temporary folder: a store in a folder that is surely missing."""
     rows = field(tmp_path, 1)
+    argv, fragment = [arg.format(tmp=tmp_path) for arg in argv], fragment.format(tmp=tmp_path)
     extra = () if "--store" in argv else ("--store", tmp_path / "r.sqlite")
     code, out, err = run_cli("batch", manifest(tmp_path, rows), *extra, *argv)
     assert code == 2 and out == "" and err.count("\n") == 1 and fragment in err, err
-    assert not (tmp_path / "r.sqlite").exists() or "--store" in argv
+    assert not (tmp_path / "r.sqlite").exists() and not (tmp_path / "missing").exists()
 
 
 def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_path, monkeypatch):
     """A bug that raises on one card (simulated) is recorded as that card's error; the others run."""
-    from pumpjack_cli.analysis import batch
+    from pumpjack_cli.analysis.batch import per_card
 
     rows = field(tmp_path, 3)
-    real = batch._CardOnce.read
+    real = per_card._CardOnce.read
 
     def faulty(self, linkage):
         if self.name == rows[1][2]:
             raise ZeroDivisionError("simulated")
         return real(self, linkage)
 
-    monkeypatch.setattr(batch._CardOnce, "read", faulty)
+    monkeypatch.setattr(per_card._CardOnce, "read", faulty)
     store = tmp_path / "r.sqlite"
     code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
     assert code == 0, err
@@ -312,3 +314,78 @@ def test_cards_whose_header_names_no_unit_need_card_units(run_cli, tmp_path):
         numbers = [name for name, value in b.items() if isinstance(value, float)]
         assert len(numbers) > 5
         assert all(math.isclose(a[name], b[name], rel_tol=1e-9, abs_tol=1e-9) for name in numbers)
+
+
+def test_a_unit_named_with_the_gost_comma_is_keyed_by_the_bundled_files_content(tmp_path):
+    """`SK8-3,5-4000` in a manifest (a quoted CSV cell) is the bundled sk8-3.5-4000 unit for
+    its content key too, not an unreadable name whose key never changes."""
+    import hashlib
+
+    from pumpjack_cli.analysis.batch.keys import unit_digest
+    from pumpjack_cli.readers.manifest import read_manifest
+
+    rows = field(tmp_path, 1)
+    jobs = read_manifest(manifest(tmp_path, [("well-g", '"SK8-3,5-4000"', rows[0][2], "")]))
+    expected = hashlib.sha256((ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes()).hexdigest()
+    assert [unit_digest(job.unit) for job in jobs] == [expected]
+
+
+def test_a_changed_unit_file_is_analysed_again(run_cli, tmp_path, monkeypatch):
+    """A bundled unit named with the GOST comma whose file changes (a copy in the temporary
+    folder stands for the bundled one): the re-run analyses the card again; unchanged, it
+    skips it."""
+    from pumpjack_cli.analysis.batch import per_card
+    from pumpjack_cli.readers import unit_files
+
+    copy = tmp_path / "units" / "sk8-3.5-4000.toml"
+    copy.parent.mkdir()
+    copy.write_bytes((ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes())
+    monkeypatch.setattr(unit_files, "bundled_units", lambda: {"sk8-3.5-4000": copy})
+    monkeypatch.setattr(per_card, "_UNITS", {})
+    rows = field(tmp_path, 1)
+    path, store = manifest(tmp_path, [("well-g", '"SK8-3,5-4000"', rows[0][2], "")]), tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 1 analysed, 0 already in" in out, err
+    assert {row["status"] for row in stored(store).values()} == {"ok"}
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 0 analysed, 1 already in" in out, err
+    copy.write_text(copy.read_text(encoding="utf-8") + "# revised\n", encoding="utf-8")
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 1 analysed, 0 already in" in out, err
+    keys = sqlite3.connect(store).execute("SELECT analysis, options_sha256 FROM results").fetchall()
+    assert len(keys) == 4 and len(set(keys)) == 4
+
+
+def test_text_summary_values_are_stored_and_shown_as_text(run_cli, tmp_path, monkeypatch):
+    """A summary value that is text (a pump-condition label) gets a TEXT column, keeps its
+    text even when it looks like a number, and export and trend show it as text."""
+    from pumpjack_cli.analysis import store_views
+    from pumpjack_cli.readers.store import Store
+
+    path = tmp_path / "r.sqlite"
+    store = Store(path)
+    for number, (label, fillage) in enumerate((("full pump", 97.5), ("100", 41.0))):
+        store.add_card([{"well": "W-1", "card": f"c{number}.csv", "card_sha256": f"{number}", "unit": "sk8-3.5-4000",
+                         "timestamp": f"2026-11-2{number}", "analysis": "downhole", "options_sha256": "o",
+                         "status": "ok", "error": "", "warnings": "",
+                         "summary": {"pump_condition": label, "pump_fillage_percent": fillage}}])
+    store.close()
+    db = sqlite3.connect(path)
+    declared = {row[1]: row[2] for row in db.execute("PRAGMA table_info(results)")}
+    assert (declared["pump_condition"], declared["pump_fillage_percent"]) == ("TEXT", "REAL")
+    assert db.execute("SELECT typeof(pump_condition), typeof(pump_fillage_percent) FROM results").fetchall() == [
+        ("text", "real"), ("text", "real")]
+    code, out, err = run_cli("batch", "export", "--store", path, "-f", "json")
+    assert code == 0, err
+    series = json.loads(out)["series"]
+    assert series["pump_condition"] == ["full pump", "100"] and series["pump_fillage_percent"] == [97.5, 41.0]
+    code, out, err = run_cli("batch", "export", "--store", path, "-f", "csv")
+    assert code == 0, err
+    assert [row["pump_condition"] for row in csv.DictReader(io.StringIO(out))] == ["full pump", "100"]
+    monkeypatch.setattr(store_views, "TREND", store_views.TREND + (("pump_condition", "downhole"),))
+    code, out, err = run_cli("batch", "trend", "--store", path, "--well", "W-1", "-f", "json")
+    assert code == 0, err
+    trend = json.loads(out)
+    assert trend["series"]["pump_condition"] == ["full pump", "100"]
+    code, out, err = run_cli("batch", "trend", "--store", path, "--well", "W-1")
+    assert code == 0 and "full pump" in out, err

@@ -5,11 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..errors import PumpjackError
-from ..results import STORED, Column, Result
-from .batch import ANALYSES
-from .store import FIXED, Store
+from ..readers.store import Store
+from ..results import STORED, TEXT, Column, Result
+from .batch.per_card import ANALYSES
 
-#: The summary numbers of `batch trend`, the consecutive-card view of a well: name, analysis.
+#: The summary values of `batch trend`, the consecutive-card view of a well: name, analysis.
 TREND = (
     ("peak_net_torque_n_m", "torque"),
     ("gearbox_loading_percent", "torque"),
@@ -26,20 +26,28 @@ TREND = (
 )
 
 
-def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
-    """Every stored row (of one analysis and one well if given): the fixed fields as text,
-    the summary numbers as stored (SI, suffixed names), empty where a row has none."""
-    if analysis is not None and analysis not in ANALYSES:
-        raise PumpjackError(f"--analysis {analysis}: use one of {', '.join(ANALYSES)}")
+def _stored_rows(path: Path, well: str | None, analysis: str | None = None) -> tuple[list[str], list[tuple], dict]:
+    """Column names, rows and each column's quantity kind (text columns, the fixed fields
+    among them, as TEXT; numbers as STORED) of an existing store."""
     store = Store(path, create=False)
     try:
         names, rows = store.rows(well, analysis)
+        kinds = {name: TEXT if store.is_text(name) else STORED for name in names}
     finally:
         store.close()
+    return names, rows, kinds
+
+
+def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
+    """Every stored row (of one analysis and one well if given): the fixed fields and text
+    summary values as text, the summary numbers as stored (SI, suffixed names), empty where
+    a row has none."""
+    if analysis is not None and analysis not in ANALYSES:
+        raise PumpjackError(f"--analysis {analysis}: use one of {', '.join(ANALYSES)}")
+    names, rows, kinds = _stored_rows(path, well, analysis)
     if well is not None and not rows:
         raise PumpjackError(f"--well {well}: no {analysis + ' ' if analysis else ''}results for this well in {path}")
-    columns = tuple(Column(name, [row[i] for row in rows]) if name in FIXED else
-                    Column(name, [row[i] for row in rows], quantity=STORED, description=name.replace("_", " "))
+    columns = tuple(Column(name, [row[i] for row in rows], quantity=kinds[name], description=name.replace("_", " "))
                     for i, name in enumerate(names))
     return Result(f"{path}: {len(rows)} results", (), columns)
 
@@ -47,11 +55,7 @@ def export_result(path: Path, analysis: str | None, well: str | None) -> Result:
 def trend_result(path: Path, well: str) -> Result:
     """One well's cards in time order (timestamp, then card) with the numbers operators follow
     from card to card; a card whose analysis failed shows its status and empty numbers."""
-    store = Store(path, create=False)
-    try:
-        names, rows = store.rows(well)
-    finally:
-        store.close()
+    names, rows, kinds = _stored_rows(path, well)
     if not rows:
         raise PumpjackError(f"--well {well}: no results for this well in {path}")
     index = {name: i for i, name in enumerate(names)}
@@ -68,6 +72,6 @@ def trend_result(path: Path, well: str) -> Result:
         if name not in index:
             continue
         columns.append(Column(name, [cards[key][analysis][index[name]] if analysis in cards[key] else None
-                                     for key in order], quantity=STORED,
+                                     for key in order], quantity=kinds[name],
                               description=f"{name.replace('_', ' ')} ({analysis})"))
     return Result(f"{well}: {len(order)} cards in time order ({path})", (), tuple(columns))

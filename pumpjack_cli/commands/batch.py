@@ -8,7 +8,9 @@ from typing import Annotated
 import typer
 from typer.core import TyperGroup
 
-from ..analysis.batch import ANALYSES, Options, default_workers, run_batch
+from ..analysis.batch.executors import default_workers
+from ..analysis.batch.per_card import ANALYSES, Options
+from ..analysis.batch.run import run_batch
 from ..analysis.store_views import export_result, trend_result
 from ..errors import PumpjackError
 from ..options import CardUnitsOption, FormatOption, Output, OutputOption, UnitSystem, finite

@@ -4,7 +4,8 @@
 * :mod:`.geometry_names`: GOST names and API 11E letters ([API11E]) of the geometry (pure Python);
 * :mod:`.beam_unit`: the beam pumping unit (geometry, masses, drive, well, ...);
 * :mod:`.slider_crank`: slider-crank machines (drill pumps; [InertiaUNB600A]);
-* :mod:`.files`: reading files, bundled units, the registry of kinds.
+* :mod:`.files`: the registry of kinds, validating and loading unit files (read by
+  :mod:`pumpjack_cli.readers.unit_files`).
 
 The names below are imported lazily, so that ``import pumpjack_cli.config`` costs
 nothing until a schema is used.

@@ -1,8 +1,10 @@
-"""Unit files: reading TOML, YAML and JSON, the bundled units, and the registry of machine kinds.
+"""Unit files: the registry of machine kinds, validation, and loading a unit by name or path.
 
-A file's top-level ``kind`` key picks its schema (default ``beam-pump``); the schema
-module is imported only when a file of that kind is read, so a run builds the pydantic
-models of the files it reads and no others. :func:`unit_listing` describes the bundled
+The files are read (bounded TOML, YAML and JSON, the bundled-unit folder, what a unit
+spec names) by :mod:`pumpjack_cli.readers.unit_files`. A file's top-level ``kind`` key
+picks its schema (default ``beam-pump``); the schema module is imported only when a file
+of that kind is read, so a run builds the pydantic models of the files it reads and no
+others. :func:`unit_listing` describes the bundled
 units (name, kind, designation, exact stroke) without building any model, for
 ``pumpjack units``.
 """
@@ -10,10 +12,7 @@ units (name, kind, designation, exact stroke) without building any model, for
 from __future__ import annotations
 
 import importlib
-import json
 import math
-import os
-import tomllib
 import typing
 from dataclasses import dataclass
 from functools import partial
@@ -22,15 +21,8 @@ from typing import Any, Callable
 
 from ..errors import ConfigError
 from ..quantities import SI_LABELS, parse_quantity
-from ..text_input import read_text
+from ..readers.unit_files import bundled_units, read_table, unit_path
 from .geometry_names import linkage_of, slider_crank_of
-
-BUNDLED_PACKAGE = "pumpjack_cli.configs"
-SUFFIXES = (".toml", ".yaml", ".yml", ".json")
-#: Largest unit file read [bytes]; the bundled ones are 2-5 kB.
-MAX_BYTES = 1 << 20
-#: Deepest nesting of tables and lists in a unit file (the schema needs 4).
-MAX_DEPTH = 8
 
 
 @dataclass(frozen=True)
@@ -56,80 +48,6 @@ UNIT_KINDS: dict[str, Kind] = {
                          beam_unit=False),
 }
 DEFAULT_KIND = "beam-pump"
-
-
-def _unique_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    """A JSON object that refuses a key given twice (json keeps the last one silently)."""
-    seen: dict[str, Any] = {}
-    for key, value in pairs:
-        if key in seen:
-            raise ConfigError(f"key {key!r} is given twice")
-        seen[key] = value
-    return seen
-
-
-def _yaml_loader():
-    """A safe YAML loader that refuses duplicate keys and aliases (a small file with
-    nested aliases can expand beyond any memory)."""
-    import yaml
-
-    class Loader(yaml.SafeLoader):
-        def compose_node(self, parent, index):
-            if self.check_event(yaml.AliasEvent):
-                mark = self.peek_event().start_mark
-                raise yaml.YAMLError(f"aliases (*name) are not accepted, at line {mark.line + 1}")
-            return super().compose_node(parent, index)
-
-        def construct_mapping(self, node, deep=False):
-            keys = [self.construct_object(key, deep=deep) for key, _ in node.value]
-            for i, key in enumerate(keys):
-                if key in keys[:i]:
-                    line = node.value[i][0].start_mark.line + 1
-                    raise yaml.YAMLError(f"key {key!r} is given twice, at line {line}")
-            return super().construct_mapping(node, deep=deep)
-
-    return Loader
-
-
-def _depth(value: Any) -> int:
-    if isinstance(value, dict):
-        return 1 + max(map(_depth, value.values()), default=0)
-    if isinstance(value, list):
-        return 1 + max(map(_depth, value), default=0)
-    return 0
-
-
-def _parse_text(path: Path, text: str) -> Any:
-    suffix = path.suffix.lower()
-    formats = {".toml": "TOML", ".json": "JSON", ".yaml": "YAML", ".yml": "YAML"}
-    if suffix not in formats:
-        raise ConfigError(f"{path}: unknown file type {suffix!r}; use one of {', '.join(SUFFIXES)}")
-    name = formats[suffix]
-    try:
-        if name == "TOML":
-            data = tomllib.loads(text)
-        elif name == "JSON":
-            data = json.loads(text, object_pairs_hook=_unique_pairs)
-        else:
-            import yaml
-
-            try:
-                data = yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
-            except yaml.YAMLError as exc:
-                mark = getattr(exc, "problem_mark", None)
-                where = f" at line {mark.line + 1}" if mark is not None else ""
-                raise ConfigError(f"{path}: not valid YAML: {getattr(exc, 'problem', None) or exc}{where}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
-    except json.JSONDecodeError as exc:
-        raise ConfigError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno}") from None
-    except ConfigError as exc:
-        raise ConfigError(f"{path}: not valid {name}: {exc}") from None
-    except RecursionError:
-        raise ConfigError(f"{path}: not valid {name}: nested too deep") from None
-    if _depth(data) > MAX_DEPTH:
-        raise ConfigError(f"{path}: nested {_depth(data)} levels deep; a unit file has at most {MAX_DEPTH}")
-    return data
 
 
 #: pydantic's error types of a number outside a field's range.
@@ -213,21 +131,9 @@ def parse_unit(data: Any, source: str):
         raise ConfigError(format_validation_error(source, exc, model)) from None
 
 
-def read_table(path: Path) -> Any:
-    """The parsed content of a TOML, YAML or JSON file of the unit-file kind (bounded, UTF-8,
-    duplicate keys refused), not validated."""
-    return _parse_text(path, read_text(path, MAX_BYTES, "unit file", ConfigError))
-
-
 def read_unit_file(path: Path):
     """Read and validate one unit file."""
     return parse_unit(read_table(path), str(path))
-
-
-def bundled_units() -> dict[str, Path]:
-    """Bundled unit files by name (file stem), sorted."""
-    folder = Path(next(iter(importlib.import_module(BUNDLED_PACKAGE).__path__)))
-    return {entry.stem: entry for entry in sorted(folder.iterdir(), key=lambda e: e.name) if entry.suffix in SUFFIXES}
 
 
 def unit_listing() -> list[dict[str, Any]]:
@@ -244,14 +150,7 @@ def unit_listing() -> list[dict[str, Any]]:
 
 def load_any_unit(spec: str):
     """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
-    path = Path(spec)
-    if path.suffix.lower() in SUFFIXES or os.path.lexists(spec) or os.sep in spec:
-        return read_unit_file(path)
-    units = bundled_units()
-    key = spec.lower().replace(",", ".")
-    if key not in units:
-        raise ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(units)}")
-    return read_unit_file(units[key])
+    return read_unit_file(unit_path(spec))
 
 
 def load_unit(spec: str):

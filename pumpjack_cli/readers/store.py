@@ -3,10 +3,10 @@
 Table ``results``: one row per card and analysis, keyed by (well, card_sha256,
 analysis, options_sha256) so that a card already done with the same analysis and
 options is skipped and never stored twice; ``status`` is ``ok`` or ``error`` with the
-one-line message in ``error``; the analysis' summary numbers (SI, the suffixed names of
+one-line message in ``error``; the analysis' summary values (SI, the suffixed names of
 the single command's ``-f json`` summary) are columns of their own, added as new names
-appear. A card's rows are written in one transaction, so a run killed at any moment
-leaves every card either complete or absent.
+appear: ``REAL`` for a number, ``TEXT`` for text (a label). A card's rows are written in
+one transaction, so a run killed at any moment leaves every card either complete or absent.
 """
 
 from __future__ import annotations
@@ -48,10 +48,11 @@ class Store:
             self.db.execute("PRAGMA synchronous=NORMAL")
             if create:
                 self.db.executescript(SCHEMA)
-            self.columns = [row[1] for row in self.db.execute("PRAGMA table_info(results)")]
+            #: Column name -> its declared SQL type (TEXT for the fixed fields).
+            self.types = {row[1]: row[2].upper() for row in self.db.execute("PRAGMA table_info(results)")}
         except sqlite3.DatabaseError as exc:
             raise PumpjackError(f"--store {path}: not a results store ({exc})") from None
-        if "options_sha256" not in self.columns:
+        if "options_sha256" not in self.types:
             raise PumpjackError(f"--store {path}: not a results store (no results table)")
         note_input(os.stat(self.path), "results store")
 
@@ -62,25 +63,31 @@ class Store:
         """(well, card_sha256, analysis, options_sha256) of every stored row."""
         return set(self.db.execute("SELECT well, card_sha256, analysis, options_sha256 FROM results"))
 
-    def _ensure(self, names) -> None:
-        for name in names:
-            if name not in self.columns:
+    def _ensure(self, summary: dict) -> None:
+        """Add a column for each new summary name: TEXT for a text value, REAL for a number."""
+        for name, value in summary.items():
+            if name not in self.types:
                 if not _NAME.match(name):
                     raise PumpjackError(f"cannot store a result named {name!r}")
-                self.db.execute(f"ALTER TABLE results ADD COLUMN {name} REAL")
-                self.columns.append(name)
+                kind = "TEXT" if isinstance(value, str) else "REAL"
+                self.db.execute(f"ALTER TABLE results ADD COLUMN {name} {kind}")
+                self.types[name] = kind
+
+    def is_text(self, name: str) -> bool:
+        """Whether the column ``name`` holds text (a fixed field or a text summary value)."""
+        return self.types[name] == "TEXT"
 
     def add_card(self, rows: list[dict]) -> None:
-        """Store the rows of one card (fixed fields and summary numbers) in one transaction."""
+        """Store the rows of one card (fixed fields and summary values) in one transaction."""
         try:
             self.db.execute("BEGIN IMMEDIATE")
             for row in rows:
-                numbers = row["summary"]
-                self._ensure(numbers)
-                names = list(FIXED) + list(numbers)
+                summary = row["summary"]
+                self._ensure(summary)
+                names = list(FIXED) + list(summary)
                 self.db.execute(f"INSERT OR IGNORE INTO results ({', '.join(names)}) VALUES "
                                 f"({', '.join('?' * len(names))})",
-                                [row[name] for name in FIXED] + [numbers[name] for name in numbers])
+                                [row[name] for name in FIXED] + list(summary.values()))
             self.db.execute("COMMIT")
         except sqlite3.Error as exc:
             if self.db.in_transaction:

@@ -1,0 +1,148 @@
+"""The manifest of `pumpjack batch`: a CSV or TOML list of cards, each with its well, unit and overrides.
+
+A row names a well, a unit (a bundled unit's name or a unit file) and a card (a path or
+a glob), with optional ``spm``, ``counterbalance_moment`` (with its unit), ``rod_string``
+(a file) and ``timestamp``. Relative paths are taken from the manifest's folder. A
+manifest that cannot be read or has a malformed row is refused with one line naming the
+line; a card or unit that does not exist is left for the analysis.
+"""
+
+from __future__ import annotations
+
+import csv
+import glob
+import io
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..errors import PumpjackError
+from ..quantities import parse_quantity
+from ..text_input import read_text
+from .unit_files import names_a_file
+
+#: Manifest columns: required, then optional.
+REQUIRED_COLUMNS = ("well", "unit", "card")
+OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp")
+#: Largest manifest [bytes].
+MAX_MANIFEST_BYTES = 64 << 20
+
+
+@dataclass(frozen=True)
+class Job:
+    """One card of the manifest with its well, unit and overrides (spm [1/min], counterbalance
+    moment [N·m]), and its manifest line."""
+
+    well: str
+    unit: str
+    card: str
+    line: int
+    spm: float | None = None
+    counterbalance_moment: float | None = None
+    rod_string: str | None = None
+    timestamp: str = ""
+
+
+def _row_error(source: str, line: int, message: str) -> PumpjackError:
+    return PumpjackError(f"{source}: line {line}: {message}")
+
+
+def read_manifest(path: Path) -> list[Job]:
+    """The manifest's rows as jobs, globs expanded (relative paths are taken from the
+    manifest's folder). A manifest that cannot be read, lacks a required column or has a
+    malformed row is refused with one line; a card or unit that does not exist is left
+    for the analysis, which records it as an error row."""
+    source = str(path)
+    text = read_text(path, MAX_MANIFEST_BYTES, "manifest", PumpjackError)
+    records = _toml_records(text, source) if path.suffix.lower() == ".toml" else _csv_records(text, source)
+    jobs = []
+    for number, row in records:
+        jobs += _jobs(row, number, path.parent, source)
+    if not jobs:
+        raise PumpjackError(f"{source}: the manifest names no card")
+    return jobs
+
+
+def _toml_records(text: str, source: str) -> list[tuple[int, dict]]:
+    """(number, row) of each ``[[cards]]`` table."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise PumpjackError(f"{source}: not valid TOML: {exc}") from None
+    rows = data.get("cards")
+    if not isinstance(rows, list) or not all(isinstance(row, dict) for row in rows):
+        raise PumpjackError(f"{source}: a TOML manifest lists its cards as [[cards]] tables")
+    return [(i + 1, dict(row)) for i, row in enumerate(rows)]
+
+
+def _csv_records(text: str, source: str) -> list[tuple[int, dict]]:
+    """(line, row) of each non-blank line after the header, cells stripped."""
+    reader = csv.reader(io.StringIO(text))
+    header = [cell.strip().lstrip("\ufeff").lower() for cell in next(reader, [])]
+    missing = [name for name in REQUIRED_COLUMNS if name not in header]
+    if missing:
+        raise PumpjackError(f"{source}: line 1: the manifest needs the columns {', '.join(REQUIRED_COLUMNS)} "
+                            f"(missing: {', '.join(missing)})")
+    unknown = [name for name in header if name not in REQUIRED_COLUMNS + OPTIONAL_COLUMNS]
+    if unknown:
+        raise PumpjackError(f"{source}: line 1: unknown column {unknown[0]!r}; columns: "
+                            f"{', '.join(REQUIRED_COLUMNS + OPTIONAL_COLUMNS)}")
+    records = []
+    for number, cells in enumerate(reader, start=2):
+        if not any(cell.strip() for cell in cells):
+            continue
+        if len(cells) != len(header):
+            raise _row_error(source, number, f"{len(cells)} cells for {len(header)} columns")
+        records.append((number, dict(zip(header, (cell.strip() for cell in cells)))))
+    return records
+
+
+def _spm(row: dict, number: int, source: str) -> float | None:
+    """The row's strokes per minute [1/min], if given."""
+    spm = row.get("spm")
+    if spm in (None, ""):
+        return None
+    try:
+        spm = float(spm)
+    except (TypeError, ValueError):
+        raise _row_error(source, number, f"spm: {spm!r} is not a number (strokes per minute)") from None
+    if not (math.isfinite(spm) and 0.1 <= spm <= 60):
+        raise _row_error(source, number, f"spm: {spm:g} is outside 0.1 .. 60 strokes per minute")
+    return spm
+
+
+def _moment(row: dict, number: int, source: str) -> float | None:
+    """The row's counterbalance moment [N·m], if given (with its unit)."""
+    text = row.get("counterbalance_moment")
+    if text is None or text == "":
+        return None
+    try:
+        return parse_quantity(text, "torque", require_unit=True)
+    except ValueError as exc:
+        raise _row_error(source, number, f"counterbalance_moment: {exc}") from None
+
+
+def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
+    for name in REQUIRED_COLUMNS:
+        if not isinstance(row.get(name), str) or not row[name].strip():
+            raise _row_error(source, number, f"{name} is empty")
+    extra = set(row) - set(REQUIRED_COLUMNS + OPTIONAL_COLUMNS)
+    if extra:
+        raise _row_error(source, number, f"unknown field {sorted(extra)[0]!r}")
+    spm, moment = _spm(row, number, source), _moment(row, number, source)
+    unit = row["unit"].strip()
+    if names_a_file(unit) and not Path(unit).is_absolute():
+        unit = str(folder / unit)
+    rod_string = row.get("rod_string") or None
+    if rod_string is not None and not Path(rod_string).is_absolute():
+        rod_string = str(folder / rod_string)
+    pattern = row["card"].strip()
+    pattern = pattern if Path(pattern).is_absolute() else str(folder / pattern)
+    cards = sorted(glob.glob(pattern)) if glob.has_magic(pattern) else [pattern]
+    if not cards:
+        raise _row_error(source, number, f"card: no file matches {row['card']!r}")
+    timestamp = row.get("timestamp") or ""
+    if not isinstance(timestamp, str):
+        timestamp = str(timestamp)
+    return [Job(row["well"].strip(), unit, card, number, spm, moment, rod_string, timestamp) for card in cards]

@@ -1,0 +1,132 @@
+"""Unit files as plain data: bounded TOML, YAML and JSON, the bundled units, and what a unit spec names.
+
+A unit file is UTF-8 text of at most :data:`MAX_BYTES`, parsed with duplicate keys and
+YAML aliases refused and nested at most :data:`MAX_DEPTH` deep; nothing is validated
+here (the schemas are :mod:`pumpjack_cli.config`). :func:`unit_path` is the one place
+that turns what a user writes for a unit (a bundled unit's name or a file path) into a
+file, for loading it and for the content keys of `pumpjack batch` alike.
+"""
+
+from __future__ import annotations
+
+import importlib
+import json
+import os
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from ..errors import ConfigError
+from ..text_input import read_text
+
+BUNDLED_PACKAGE = "pumpjack_cli.configs"
+SUFFIXES = (".toml", ".yaml", ".yml", ".json")
+#: Largest unit file read [bytes]; the bundled ones are 2-5 kB.
+MAX_BYTES = 1 << 20
+#: Deepest nesting of tables and lists in a unit file (the schema needs 4).
+MAX_DEPTH = 8
+
+
+def _unique_pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object that refuses a key given twice (json keeps the last one silently)."""
+    seen: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in seen:
+            raise ConfigError(f"key {key!r} is given twice")
+        seen[key] = value
+    return seen
+
+
+def _yaml_loader():
+    """A safe YAML loader that refuses duplicate keys and aliases (a small file with
+    nested aliases can expand beyond any memory)."""
+    import yaml
+
+    class Loader(yaml.SafeLoader):
+        def compose_node(self, parent, index):
+            if self.check_event(yaml.AliasEvent):
+                mark = self.peek_event().start_mark
+                raise yaml.YAMLError(f"aliases (*name) are not accepted, at line {mark.line + 1}")
+            return super().compose_node(parent, index)
+
+        def construct_mapping(self, node, deep=False):
+            keys = [self.construct_object(key, deep=deep) for key, _ in node.value]
+            for i, key in enumerate(keys):
+                if key in keys[:i]:
+                    line = node.value[i][0].start_mark.line + 1
+                    raise yaml.YAMLError(f"key {key!r} is given twice, at line {line}")
+            return super().construct_mapping(node, deep=deep)
+
+    return Loader
+
+
+def _depth(value: Any) -> int:
+    if isinstance(value, dict):
+        return 1 + max(map(_depth, value.values()), default=0)
+    if isinstance(value, list):
+        return 1 + max(map(_depth, value), default=0)
+    return 0
+
+
+def _parse_text(path: Path, text: str) -> Any:
+    suffix = path.suffix.lower()
+    formats = {".toml": "TOML", ".json": "JSON", ".yaml": "YAML", ".yml": "YAML"}
+    if suffix not in formats:
+        raise ConfigError(f"{path}: unknown file type {suffix!r}; use one of {', '.join(SUFFIXES)}")
+    name = formats[suffix]
+    try:
+        if name == "TOML":
+            data = tomllib.loads(text)
+        elif name == "JSON":
+            data = json.loads(text, object_pairs_hook=_unique_pairs)
+        else:
+            import yaml
+
+            try:
+                data = yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
+            except yaml.YAMLError as exc:
+                mark = getattr(exc, "problem_mark", None)
+                where = f" at line {mark.line + 1}" if mark is not None else ""
+                raise ConfigError(f"{path}: not valid YAML: {getattr(exc, 'problem', None) or exc}{where}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(f"{path}: not valid TOML: {exc}") from None
+    except json.JSONDecodeError as exc:
+        raise ConfigError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno}") from None
+    except ConfigError as exc:
+        raise ConfigError(f"{path}: not valid {name}: {exc}") from None
+    except RecursionError:
+        raise ConfigError(f"{path}: not valid {name}: nested too deep") from None
+    if _depth(data) > MAX_DEPTH:
+        raise ConfigError(f"{path}: nested {_depth(data)} levels deep; a unit file has at most {MAX_DEPTH}")
+    return data
+
+
+def read_table(path: Path) -> Any:
+    """The parsed content of a TOML, YAML or JSON file of the unit-file kind (bounded, UTF-8,
+    duplicate keys refused), not validated."""
+    return _parse_text(path, read_text(path, MAX_BYTES, "unit file", ConfigError))
+
+
+def bundled_units() -> dict[str, Path]:
+    """Bundled unit files by name (file stem), sorted."""
+    folder = Path(next(iter(importlib.import_module(BUNDLED_PACKAGE).__path__)))
+    return {entry.stem: entry for entry in sorted(folder.iterdir(), key=lambda e: e.name) if entry.suffix in SUFFIXES}
+
+
+def names_a_file(spec: str) -> bool:
+    """Whether a unit spec is written as a file (a unit-file suffix or a folder in it) rather
+    than as a bundled unit's name."""
+    return Path(spec).suffix.lower() in SUFFIXES or os.sep in spec
+
+
+def unit_path(spec: str) -> Path:
+    """The file a unit spec names: a file path (written as one, or an existing file), else a
+    bundled unit by name, case-insensitive and with the GOST decimal comma
+    (``SK8-3,5-4000`` is ``sk8-3.5-4000``); an unknown name is a :class:`ConfigError`."""
+    if names_a_file(spec) or os.path.lexists(spec):
+        return Path(spec)
+    units = bundled_units()
+    key = spec.lower().replace(",", ".")
+    if key not in units:
+        raise ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(units)}")
+    return units[key]
