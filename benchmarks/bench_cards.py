@@ -42,7 +42,7 @@ def texts(linkage) -> dict[str, str]:
 
 
 def main() -> None:
-    linkage = load_unit("sk8-3.5-4000").geometry.linkage()
+    linkage = load_unit("sk8-3.5-4000").geometry.mechanism()
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}, numpy {np.__version__}")
     for name, text in texts(linkage).items():

@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parent.parent
 def main() -> None:
     config = load_unit("sk8-3.5-4000")
     well = build_machine(config)
-    sample = read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv", config.geometry.linkage()).card
+    sample = read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv", config.geometry.mechanism()).card
     mean = float(np.mean(sample.load))
     card = build_machine(config, Card(sample.crank_angle, mean + 0.5 * (sample.load - mean)))
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "

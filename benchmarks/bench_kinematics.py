@@ -27,7 +27,7 @@ from timing import best_of
 
 
 def main() -> None:
-    linkage = load_unit("sk8-3.5-4000").geometry.linkage()
+    linkage = load_unit("sk8-3.5-4000").geometry.mechanism()
     print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
           f"Python {platform.python_version()}, numpy {np.__version__}")
     for n in (360, 100_000, 1_000_000):

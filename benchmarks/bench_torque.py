@@ -38,7 +38,7 @@ def best(function, repeat: int = 20) -> float:
 
 def main() -> None:
     unit = load_unit("sk8-3.5-4000")
-    linkage, masses = unit.geometry.linkage(), unit.masses.model()
+    linkage, masses = unit.geometry.mechanism(), unit.masses.model()
     spatial = unit.geometry.spatial()
     theta = crank_grid(3600)
     load = card_load(read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv", linkage).card, theta)

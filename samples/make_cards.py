@@ -47,7 +47,7 @@ def card(name: str, spm: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarr
     unit = load_unit(name)
     well = unit.well
     omega = unit.drive.rated_crank_speed if spm is None else spm * math.pi / 30.0
-    cards = predict_cards(unit.geometry.linkage(), omega, rods(unit), pump(unit), damping=DEFAULT_DAMPING_FACTOR,
+    cards = predict_cards(unit.geometry.mechanism(), omega, rods(unit), pump(unit), damping=DEFAULT_DAMPING_FACTOR,
                           fluid_density=well.fluid_density, samples=POINTS, rod_density=well.rod_density)
     order = np.roll(np.arange(POINTS), -int(np.argmin(cards.polished_rod_position)))
     position, load = cards.polished_rod_position[order], cards.polished_rod_load[order]

@@ -23,7 +23,7 @@ from pumpjack_cli.quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
-SK8 = load_unit("sk8-3.5-4000").geometry.linkage()
+SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 
 #: The sample's columns in SI, read with numpy (independently of the reader).
 TIME, POSITION, LOAD = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True) * [[1.0], [1.0], [1e3]]

@@ -23,7 +23,7 @@ from pumpjack_cli.card_files import CardError, read_card
 from pumpjack_cli.config import load_unit
 
 ROOT = Path(__file__).resolve().parent.parent
-SK8 = load_unit("sk8-3.5-4000").geometry.linkage()
+SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 LINES = (ROOT / "samples" / "sk8-3.5-4000-card.csv").read_text(encoding="utf-8").splitlines()
 COMMENTS, HEADER, ROWS = LINES[:3], LINES[3], LINES[4:]
 KINDS = ("time", "position", "load")

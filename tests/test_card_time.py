@@ -23,7 +23,7 @@ from pumpjack_cli.errors import CardError
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
-SK8 = load_unit("sk8-3.5-4000").geometry.linkage()
+SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 CCW = dataclasses.replace(SK8, rotation=-SK8.rotation)
 TIME, POSITION, LOAD_KN = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True)
 #: Seed 004's uniform crank speed: pi n_nom / (30 u_gearbox u_belt) = pi 1460 / (30 * 37.18 * 900/250) [1/s].
@@ -182,7 +182,7 @@ def test_loop_work_is_the_enclosed_area():
 def test_sample_cards_do_positive_work():
     """The sample cards lift the fluid on the upstroke, so the rods take work from the unit."""
     for name in ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"):
-        reading = read_card(ROOT / "samples" / f"{name}-card.csv", load_unit(name).geometry.linkage())
+        reading = read_card(ROOT / "samples" / f"{name}-card.csv", load_unit(name).geometry.mechanism())
         assert not reading.reversed and loop_work(reading.position, reading.load) > 0
 
 

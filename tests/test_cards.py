@@ -16,7 +16,7 @@ from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.core.sampling import crank_grid
 
 ROOT = Path(__file__).resolve().parent.parent
-SK8 = load_unit("sk8-3.5-4000").geometry.linkage()
+SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 INCH, LBF = 0.0254, 4.4482216152605
 
 
@@ -172,7 +172,7 @@ def test_sample_cards_fit_their_units(name):
     """Each sample card reads without warnings; its stroke matches its unit, and its
     peak stays below the unit's rated polished-rod load (80, 120 kN; 13 300 lbf)."""
     rated = {"sk8-3.5-4000": 80e3, "7sk12-2.5-5600": 120e3, "c-114d-133-54": 13300 * LBF}
-    linkage = load_unit(name).geometry.linkage()
+    linkage = load_unit(name).geometry.mechanism()
     reading = read_card(ROOT / "samples" / f"{name}-card.csv", linkage)
     assert reading.warnings == ()
     assert 0 < reading.card.load.min() < reading.card.load.max() < rated[name]

@@ -50,7 +50,7 @@ def _floats(values: list[str]) -> np.ndarray:
 def library_result():
     """The library's own result for the bundled SK8 at the motor's rated speed, 360 steps."""
     config = load_unit(SK8)
-    return uniform_kinematics(config.geometry.linkage(), config.drive.rated_crank_speed, 360)
+    return uniform_kinematics(config.geometry.mechanism(), config.drive.rated_crank_speed, 360)
 
 
 # Exact-kinematics columns (SI, no scaling) and where the library keeps them.

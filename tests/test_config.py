@@ -59,7 +59,7 @@ def test_shipped_file_validates(path):
     assert config.name
     if config.kind == "beam-pump":
         # A beam pump's geometry must give a usable linkage (validation checks assembly).
-        assert config.geometry.linkage().crank_radius > 0
+        assert config.geometry.mechanism().crank_radius > 0
 
 
 # --- bundled units and load_unit ---------------------------------------------------
@@ -204,12 +204,12 @@ def _assert_same_linkage(a, b, rel=1e-15):
 def test_gost_and_api_files_give_the_same_linkage():
     # Same numbers in the same units, so the conversion is identical: 1e-15 relative
     # (H - G = 4.5 - 1.5 is exact in binary).
-    _assert_same_linkage(read_unit_file(SK8).geometry.linkage(), read_unit_file(SK8_API).geometry.linkage())
+    _assert_same_linkage(read_unit_file(SK8).geometry.mechanism(), read_unit_file(SK8_API).geometry.mechanism())
 
 
 def test_api_letters_inline_match_gost():
-    gost = parse_unit(_with_geometry(_sk8_data()["geometry"]), "gost.toml").geometry.linkage()
-    api = parse_unit(_with_geometry(_api_geometry()), "api.toml").geometry.linkage()
+    gost = parse_unit(_with_geometry(_sk8_data()["geometry"]), "gost.toml").geometry.mechanism()
+    api = parse_unit(_with_geometry(_api_geometry()), "api.toml").geometry.mechanism()
     _assert_same_linkage(gost, api)
 
 
@@ -218,10 +218,10 @@ def test_k_instead_of_h_and_g():
     geometry = _api_geometry()
     del geometry["H"], geometry["G"]
     geometry["K"] = math.hypot(2.195, 3.0)
-    linkage = parse_unit(_with_geometry(geometry), "k.toml").geometry.linkage()
+    linkage = parse_unit(_with_geometry(geometry), "k.toml").geometry.mechanism()
     # sqrt(K² - I²) after hypot: a few roundings, rel 1e-12.
     assert linkage.vertical_offset == pytest.approx(3.0, rel=1e-12)
-    reference = parse_unit(_with_geometry(_api_geometry()), "api.toml").geometry.linkage()
+    reference = parse_unit(_with_geometry(_api_geometry()), "api.toml").geometry.mechanism()
     _assert_same_linkage(linkage, reference, rel=1e-12)
 
 

@@ -83,7 +83,7 @@ def test_card_drives_the_machine(run_cli, sk8_drivable_card):
     data = json.loads(out)
     assert "card sk8-drivable-card.csv" in data["title"]
     config = load_unit(SK8)
-    card = read_card(sk8_drivable_card, config.geometry.linkage()).card
+    card = read_card(sk8_drivable_card, config.geometry.mechanism()).card
     r = steady_state(build_machine(config, card), crank_grid(36), rtol=1e-8)
     assert data["series"]["crank_speed_rad_s"] == r.omega.tolist()
     summary = data["summary"]

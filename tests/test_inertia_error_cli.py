@@ -102,7 +102,7 @@ def test_field_units(run_cli):
 def test_beam_units_json_equals_library(run_cli, name):
     doc = _json(run_cli, name, "--spm", "8", "--steps", "12")
     omega = parse_quantity("8 spm", "rotational_speed")  # the CLI's conversion of --spm
-    c = beam_inertia_laws(load_any_unit(name).geometry.linkage(), omega, crank_grid(12))
+    c = beam_inertia_laws(load_any_unit(name).geometry.mechanism(), omega, crank_grid(12))
     assert doc["series"]["acceleration_m_s2"] == c.acceleration.tolist()
     assert set(c.errors) == {"harmonic", "two_term", "chord"}
     for law, error in c.errors.items():

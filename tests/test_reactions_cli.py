@@ -93,7 +93,7 @@ def test_no_weights_no_inertia_is_the_torque_factor_method(run_cli, sk8_card):
     from pumpjack_cli.core.beam.linkage import motion
 
     theta = crank_grid(36)
-    tf = config.geometry.linkage().front_arm * motion(config.geometry.linkage(), theta).beam_rate
+    tf = config.geometry.mechanism().front_arm * motion(config.geometry.mechanism(), theta).beam_rate
     expected = tf * np.array(data["rod_load_n"])
     assert np.allclose(data["net_torque_n_m"], expected, rtol=0, atol=1e-9 * np.abs(expected).max())
 
@@ -149,7 +149,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     series = json.loads(out)["series"]
     config = load_unit(SK8)
     theta = crank_grid(90)
-    card = read_card(sk8_drivable_card, config.geometry.linkage()).card
+    card = read_card(sk8_drivable_card, config.geometry.mechanism()).card
     machine = build_machine(config, card)
     state = steady_state(machine, theta)
     assert series["crank_speed_rad_s"] == state.omega.tolist()

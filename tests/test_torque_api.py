@@ -73,7 +73,7 @@ def test_counterbalance_moment_equals_kinetostatic_gravity_of_crank_group(name, 
 
 def test_crank_offset_sign_is_the_lag_of_the_counterweights():
     """Counterweights alone at phase phi ahead of the pin give tau = -phi (lag = -lead)."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     masses = dataclasses.replace(ZERO, counterweight_mass=1000.0, counterweight_radius=1.0, counterweight_phase=0.25)
     _, m, tau = counterbalance_from_masses(lk, masses)
     assert tau == pytest.approx(-0.25, abs=1e-15) and m == pytest.approx(1000.0 * G, rel=1e-15)
@@ -170,7 +170,7 @@ def test_api_net_torque_rejects_nan():
 
 def test_counterbalance_effect_balances_the_torque_at_the_test_angle():
     """CBE is the load that makes T = 0 at theta_t = 90 deg (cranks horizontal)."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     bal = Counterbalance(-800.0, 60e3, 0.0)
     test = np.array([math.pi / 2])
     cbe = counterbalance_effect(float(lk.torque_factor(test)[0]), bal)
@@ -182,7 +182,7 @@ def test_counterbalance_effect_balances_the_torque_at_the_test_angle():
 def test_permissible_load_by_hand():
     """Gault's bounds at several positions: the formula evaluated here for TF > 0 and
     TF < 0 (bounds swapped), and loads on the bounds give |T| = T_r exactly."""
-    lk = load_unit("7sk12-2.5-5600").geometry.linkage()
+    lk = load_unit("7sk12-2.5-5600").geometry.mechanism()
     theta = np.radians([40.0, 90.0, 150.0, 230.0, 300.0])
     tf = lk.torque_factor(theta)
     bal = Counterbalance(700.0, 80e3, 0.0)
@@ -210,7 +210,7 @@ def test_permissible_load_where_the_torque_factor_vanishes():
 
 def test_upstroke_mask_matches_rising_polished_rod():
     """On the upstroke the polished rod rises: TF > 0 there and < 0 on the downstroke."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     up = upstroke_mask(lk, THETA)
     tf = lk.torque_factor(THETA)
     dead = lk.dead_positions()

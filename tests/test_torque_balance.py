@@ -90,7 +90,7 @@ def test_recommendation_on_a_square_card():
     conventional SK8 geometry: equal-peaks and min-peak agree (the largest |T| is the
     larger stroke peak), min-rms differs, and each reported peak is the maximum of the
     torque recomputed here with the recommended M."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     theta = crank_grid(3600)
     m = lk.motion(theta)
     w = np.where(m.beam_rate > 0, 70e3, 35e3)
@@ -111,7 +111,7 @@ def rear_heavy_case():
     heavy at the rear): TF (W - B) is negative on the upstroke and positive on the
     downstroke, so the downstroke peak already exceeds the upstroke one at M = 0 and
     every M > 0 widens the gap."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     theta = crank_grid(720)
     return lk, theta, np.where(lk.motion(theta).beam_rate > 0, 70e3, 35e3), Counterbalance(100e3, 0.0)
 
@@ -147,7 +147,7 @@ def test_counterweight_radius_by_hand():
 
 def test_counterweight_radius_round_trip_with_phase():
     """With a counterweight phase the radius found gives back M through counterbalance_from_masses."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     masses = dataclasses.replace(load_unit("sk8-3.5-4000").masses.model(), counterweight_phase=0.3)
     p = counterweight_placement(70e3, masses, (0.3, 1.5))
     moved = dataclasses.replace(masses, counterweight_radius=p.radius)

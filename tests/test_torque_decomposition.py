@@ -57,7 +57,7 @@ def test_components_sum_and_static_limit():
     """net is the sum of the five arrays; at omega = alpha = 0 the inertia terms vanish
     and net is the API torque; rod-load, structural and counterbalance terms are the
     API formula's three terms."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     bal = Counterbalance(-800.0, 60e3, 0.1)
     parts = torque_components(lk, THETA, load(THETA), bal, beam_inertia=5e3, rotary_inertia=3e4)
     tf = lk.torque_factor(THETA)
@@ -73,7 +73,7 @@ def test_articulating_inertia_is_the_rate_of_beam_kinetic_energy():
     term, T_a omega, equals d/dt of (1/2) I_b psi_dot^2 computed by central differences
     of psi(theta(t)) in time. Tolerance 1e-6 relative: the O(h^2) difference error with
     h = 1e-4 s on the second derivative of psi."""
-    lk = load_unit("7sk12-2.5-5600").geometry.linkage()
+    lk = load_unit("7sk12-2.5-5600").geometry.mechanism()
     w0, ib, h = 0.9, 4000.0, 1e-4
     t = np.linspace(0.0, 2 * np.pi / w0, 50, endpoint=False)
 
@@ -98,7 +98,7 @@ def test_crank_rates_from_time_recover_an_analytic_motion():
     omega and alpha from the analytic derivatives. The fit represents t(theta) by 16
     harmonics; the series of the inverse function converges geometrically (ratio about
     the 0.09 speed modulation), so the residual is far below the 1e-7 tolerance."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     w = 1.1
     period = 2 * np.pi / w
     u = np.linspace(0.0, 1.0, 240, endpoint=False)
@@ -121,7 +121,7 @@ def test_crank_rates_from_time_recover_an_analytic_motion():
     (np.arange(6.0), np.array([0, 1, 2, np.nan, 4, 5.0]), 1, "not finite"),
 ])
 def test_crank_rates_from_time_rejects_bad_input(time, angle, harmonics, message):
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     with pytest.raises(TorqueError, match=message):
         crank_rates_from_time(lk, time, angle, harmonics)
 

@@ -28,7 +28,7 @@ def test_square_card_work_is_load_difference_times_stroke():
     """Work of a square card = (W_up - W_down) S. 1e-5 relative: the trapezoid rule
     averages the two loads on the two segments that cross the dead positions, where
     ds is O(dtheta^2) = (2 pi / 3600)^2 of the stroke."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     work = card_work(lk, square_card(lk, 70e3, 40e3))
     assert work == pytest.approx(30e3 * lk.stroke, rel=1e-5)
 
@@ -39,7 +39,7 @@ def test_loading_percentages_and_power_by_hand():
     gearbox 100 x 32 000 / 39 226.6 = 81.577 %; structure 100 x 70 000 / 78 453.2 =
     89.225 %; stroke 100 S / 3.5; P_pr = 30 kN x S x 0.1 1/s; CLF = sqrt(400 + 72)/20 =
     1.086 278; motor power T_rms omega / eta = 21 725.56 N·m x 0.628 319 1/s / 0.9."""
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     rating = parse_designation("SK8-3,5-4000")
     theta = crank_grid(STEPS)
     result = loading(20e3 + 12e3 * np.sin(theta), square_card(lk, 70e3, 40e3), lk, 6 / 60,
@@ -60,7 +60,7 @@ def test_loading_percentages_and_power_by_hand():
 def test_motor_power_is_clf_times_polished_rod_power_at_uniform_speed():
     """When T_mean = work / 2 pi (the API torque of the card), the RMS rule gives
     P_motor = CLF P_pr / eta."""
-    lk = load_unit("7sk12-2.5-5600").geometry.linkage()
+    lk = load_unit("7sk12-2.5-5600").geometry.mechanism()
     card = square_card(lk, 80e3, 45e3)
     theta = crank_grid(STEPS)
     torque = lk.front_arm * lk.motion(theta).beam_rate * card.load - 70e3 * np.sin(theta)
@@ -88,7 +88,7 @@ def test_cyclic_load_factor_undefined(torque, message):
     ("drive_efficiency", 1.5, "drive efficiency is 1.5"),
 ])
 def test_loading_rejects_bad_ratings(field, value, message):
-    lk = load_unit("sk8-3.5-4000").geometry.linkage()
+    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     kwargs = dict(gearbox_rating=40e3, structure_rating=80e3, max_stroke=3.5)
     kwargs[field] = value
     with pytest.raises(TorqueError, match=message):

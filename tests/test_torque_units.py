@@ -39,7 +39,7 @@ THETA = crank_grid(1800)
 def bundled(name: str):
     """Linkage, masses and card of a bundled unit."""
     config = load_unit(name)
-    linkage = config.geometry.linkage()
+    linkage = config.geometry.mechanism()
     reading = read_card(REPO / "samples" / f"{name}-card.csv", linkage, CARDS[name][0])
     return linkage, config.masses.model(), reading.card
 
@@ -64,7 +64,7 @@ def balance_of(name: str):
     """Linkage, B M tau and card of a bundled unit: from the masses, or from the
     [counterbalance] of a unit described without them (C-80D-133-48)."""
     config = load_unit(name)
-    linkage = config.geometry.linkage()
+    linkage = config.geometry.mechanism()
     units = CARDS.get(name, ("field",))[0]
     card = read_card(REPO / "samples" / f"{name}-card.csv", linkage, units).card
     if config.masses is not None:
@@ -120,7 +120,7 @@ def test_crank_speed_from_the_cards_time_stamps(name):
     dead positions moves the angle by up to sqrt(2e-5 / A psi'') ~ 3e-3 rad, and time
     to 1e-4 s, 0.3 % of the 0.03 s step."""
     config = load_unit(name)
-    linkage = config.geometry.linkage()
+    linkage = config.geometry.mechanism()
     data = np.loadtxt(REPO / "samples" / f"{name}-card.csv", delimiter=",", comments="#", skiprows=4)
     time = data[:, 0]
     position = data[:, 1] * (0.0254 if CARDS[name][0] == "field" else 1.0)

@@ -130,7 +130,7 @@ def test_bundled_config_matches_table():
     assert geo.vertical_offset == pytest.approx((h - g) * INCH, rel=1e-12)
     assert geo.crank_radius == pytest.approx(r * INCH, rel=1e-12)
     assert geo.rotation == "clockwise"
-    lk = geo.linkage()
+    lk = geo.mechanism()
     assert lk.rotation == CLOCKWISE
     # and the SI linkage reproduces the table's torque factor, converted back to inches
     assert _tf90(lk) / INCH == pytest.approx(tf, abs=0.01)

@@ -51,7 +51,7 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
         raise PumpjackError(f"--method {method}: use one of {', '.join(downhole_methods())}")
     well = well_of(unit)
     string = rods(unit)
-    linkage = unit.geometry.linkage()
+    linkage = unit.geometry.mechanism()
     reading, surface = time_card(unit, linkage, card, spm, samples, rotation)
     try:
         nu, source = damping_factor(unit, damping, string, surface, method)

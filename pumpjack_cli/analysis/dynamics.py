@@ -18,7 +18,7 @@ _WELL_FORCES = (("upstroke_rod_load", "upstroke"), ("downstroke_rod_load", "down
 
 def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
     """The periodic motion under the motor, the well model (or a card) and the weights ([SK8Rotation2013])."""
-    measured = None if card is None else card.read(unit.geometry.linkage()).card
+    measured = None if card is None else card.read(unit.geometry.mechanism()).card
     machine_ = machine(unit, measured)
     result = steady_state(machine_, crank_grid(steps), rtol=rtol)
     s = result.summary

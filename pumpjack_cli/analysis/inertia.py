@@ -148,4 +148,4 @@ def inertia_error(unit, spm: float | None, mass: float | None, support: bool, st
         raise PumpjackError(f"unit {unit.name} is a beam pumping unit: --support-friction needs a slider-crank unit")
     omega = crank_speed(unit, spm)
     return _comparison(f"{unit.name}: polished-rod inertia, exact and approximate laws",
-                       beam_inertia_laws(unit.geometry.linkage(), omega, crank_grid(steps)), omega, mass)
+                       beam_inertia_laws(unit.geometry.mechanism(), omega, crank_grid(steps)), omega, mass)

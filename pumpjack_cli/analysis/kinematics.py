@@ -12,7 +12,7 @@ _EXTREMES = ("velocity", "acceleration", "torque_factor")
 
 def kinematics(unit, spm: float | None, steps: int) -> Result:
     """Exact polished-rod, beam and pitman kinematics with the textbook approximations beside it."""
-    result = uniform_kinematics(unit.geometry.linkage(), crank_speed(unit, spm), steps)
+    result = uniform_kinematics(unit.geometry.mechanism(), crank_speed(unit, spm), steps)
     s = result.summary
     summary = [
         Scalar("crank_speed", s.crank_speed),

@@ -36,7 +36,7 @@ def well(unit) -> WellLoad:
     if missing:
         raise PumpjackError(f"unit {unit.name}: well.{' and well.'.join(missing)} needed by the well model "
                             f"(or drive the unit with --card)")
-    up, down = mean_rod_speeds(unit.geometry.linkage(), unit.drive.rated_crank_speed)
+    up, down = mean_rod_speeds(unit.geometry.mechanism(), unit.drive.rated_crank_speed)
     return well_load(
         pump_depth=w.pump_depth,
         submergence=w.pump_submergence,
@@ -60,7 +60,7 @@ def machine(unit, card: Card | None = None, *, elastic_rods: bool = False) -> Ma
         require(unit, section, "the equation of motion needs it")
     drive, motor = unit.drive, unit.drive.motor
     return Machine(
-        linkage=unit.geometry.linkage(),
+        linkage=unit.geometry.mechanism(),
         masses=unit.masses.model(),
         drive_inertia=drive_inertia(
             motor.rotor_inertia + drive.motor_sheave_inertia, drive.gearbox_sheave_inertia + drive.gearbox_inertia,

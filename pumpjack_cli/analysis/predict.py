@@ -121,7 +121,7 @@ def predicted(unit, spm: float | None, rotation: str, samples: int, damping: flo
     if rotation == "uniform":
         omega = crank_speed(unit, spm)
         nu = damping_factor(unit, damping)
-        cards = predict_cards(unit.geometry.linkage(), omega, string, well_pump, damping=nu,
+        cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
     if spm is not None:
@@ -223,7 +223,7 @@ def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
     from ..core.dynamics.periodic import steady_state
 
     cards = found.cards.summary
-    uniform = predict_cards(unit.geometry.linkage(), 2.0 * np.pi / cards.period, rods(unit), pump(unit),
+    uniform = predict_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, rods(unit), pump(unit),
                             damping=found.damping, fluid_density=unit.well.fluid_density, samples=samples,
                             rod_density=unit.well.rod_density)
     uniform_found = Predicted(uniform, np.full(samples, 2.0 * np.pi / cards.period), np.zeros(samples), None,

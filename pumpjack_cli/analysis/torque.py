@@ -82,7 +82,7 @@ def counterbalance(unit, masses) -> tuple[Counterbalance, bool]:
     if given is not None:
         return Counterbalance(given.structural_unbalance, given.moment or 0.0, given.phase), given.moment is not None
     if masses is not None:
-        return counterbalance_from_masses(unit.geometry.linkage(), masses), True
+        return counterbalance_from_masses(unit.geometry.mechanism(), masses), True
     raise PumpjackError(f"unit {unit.name} has neither [counterbalance] nor [masses]: give at least "
                         f"[counterbalance] structural_unbalance (and moment for the present net torque)")
 
@@ -123,7 +123,7 @@ def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
     """The torque analysis of one card (see the module docstring)."""
     check_options(method, criterion)
     ratings(unit)
-    reading, runs = card_runs(unit, unit.geometry.linkage(), card, spm, (steps, SUMMARY_STEPS), rotation)
+    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), rotation)
     found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
     title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
              f"balance {criterion}")
@@ -162,7 +162,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     analysis of a measured card and of a predicted one alike."""
     check_options(method, criterion)
     rated = ratings(unit)
-    linkage = unit.geometry.linkage()
+    linkage = unit.geometry.mechanism()
     masses = mass_model(unit) if unit.masses is not None else None
     if method == "exact" and masses is None:
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "

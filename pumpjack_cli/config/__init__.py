@@ -19,8 +19,8 @@ _EXPORTS = {
     "load_unit": "files", "load_any_unit": "files", "read_unit_file": "files", "parse_unit": "files",
     "bundled_units": "files", "unit_listing": "files", "format_validation_error": "files", "error_message": "files",
     "UNIT_KINDS": "files",
-    "UnitConfig": "beam_unit", "Geometry": "beam_unit", "Masses": "beam_unit", "Drive": "beam_unit",
-    "Motor": "beam_unit", "Well": "beam_unit", "Deviations": "beam_unit", "PitmanSectionConfig": "beam_unit",
+    "UnitConfig": "beam_unit", "ConventionalGeometry": "conventional", "Masses": "masses", "Drive": "drive",
+    "Motor": "drive", "Well": "well", "Deviations": "beam_unit", "PitmanSectionConfig": "beam_unit",
     "SliderCrankConfig": "slider_crank", "SteppedSlider": "slider_crank",
 }
 

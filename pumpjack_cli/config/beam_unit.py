@@ -11,16 +11,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import TYPE_CHECKING, Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Discriminator, Field, Tag, ValidationInfo, field_validator
 
-from ..core.beam.geometry import Linkage, beam_linkage, check_assembly
 from ..core.designations import parse_designation
-from ..errors import ConfigError, DesignationError, GeometryError
-from .geometry_names import ROTATION_SIGNS, canonical_geometry
+from ..errors import DesignationError
 from .drive import Drive
 from .masses import Masses
+from .unit_classes import UNIT_CLASSES, unit_class
 from .well import Well
 if TYPE_CHECKING:  # the spatial models are imported when a command uses them
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
@@ -29,59 +28,14 @@ from .quantities import (Angle, Area, AreaMoment, Force, Length, Pressure, Rotat
                          Torque, at_least)
 
 
-class Geometry(Section):
-    """Four-bar geometry of a conventional (class I) unit, rotation direction included."""
+def _class_tag(value: Any) -> str | None:
+    """The ``[geometry] class`` of a raw table (set by :meth:`UnitConfig._unit_class`) or a model."""
+    return value.get("class") if isinstance(value, dict) else getattr(value, "unit_class", None)
 
-    front_arm: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="k1 / A: centre bearing to horsehead arc [m]")
-    rear_arm: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="k / C: centre bearing to equalizer bearing [m]")
-    crank_radius: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=5, description="r / R: crank shaft to crank pin [m]")
-    pitman: Annotated[Length, at_least(0.01, "10 mm")] = Field(gt=0, le=20, description="l / P: crank pin to equalizer bearing [m]")
-    horizontal_offset: Length = Field(
-        ge=0, le=20, description="l1 / I: horizontal distance crank shaft - centre bearing [m]"
-    )
-    vertical_offset: Annotated[Length, at_least(0.01, "10 mm")] = Field(
-        gt=0, le=20, description="l2 / H-G: height of the centre bearing above the crank shaft [m]"
-    )
-    rotation: Literal["clockwise", "counterclockwise"] = Field(
-        description="crank rotation seen with the well to the right"
-    )
-    crank_half_spacing: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
-        default=None, gt=0, le=5,
-        description="spatial model: crank shaft mid-plane to each crank pin, along the shaft [m]",
-    )
-    equalizer_half_length: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
-        default=None, gt=0, le=5, description="spatial model: equalizer bearing D to each pin, BD = DB1 [m]"
-    )
 
-    @model_validator(mode="before")
-    @classmethod
-    def _names(cls, data: Any) -> Any:
-        """Map GOST names and API letters to field names; reject double definitions."""
-        return canonical_geometry(data) if isinstance(data, dict) else data
-
-    @model_validator(mode="after")
-    def _assembles(self) -> "Geometry":
-        try:
-            check_assembly(self.linkage())
-        except GeometryError as exc:
-            raise ValueError(str(exc)) from None
-        return self
-
-    def linkage(self) -> Linkage:
-        """The numerical core's planar four-bar (:func:`~pumpjack_cli.core.beam.geometry.beam_linkage`)."""
-        return beam_linkage(self.front_arm, self.rear_arm, self.crank_radius, self.pitman, self.horizontal_offset,
-                            self.vertical_offset, ROTATION_SIGNS[self.rotation], self.crank_half_spacing,
-                            self.equalizer_half_length)
-
-    def spatial(self, source: str = "unit") -> SpatialLinkage:
-        """The spatial model; needs crank_half_spacing and equalizer_half_length."""
-        if self.crank_half_spacing is None or self.equalizer_half_length is None:
-            raise ConfigError(
-                f"{source}: geometry: the spatial model needs crank_half_spacing and equalizer_half_length"
-            )
-        from ..core.beam.spatial import SpatialLinkage
-
-        return SpatialLinkage(self.linkage(), self.crank_half_spacing, self.equalizer_half_length)
+#: The ``[geometry]`` of any kind of unit: the schema its ``class`` names in the registry.
+Geometry = Annotated[Union[tuple(Annotated[kind.model(), Tag(name)] for name, kind in UNIT_CLASSES.items())],
+                     Discriminator(_class_tag)]
 
 
 class PitmanSectionConfig(Section):
@@ -212,3 +166,12 @@ class UnitConfig(Section):
             except DesignationError as exc:
                 raise ValueError(str(exc)) from None
         return text
+
+    @field_validator("geometry", mode="before")
+    @classmethod
+    def _unit_class(cls, geometry: Any, info: ValidationInfo) -> Any:
+        """The kind of unit: ``class``, else the designation's letters, else conventional
+        (:func:`~pumpjack_cli.config.unit_classes.unit_class`)."""
+        if not isinstance(geometry, dict):
+            return geometry
+        return {**geometry, "class": unit_class(geometry, info.data.get("designation"))}

@@ -22,7 +22,8 @@ from typing import Any, Callable
 from ..errors import ConfigError
 from ..quantities import SI_LABELS, parse_quantity
 from ..readers.unit_files import bundled_units, read_table, unit_path
-from .geometry_names import linkage_of, slider_crank_of
+from .geometry_names import slider_crank_of
+from .unit_classes import UNIT_CLASSES, raw_stroke
 
 
 @dataclass(frozen=True)
@@ -33,7 +34,7 @@ class Kind:
     beam-unit commands accept)."""
 
     schema: str
-    stroke: Callable[[dict], float]
+    stroke: Callable[[dict, str | None], float]
     beam_unit: bool
 
     def model(self) -> type:
@@ -43,8 +44,8 @@ class Kind:
 
 #: Machine kinds a file can describe, by its top-level ``kind`` key (default beam-pump).
 UNIT_KINDS: dict[str, Kind] = {
-    "beam-pump": Kind("beam_unit:UnitConfig", lambda geometry: linkage_of(geometry).stroke, beam_unit=True),
-    "slider-crank": Kind("slider_crank:SliderCrankConfig", lambda geometry: slider_crank_of(**geometry).stroke,
+    "beam-pump": Kind("beam_unit:UnitConfig", raw_stroke, beam_unit=True),
+    "slider-crank": Kind("slider_crank:SliderCrankConfig", lambda geometry, _: slider_crank_of(**geometry).stroke,
                          beam_unit=False),
 }
 DEFAULT_KIND = "beam-pump"
@@ -62,10 +63,23 @@ def _inside(annotation: Any) -> list[Any]:
     return found
 
 
+def _is_tag(loc: tuple, index: int) -> bool:
+    """Whether ``loc[index]`` is the kind of unit pydantic inserts after ``geometry`` (the union's tag)."""
+    return index > 0 and loc[index - 1] == "geometry" and loc[index] in UNIT_CLASSES
+
+
+def field_path(loc: tuple) -> str:
+    """A pydantic error location as a unit file's key path (``geometry.pitman``)."""
+    return ".".join(str(part) for i, part in enumerate(loc) if not _is_tag(loc, i))
+
+
 def _dimension(model: Any, loc: tuple) -> str | None:
     """The physical dimension of the field at ``loc`` of a unit-file model, if it is a quantity."""
     names = [part for part in loc if isinstance(part, str)]
     for depth, name in enumerate(names):
+        if _is_tag(tuple(names), depth):
+            model = UNIT_CLASSES[name].model()
+            continue
         field = getattr(model, "model_fields", {}).get(name)
         if field is None:
             return None
@@ -103,7 +117,7 @@ def format_validation_error(source: str, error, model: Any = None) -> str:
     """One line naming the file, the field and what is wrong with it (a pydantic
     ValidationError of ``model``)."""
     first = error.errors()[0]
-    where = ".".join(str(part) for part in first["loc"]) or "(top level)"
+    where = field_path(first["loc"]) or "(top level)"
     more = len(error.errors()) - 1
     tail = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
     return f"{source}: {where}: {error_message(first, model)}{tail}"
@@ -144,7 +158,8 @@ def unit_listing() -> list[dict[str, Any]]:
         data = read_table(path)
         kind = _kind(data, str(path))
         rows.append({"name": name, "kind": data.get("kind", DEFAULT_KIND), "designation": data["name"],
-                     "stroke": kind.stroke(data["geometry"]), "description": data.get("description", "")})
+                     "stroke": kind.stroke(data["geometry"], data.get("designation")),
+                     "description": data.get("description", "")})
     return rows
 
 

@@ -55,4 +55,4 @@ def at_least(minimum: float, shown: str) -> AfterValidator:
 class Section(BaseModel):
     """A table of a unit file: unknown keys are errors, values are immutable."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True)
