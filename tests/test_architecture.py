@@ -49,7 +49,7 @@ def test_commands_never_import_each_other(path):
 
 FORBIDDEN = {
     "core": ("pumpjack_cli.config", "pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands",
-             "pumpjack_cli.cli", "pumpjack_cli.options", "pumpjack_cli.card_files", "pydantic", "typer", "rich"),
+             "pumpjack_cli.cli", "pumpjack_cli.options", "pumpjack_cli.readers", "pydantic", "typer", "rich"),
     "config": ("pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli",
                "pumpjack_cli.options", "typer", "rich"),
     "analysis": ("pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli", "pumpjack_cli.options",

@@ -48,6 +48,9 @@ _LINE_SEARCH = 20
 #: A Gauss-Newton step below this many radians (start angle, and speed times the half
 #: time span) ends the fit: 1e-10 rad moves a 3 m-stroke polished rod by under 1 nm.
 _FIT_TOLERANCE = 1e-10
+#: Harmonics fitted before the others: a pumping unit's crank speed varies mostly at once
+#: and twice per revolution (the upstroke's and the downstroke's torque peaks).
+_FIRST_HARMONICS = 2
 
 
 @dataclass(frozen=True)
@@ -341,9 +344,10 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     unwrapped along time and fitted by a straight line (no assumption on how many
     cycles the card holds); then Gauss-Newton with the exact Jacobian through
     ds/dtheta = A psi', halving a step that does not lower the sum of squares; the
-    uniform fit first, then the harmonics one at a time, each fit started from the
-    previous one with the new terms at zero (a large speed variation is found by
-    continuation, not from a uniform start). The speed and acceleration at every sample
+    uniform fit first, then the first two harmonics, then the rest, each fit started
+    from the previous one with the new terms at zero (a large speed variation, which a
+    uniform start can miss, is found through the two harmonics that carry most of it).
+    The speed and acceleration at every sample
     are the derivatives of the fitted series:
     omega = omega_m (1 + sum_j j (b_j cos j phi - a_j sin j phi)),
     alpha = -omega_m^2 sum_j j^2 (a_j cos j phi + b_j sin j phi), omega_m the mean speed.
@@ -417,8 +421,11 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     omega = float(np.sum(tc * (unwrapped - unwrapped.mean())) / np.sum(tc * tc))
     params, cost = _least_squares(linkage, tc, p, np.array([unwrapped.mean() - omega * tc.mean(), omega, 0.0, 1.0]))
     uniform_rms = math.sqrt(cost / t.size)
-    for _ in range(harmonics):
-        params, cost = _least_squares(linkage, tc, p, np.concatenate([params[:-2], np.zeros(2), params[-2:]]))
+    fitted = 0
+    for count in sorted({min(_FIRST_HARMONICS, harmonics), harmonics} - {0}):
+        params, cost = _least_squares(linkage, tc, p,
+                                      np.concatenate([params[:-2], np.zeros(2 * (count - fitted)), params[-2:]]))
+        fitted = count
     theta, _, ratio, curvature = _angles(params[:-2], tc)
     return RotationFit(crank_angle=theta, crank_speed=params[1] * ratio, crank_acceleration=params[1] ** 2 * curvature,
                        start_angle=float(theta[0]),
