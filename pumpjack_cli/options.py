@@ -70,7 +70,8 @@ def card_source(card: Path, units: UnitSystem | None, columns: str | None):
     from .analysis.card_runs import CardSource  # numpy: only when a command runs
     from .readers.cards import parse_card_columns
 
-    return CardSource(card, None if units is None else units.value, None if columns is None else parse_card_columns(columns))
+    mapping = None if columns is None else parse_card_columns(columns)
+    return CardSource(card, None if units is None else units.value, mapping)
 
 
 def finite(value: float | None) -> float | None:

@@ -2,7 +2,8 @@
 
 The parser is the registry's delimited reader and the placement's one time fit is
 ``core.beam.card.fit_rotation`` as the placement calls it; both are counted through
-monkeypatched wrappers while the CLI and a batch job run on a time-stamped card.
+monkeypatched wrappers while `pumpjack torque` and `pumpjack batch` (one worker, in this
+process) run on a time-stamped card.
 """
 
 from __future__ import annotations
@@ -13,7 +14,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pumpjack_cli.analysis import batch
 from pumpjack_cli.core import cards as placement
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers import cards
@@ -77,8 +77,13 @@ def test_torque_with_the_cards_rotation_parses_and_fits_once(run_cli, counted):
     assert counted == {"parse": 1, "fit": 1}
 
 
-def test_a_batch_card_is_parsed_and_fitted_once_for_both_analyses(counted):
-    job = batch.Job("well-1", "sk8-3.5-4000", str(SAMPLE), 2)
-    outcomes = batch.analyse(job, batch.Options(analyses=("torque", "downhole")))
-    assert [(o.analysis, o.status) for o in outcomes] == [("torque", "ok"), ("downhole", "ok")]
+def test_a_batch_card_is_parsed_and_fitted_once_for_both_analyses(run_cli, tmp_path, counted):
+    """`pumpjack batch` on one worker (in this process): torque and downhole of one card."""
+    (tmp_path / "card.csv").write_text(SAMPLE.read_text(encoding="utf-8"), encoding="utf-8")
+    manifest = tmp_path / "manifest.csv"
+    manifest.write_text("well,unit,card\nwell-1,sk8-3.5-4000,card.csv\n", encoding="utf-8")
+    code, out, err = run_cli("batch", manifest, "--store", tmp_path / "results.sqlite", "--workers", "1",
+                             "--analyses", "torque,downhole")
+    assert code == 0, err
+    assert "2 results ok, 0 errors" in out
     assert counted == {"parse": 1, "fit": 1}

@@ -169,19 +169,24 @@ def test_noise_in_the_rates_is_what_least_squares_predicts():
     time = np.arange(180) * (2 * math.pi / omega) / 180
     theta = 0.3 + omega * time
     s, tf = SK8.rod_position(theta), SK8.torque_factor(theta)
-    phi = omega * (time - 0.5 * (time[0] + time[-1]))
+    centred = time - 0.5 * (time[0] + time[-1])
     j = np.arange(1, harmonics + 1)
-    cos, sin = np.cos(np.outer(phi, j)), np.sin(np.outer(phi, j))
-    jacobian = np.column_stack([tf, tf * (time - time.mean()), *(tf[:, None] * np.dstack([cos, sin]).reshape(-1, 2 * harmonics)).T,
-                                np.ones_like(s), s])
+    cos, sin = np.cos(np.outer(omega * centred, j)), np.sin(np.outer(omega * centred, j))
+
+    def interleaved(a, b):
+        """Columns a_1, b_1, a_2, b_2, ... in the order of the fit's parameters."""
+        both = np.empty((a.shape[0], 2 * a.shape[1]))
+        both[:, 0::2], both[:, 1::2] = a, b
+        return both
+
+    jacobian = np.column_stack([tf, tf * centred, tf[:, None] * interleaved(cos, sin), np.ones_like(s), s])
     covariance = np.linalg.inv(jacobian.T @ jacobian)
-    zeros = np.zeros((time.size, 1))
-    d_speed = np.hstack([zeros, np.ones_like(zeros), omega * np.dstack([-j * sin, j * cos]).reshape(-1, 2 * harmonics),
-                         zeros, zeros])
-    d_acceleration = np.hstack([zeros, zeros, omega**2 * np.dstack([-j**2 * cos, -j**2 * sin]).reshape(-1, 2 * harmonics),
-                                zeros, zeros])
+    zero, one = np.zeros((time.size, 1)), np.ones((time.size, 1))
+    d_speed = np.hstack([zero, one, omega * interleaved(-j * sin, j * cos), zero, zero])
+    d_acceleration = np.hstack([zero, zero, -omega**2 * interleaved(j**2 * cos, j**2 * sin), zero, zero])
     sigma = 1e-4 * stroke
-    predicted = [sigma * math.sqrt(np.mean(np.einsum("ip,pq,iq->i", d, covariance, d))) for d in (d_speed, d_acceleration)]
+    predicted = [sigma * math.sqrt(np.mean(np.einsum("ip,pq,iq->i", d, covariance, d)))
+                 for d in (d_speed, d_acceleration)]
     found_speed, found_acceleration = [], []
     for seed in range(40):
         noisy = s + np.random.default_rng(seed).normal(0.0, sigma, s.size)

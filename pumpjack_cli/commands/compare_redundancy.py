@@ -11,9 +11,8 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitSystem,
-                       UnitsOption, card_source, quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 class PhaseMode(str, Enum):
     pin_bore = "pin-bore"

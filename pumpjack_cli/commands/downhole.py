@@ -10,9 +10,9 @@ import typer
 from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, Rotation, RotationOption, ServiceFactorOption, UnitArgument,
-                       UnitSystem, UnitsOption, card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, Rotation, RotationOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 

@@ -12,8 +12,8 @@ from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..errors import PumpjackError
-from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption,
-                       UnitArgument, UnitSystem, UnitsOption, card_source, finite, positive)
+from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
+                       UnitsOption, UnitSystem, card_source, finite, positive)
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")

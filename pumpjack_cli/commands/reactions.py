@@ -8,9 +8,8 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitSystem,
-                       UnitsOption, card_source, quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "balancing_torque")
 

@@ -9,9 +9,9 @@ import typer
 
 from ..analysis.torque import torque as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitSystem,
-                       UnitsOption, card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
          "permissible_load_max")

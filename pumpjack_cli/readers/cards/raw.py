@@ -97,8 +97,8 @@ def unit_of(unit: str | None, kind: str, default_units: str | None, where: str) 
     dimension = KINDS[kind][1]
     if unit is None and default_units is None:
         si, field_unit = DEFAULT_UNITS["si"][dimension].replace("n", "N"), DEFAULT_UNITS["field"][dimension]
-        raise CardError(f"{where} names no unit: write it in the header ({kind}_{si}, {kind.capitalize()} ({field_unit})) "
-                        f"or give --card-units si or field")
+        raise CardError(f"{where} names no unit: write it in the header ({kind}_{si}, {kind.capitalize()} "
+                        f"({field_unit})) or give --card-units si or field")
     key = DEFAULT_UNITS[default_units][dimension] if unit is None else unit.strip().lower().rstrip(".")
     key = UNIT_SPELLINGS.get(key, key)
     if key not in UNITS[dimension]:
