@@ -76,9 +76,9 @@ class RotationFit:
     ``crank_angle`` [rad] of every sample (not wrapped), ``crank_speed`` omega =
     dtheta/dt [rad/s] and ``crank_acceleration`` alpha = d2theta/dt2 [rad/s²] of every
     sample (the fitted series differentiated), ``start_angle`` [rad] the crank angle at
-    the first sample, ``speed`` the mean crank speed [rad/s], ``offset`` c [m] and ``scale`` k [-] of the
-    positions (p = c + k s), ``rms`` the root-mean-square position residual [m] of this
-    fit and ``uniform_rms`` [m] that of the uniform-rotation fit.
+    the first sample, ``speed`` the mean crank speed [rad/s], ``offset`` c [m] and
+    ``scale`` k [-] of the positions (p = c + k s), ``rms`` the root-mean-square position
+    residual [m] of this fit and ``uniform_rms`` [m] that of the uniform-rotation fit.
     """
 
     crank_angle: np.ndarray
@@ -277,8 +277,9 @@ def _angles(params: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray,
     derivatives of the angle by phi (speed over mean speed, acceleration over its square).
 
     theta = theta_c + phi + sum_j (a_j cos j phi + b_j sin j phi), phi = omega t_c, for
-    params = (theta_c, omega, a_1, b_1, ..., a_K, b_K); so dtheta/dphi = 1 + sum_j j (b_j cos j phi
-    - a_j sin j phi) and d2theta/dphi2 = -sum_j j^2 (a_j cos j phi + b_j sin j phi).
+    params = (theta_c, omega, a_1, b_1, ..., a_K, b_K); so
+    dtheta/dphi = 1 + sum_j j (b_j cos j phi - a_j sin j phi) and
+    d2theta/dphi2 = -sum_j j^2 (a_j cos j phi + b_j sin j phi).
     """
     phi = params[1] * tc
     k = np.arange(1, (params.size - 2) // 2 + 1)
@@ -347,8 +348,7 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     uniform fit first, then the first two harmonics, then the rest, each fit started
     from the previous one with the new terms at zero (a large speed variation, which a
     uniform start can miss, is found through the two harmonics that carry most of it).
-    The speed and acceleration at every sample
-    are the derivatives of the fitted series:
+    The speed and acceleration at every sample are the derivatives of the fitted series:
     omega = omega_m (1 + sum_j j (b_j cos j phi - a_j sin j phi)),
     alpha = -omega_m^2 sum_j j^2 (a_j cos j phi + b_j sin j phi), omega_m the mean speed.
 
