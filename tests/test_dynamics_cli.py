@@ -88,7 +88,16 @@ def test_card_drives_the_machine(run_cli, sk8_drivable_card):
     r = steady_state(build_machine(config, card), crank_grid(36), rtol=1e-8)
     assert data["series"]["crank_speed_rad_s"] == r.omega.tolist()
     summary = data["summary"]
-    assert summary["energy_per_cycle_j"] == pytest.approx(summary["rod_work_per_cycle_j"], rel=1e-6)
+    # Energy closure to the integrator's accuracy: DOP853 holds each step's local error of the
+    # energy state within rtol of its scale (12 right-hand-side evaluations a step), so the
+    # cycle's energy is off by at most steps x rtol of the cycle work (steps of the last of the
+    # shots, taken as their mean); the periodicity residual (|omega_end - omega_0| <= rtol
+    # omega_0) adds 2 rtol of the kinetic energy, far less here.
+    convergence = r.summary.convergence
+    steps = convergence.evaluations / (12 * len(convergence.start_speeds))
+    bound = steps * 1e-8
+    assert abs(summary["energy_per_cycle_j"] / summary["rod_work_per_cycle_j"] - 1.0) <= bound
+    assert bound < 1e-4  # the bound itself is tight enough to mean something
     assert "fluid_load_n" not in summary  # the well model's forces only without a card
 
 

@@ -3,7 +3,9 @@
 A card is read without a unit (:func:`pumpjack_cli.readers.cards.read_card`) and placed
 on the unit's crank-angle axis (:func:`pumpjack_cli.core.cards.place_card`) once, by
 :meth:`CardSource.read`; ``--rotation card`` takes the crank speed and acceleration that
-the placement's time fit gives at every sample. The crank speed of a uniform run is the card's own when its time stamps give one (a
+the placement's time fit gives at every sample.
+
+The crank speed of a uniform run is the card's own when its time stamps give one (a
 ``--spm`` that disagrees by more than 2 % is an error that prints both), else
 ``--spm``, else the motor's rated speed through the drive. A run is evaluated on the
 output grid (``--steps``) and on a fixed summary grid, so that the extremes a command

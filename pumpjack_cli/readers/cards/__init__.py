@@ -6,8 +6,8 @@ line of every sample, warnings); putting the card on a unit's crank-angle axis i
 
 **The registry.** :data:`READERS` maps a format name to its :class:`Reader`. Adding a
 format is one module in this package, with a function ``read(text, source,
-default_units, mapping) -> RawCard`` that refuses a bad file with one-line
-:class:`~pumpjack_cli.errors.CardError`\ s, a function ``recognises(text) -> bool`` (True
+default_units, mapping) -> RawCard`` that refuses a bad file with a one-line
+:class:`~pumpjack_cli.errors.CardError`, a function ``recognises(text) -> bool`` (True
 when the content is surely of this format) and the file name endings it claims, plus
 one line in :data:`READERS`. A file whose format is not given is read by the first
 reader that recognises its content, else by the one that claims its name's ending, else
