@@ -14,11 +14,12 @@ from pathlib import Path
 
 import numpy as np
 
-from pumpjack_cli.card_files import read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
+from pumpjack_cli.readers.cards import read_card
 from timing import best_of
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -27,7 +28,7 @@ ROOT = Path(__file__).resolve().parent.parent
 def main() -> None:
     config = load_unit("sk8-3.5-4000")
     spatial, masses = config.geometry.spatial(), config.masses.model()
-    card = read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv", spatial.planar).card
+    card = place(read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv"), spatial.planar).card
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
           f"numpy {np.__version__}")
     for n in (360, 10_000, 100_000):

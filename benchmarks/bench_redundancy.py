@@ -20,11 +20,12 @@ from pathlib import Path
 
 import numpy as np
 
-from pumpjack_cli.card_files import read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load
 from pumpjack_cli.core.beam.redundancy import JointCompliance, PinTilts, real_mechanism
 from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.readers.cards import read_card
 from timing import best_of
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -37,7 +38,7 @@ def main() -> None:
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
     actual = dataclasses.replace(ideal, crank_phase_offset=np.radians(0.1))
-    card = read_card(ROOT / "samples" / f"{UNIT}-card.csv", ideal.planar)
+    card = place(read_card(ROOT / "samples" / f"{UNIT}-card.csv"), ideal.planar)
     masses, section = config.masses.model(), config.pitman_section.model()
     for label, joints in (("rigid pins", JointCompliance()), ("1 mrad clearance", JointCompliance(
             crank_pin_clearance=1e-3, equalizer_pin_clearance=1e-3))):

@@ -16,13 +16,14 @@ import platform  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
-from pumpjack_cli.card_files import read_card  # noqa: E402
+from pumpjack_cli.analysis.card_runs import place  # noqa: E402
 from pumpjack_cli.config import load_unit  # noqa: E402
 from pumpjack_cli.core.beam.balance import recommend_counterbalance  # noqa: E402
 from pumpjack_cli.core.beam.card import card_load  # noqa: E402
 from pumpjack_cli.core.beam.counterbalance import counterbalance_from_masses  # noqa: E402
 from pumpjack_cli.core.beam.torque import exact_net_torque, torque_components  # noqa: E402
 from pumpjack_cli.core.sampling import crank_grid  # noqa: E402
+from pumpjack_cli.readers.cards import read_card  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -41,7 +42,7 @@ def main() -> None:
     linkage, masses = unit.geometry.mechanism(), unit.masses.model()
     spatial = unit.geometry.spatial()
     theta = crank_grid(3600)
-    load = card_load(read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv", linkage).card, theta)
+    load = card_load(place(read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv"), linkage).card, theta)
     balance = counterbalance_from_masses(linkage, masses)
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}")
     print(f"API components, 3600 angles: {best(lambda: torque_components(linkage, theta, load, balance)) * 1e3:.2f} ms")

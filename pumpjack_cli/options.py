@@ -58,12 +58,25 @@ UnitsOption = Annotated[
 UnitArgument = Annotated[str, typer.Argument(help="bundled unit name (see `pumpjack units`) or path to a unit file")]
 CardOption = Annotated[Path, typer.Option(
     "--card", help="dynamometer card CSV, or - for standard input (see docs/cards.md)", dir_okay=False)]
+
 CardColumnsOption = Annotated[str | None, typer.Option(
     "--card-columns", help="which card columns to read, for headers the reader does not know: "
     "'position=NAME,load=NAME[,time=NAME]' or 'crank_angle=NAME,load=NAME'")]
 CardUnitsOption = Annotated[UnitSystem | None, typer.Option(
     "--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf) "
     "[default: such a column is refused]")]
+
+
+def card_source(card: Path, units: UnitSystem | None, columns: str | None):
+    """The card options as the run layer's :class:`~pumpjack_cli.analysis.card_runs.CardSource`,
+    the ``--card-columns`` text parsed into its mapping (a bad text: one-line CardError)."""
+    from .analysis.card_runs import CardSource  # numpy: only when a command runs
+    from .readers.cards import parse_card_columns
+
+    mapping = None if columns is None else parse_card_columns(columns)
+    return CardSource(card, None if units is None else units.value, mapping)
+
+
 def finite(value: float | None) -> float | None:
     """Refuse NaN and infinity in a float option (typer's range check lets NaN through)."""
     if value is not None and not math.isfinite(value):

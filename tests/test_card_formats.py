@@ -17,9 +17,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pumpjack_cli.card_files import CardReading, parse_card_columns, read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
+from pumpjack_cli.core.cards import PlacedCard
 from pumpjack_cli.quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
+from pumpjack_cli.readers.cards import parse_card_columns, read_card
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
@@ -27,7 +29,7 @@ SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 
 #: The sample's columns in SI, read with numpy (independently of the reader).
 TIME, POSITION, LOAD = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True) * [[1.0], [1.0], [1e3]]
-REFERENCE = read_card(SAMPLE, SK8)
+REFERENCE = place(read_card(SAMPLE), SK8)
 
 #: Unit spelling -> factor to SI, from the definitions of units.py ([NIST811]); lb is lbf for a force column.
 FORCE = {"N": 1.0, "kN": 1e3, "lbf": POUND_FORCE, "lb": POUND_FORCE, "lbs": POUND_FORCE, "klb": 1e3 * POUND_FORCE,
@@ -47,12 +49,12 @@ def sample_text(force="kN", length="m", time="s", **kwargs) -> str:
                  [TIME / TIME_UNITS[time], POSITION / LENGTH[length], LOAD / FORCE[force]], **kwargs)
 
 
-def read_text(text: str | bytes, linkage=SK8, **kwargs) -> CardReading:
+def read_text(text: str | bytes, linkage=SK8, **kwargs) -> PlacedCard:
     stream = io.BytesIO(text) if isinstance(text, bytes) else io.StringIO(text)
-    return read_card("-", linkage, stream=stream, **kwargs)
+    return place(read_card("-", stream=stream, **kwargs), linkage)
 
 
-def assert_same_card(reading: CardReading, reference: CardReading = REFERENCE) -> None:
+def assert_same_card(reading: PlacedCard, reference: PlacedCard = REFERENCE) -> None:
     assert np.allclose(reading.load, LOAD, rtol=1e-12, atol=0)
     assert np.allclose(reading.position, POSITION, rtol=1e-12, atol=1e-15)
     if reading.time is not None:
@@ -146,7 +148,7 @@ def test_mapped_cyrillic_headers_with_units_and_decimal_commas():
 
 def test_mapped_columns_without_units_take_the_default_units():
     text = table(["Weg", "Kraft"], [POSITION / INCH, LOAD / POUND_FORCE])
-    reading = read_text(text, columns={"position": "Weg", "load": "Kraft"}, default_units="field")
+    reading = read_text(text, columns={"position": "Weg", "load": "Kraft"}, units="field")
     assert np.allclose(reading.position, POSITION, rtol=1e-12) and np.allclose(reading.load, LOAD, rtol=1e-12)
 
 
@@ -161,7 +163,7 @@ def test_crank_angle_card_in_radians_with_index():
 def test_file_and_stdin_agree(tmp_path):
     path = tmp_path / "card.csv"
     path.write_bytes(ENCODINGS["bom-crlf"](sample_text(delimiter=";", decimal=",")))
-    from_file = read_card(path, SK8)
+    from_file = place(read_card(path), SK8)
     from_stdin = read_text(path.read_bytes())
     assert from_stdin.source == "<stdin>" and from_file.source == str(path)
     assert np.array_equal(from_file.card.load, from_stdin.card.load)
@@ -237,5 +239,5 @@ def test_a_column_without_a_unit_needs_the_card_units(header, culprit, example):
     assert f"line 1: {culprit} names no unit: write it in the header ({example})" in str(error.value)
     assert "--card-units si or field" in str(error.value)
     given = read_text(table(["time", "position", "load"], [TIME, POSITION / INCH, LOAD / POUND_FORCE]),
-                      default_units="field")
+                      units="field")
     assert_same_card(given)

@@ -18,9 +18,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pumpjack_cli import card_files
-from pumpjack_cli.card_files import CardError, read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
+from pumpjack_cli.errors import CardError
+from pumpjack_cli.readers import cards
+from pumpjack_cli.readers.cards import delimited, parse_card_columns
 
 ROOT = Path(__file__).resolve().parent.parent
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
@@ -147,6 +149,11 @@ CASES += [
 ]
 
 
+def read(path, unit=SK8, units: str | None = None, **kwargs):
+    """A card file read without a unit (:func:`pumpjack_cli.readers.cards.read_card`), then placed on ``unit``."""
+    return place(cards.read_card(path, units=units, **kwargs), unit)
+
+
 def check(error: pytest.ExceptionInfo, source: str, fragment: str) -> None:
     message = str(error.value)
     assert "\n" not in message and "\r" not in message
@@ -159,7 +166,7 @@ def test_hostile_file(tmp_path, content, fragment):
     path = tmp_path / "card.csv"
     (path.write_bytes if isinstance(content, bytes) else lambda text: path.write_text(text, encoding="utf-8"))(content)
     with pytest.raises(CardError) as error:
-        read_card(path, SK8)
+        read(path, SK8)
     check(error, str(path), fragment)
 
 
@@ -167,7 +174,7 @@ def test_hostile_file(tmp_path, content, fragment):
 def test_hostile_stdin(content, fragment):
     stream = io.BytesIO(content) if isinstance(content, bytes) else io.StringIO(content)
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=stream)
+        read("-", SK8, stream=stream)
     check(error, "<stdin>", fragment)
 
 
@@ -184,7 +191,7 @@ def fifo(tmp_path):
 def sparse(tmp_path):
     path = tmp_path / "huge.csv"
     with open(path, "wb") as file:
-        file.truncate(card_files.MAX_BYTES + 1)  # sparse: the limit is checked before a byte is read
+        file.truncate(cards.MAX_BYTES + 1)  # sparse: the limit is checked before a byte is read
     return path
 
 
@@ -195,7 +202,7 @@ PATHS = {
     "dev-null": (lambda tmp_path: Path("/dev/null"), "is a device, not a card file"),
     "missing": (lambda tmp_path: tmp_path / "nope.csv", "cannot read: no such file"),
     "name-too-long": (lambda tmp_path: tmp_path / ("x" * 5000), "cannot read: file name too long"),
-    "oversize": (sparse, f"{card_files.MAX_BYTES + 1:,} bytes; a card file is at most {card_files.MAX_BYTES:,} bytes"),
+    "oversize": (sparse, f"{cards.MAX_BYTES + 1:,} bytes; a card file is at most {cards.MAX_BYTES:,} bytes"),
 }
 
 
@@ -205,17 +212,17 @@ def test_paths_that_are_not_card_files(tmp_path, name):
     make, fragment = PATHS[name]
     path = make(tmp_path)
     with pytest.raises(CardError) as error:
-        read_card(path, SK8)
+        read(path, SK8)
     check(error, str(path), fragment)
 
 
 def test_name_with_control_characters_stays_on_one_line(tmp_path):
     path = tmp_path / "two\nlines.csv"
     with pytest.raises(CardError) as error:
-        read_card(path, SK8)
+        read(path, SK8)
     check(error, str(path).replace("\n", "\\n"), "cannot read")
     with pytest.raises(CardError, match="the name holds a NUL character"):
-        read_card("a\0b.csv", SK8)
+        read("a\0b.csv", SK8)
 
 
 @pytest.mark.skipif(os.name != "posix" or os.geteuid() == 0, reason="root reads any file")
@@ -224,7 +231,7 @@ def test_permission_denied(tmp_path):
     path.write_text(card(), encoding="utf-8")
     path.chmod(0)
     with pytest.raises(CardError) as error:
-        read_card(path, SK8)
+        read(path, SK8)
     check(error, str(path), "cannot read: permission denied")
 
 
@@ -235,16 +242,16 @@ class Terminal(io.StringIO):
 
 def test_stdin_terminal_is_refused():
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=Terminal(card()))
+        read("-", SK8, stream=Terminal(card()))
     check(error, "<stdin>", "is a terminal")
 
 
 def test_stdin_is_read_with_a_bounded_size(monkeypatch):
     """An endless pipe (here a stream longer than the limit) is cut at MAX_BYTES + 1 and refused."""
-    monkeypatch.setattr(card_files, "MAX_BYTES", 1000)
+    monkeypatch.setattr(cards, "MAX_BYTES", 1000)
     stream = io.BytesIO(card().encode())
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=stream)
+        read("-", SK8, stream=stream)
     check(error, "<stdin>", "more than 1,000 bytes")
     assert stream.tell() == 1001
 
@@ -252,14 +259,14 @@ def test_stdin_is_read_with_a_bounded_size(monkeypatch):
 def test_lines_limit_is_checked_before_splitting():
     """2.5 million lines of 4 bytes (under 10 MB) are refused from a count, not split into lists."""
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=io.BytesIO(b"position,load\n" + b"1,2\n" * 2_499_000))
-    check(error, "<stdin>", f"more than {card_files.MAX_LINES} lines")
+        read("-", SK8, stream=io.BytesIO(b"position,load\n" + b"1,2\n" * 2_499_000))
+    check(error, "<stdin>", f"more than {delimited.MAX_LINES} lines")
 
 
 def test_points_limit(monkeypatch):
-    monkeypatch.setattr(card_files, "MAX_POINTS", 100)
+    monkeypatch.setattr(delimited, "MAX_POINTS", 100)
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=io.StringIO(card()))
+        read("-", SK8, stream=io.StringIO(card()))
     check(error, "<stdin>", "180 points; a card has at most 100")
 
 
@@ -274,13 +281,13 @@ MAPPINGS = [
 @pytest.mark.parametrize(("mapping", "fragment"), MAPPINGS)
 def test_bad_mappings(mapping, fragment):
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, "si", stream=io.StringIO(MAPPED), columns=mapping)
+        read("-", SK8, "si", stream=io.StringIO(MAPPED), columns=mapping)
     check(error, "<stdin>", fragment)
 
 
 def test_mapped_header_with_a_wrong_unit():
     with pytest.raises(CardError) as error:
-        read_card("-", SK8, stream=io.StringIO("Weg (kg),Kraft\n1,2\n"), columns={"position": "Weg (kg)", "load": "Kraft"})
+        read("-", SK8, stream=io.StringIO("Weg (kg),Kraft\n1,2\n"), columns={"position": "Weg (kg)", "load": "Kraft"})
     check(error, "<stdin>", "line 1: column 1 'Weg (kg)' has unit 'kg', not a unit of length")
 
 
@@ -294,5 +301,5 @@ def test_mapped_header_with_a_wrong_unit():
 ])
 def test_bad_card_columns_option(text, fragment):
     with pytest.raises(CardError) as error:
-        card_files.parse_card_columns(text)
+        parse_card_columns(text)
     assert "\n" not in str(error.value) and fragment in str(error.value)

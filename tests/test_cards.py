@@ -9,11 +9,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pumpjack_cli.card_files import CardError, read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.errors import CardError
+from pumpjack_cli.readers.cards import read_card
 
 ROOT = Path(__file__).resolve().parent.parent
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
@@ -28,6 +30,11 @@ def angle_misfit(found: np.ndarray, expected: np.ndarray) -> float:
     """Largest circular distance [rad] from a found crank angle to the nearest expected one."""
     d = (found[:, None] - expected[None, :] + np.pi) % (2 * np.pi) - np.pi
     return float(np.max(np.min(np.abs(d), axis=1)))
+
+
+def read(path: Path, unit=SK8, units: str | None = None):
+    """A card file read without a unit, then placed on ``unit``'s crank-angle axis."""
+    return place(read_card(path, units=units), unit)
 
 
 def write(tmp_path: Path, text: str, name: str = "card.csv") -> Path:
@@ -45,7 +52,7 @@ def test_position_card_maps_back_to_its_crank_angles(tmp_path):
     order from crank angle 0, come back as those angles (inversion on each branch)."""
     run = exact_run()
     rows = "\n".join(f"{s},{w}" for s, w in zip(run.rod.position, load_of(run.crank_angle)))
-    reading = read_card(write(tmp_path, "position_m,load_n\n" + rows), SK8)
+    reading = read(write(tmp_path, "position_m,load_n\n" + rows))
     card = reading.card
     assert reading.warnings == ()
     # The card's lowest and highest samples are not exactly the dead positions (1 deg
@@ -82,7 +89,7 @@ def test_layouts_and_units_give_the_same_card(tmp_path):
     probe = crank_grid(360)
     reference = load_of(probe)
     for name, text in files.items():
-        card = read_card(write(tmp_path, text, f"{name}.csv"), SK8).card
+        card = read(write(tmp_path, text, f"{name}.csv")).card
         assert np.allclose(card_load(card, probe), reference, rtol=3e-3), name
 
 
@@ -90,10 +97,10 @@ def test_default_units_for_bare_headers(tmp_path):
     run = exact_run()
     text = "position,load\n" + "\n".join(f"{p / INCH},{x / LBF}" for p, x in zip(run.rod.position, load_of(run.crank_angle)))
     path = write(tmp_path, text)
-    field = read_card(path, SK8, "field").card
+    field = read(path, units="field").card
     assert np.allclose(card_load(field, run.crank_angle), load_of(run.crank_angle), rtol=3e-3)
     with pytest.raises(CardError, match="stroke"):  # read as metres, the stroke is 39 times too long
-        read_card(path, SK8, "si")
+        read(path, units="si")
 
 
 def test_comments_and_a_closed_card(tmp_path):
@@ -101,14 +108,14 @@ def test_comments_and_a_closed_card(tmp_path):
     pairs = list(zip(run.rod.position, load_of(run.crank_angle)))
     pairs.append(pairs[0])  # closed: the first point again
     text = "# measured 2026-11-01\nposition_m,load_n\n" + "\n".join(f"{p},{x}" for p, x in pairs)
-    card = read_card(write(tmp_path, text), SK8).card
+    card = read(write(tmp_path, text)).card
     assert card.crank_angle.size == run.crank_angle.size
 
 
 def test_small_stroke_mismatch_is_scaled_with_a_warning(tmp_path):
     run = exact_run()
     text = "position_m,load_n\n" + "\n".join(f"{0.97 * p},{x}" for p, x in zip(run.rod.position, load_of(run.crank_angle)))
-    reading = read_card(write(tmp_path, text), SK8)
+    reading = read(write(tmp_path, text))
     assert len(reading.warnings) == 1 and "-3.0 %" in reading.warnings[0]
     assert angle_misfit(reading.card.crank_angle, run.crank_angle) < np.radians(0.5)
 
@@ -139,7 +146,7 @@ BROKEN_CARDS = [
 def test_broken_cards(tmp_path, text, fragment):
     path = write(tmp_path, text)
     with pytest.raises(CardError) as info:
-        read_card(path, SK8)
+        read(path)
     message = str(info.value)
     assert message.startswith(str(path)) and "\n" not in message
     assert fragment in message
@@ -155,7 +162,7 @@ def test_every_broken_card_exits_2_with_one_line(run_cli, tmp_path, text, fragme
 
 def test_missing_card_file(tmp_path):
     with pytest.raises(CardError, match="cannot read"):
-        read_card(tmp_path / "nope.csv", SK8)
+        read(tmp_path / "nope.csv")
 
 
 def test_sample_cards_are_what_the_script_makes():
@@ -173,6 +180,6 @@ def test_sample_cards_fit_their_units(name):
     peak stays below the unit's rated polished-rod load (80, 120 kN; 13 300 lbf)."""
     rated = {"sk8-3.5-4000": 80e3, "7sk12-2.5-5600": 120e3, "c-114d-133-54": 13300 * LBF}
     linkage = load_unit(name).geometry.mechanism()
-    reading = read_card(ROOT / "samples" / f"{name}-card.csv", linkage)
+    reading = read(ROOT / "samples" / f"{name}-card.csv", linkage)
     assert reading.warnings == ()
     assert 0 < reading.card.load.min() < reading.card.load.max() < rated[name]

@@ -9,11 +9,12 @@ import math
 
 import pytest
 
-from pumpjack_cli.card_files import read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.periodic import steady_state
 from pumpjack_cli.core.sampling import crank_grid
+from pumpjack_cli.readers.cards import read_card
 
 SK8 = "sk8-3.5-4000"
 
@@ -83,7 +84,7 @@ def test_card_drives_the_machine(run_cli, sk8_drivable_card):
     data = json.loads(out)
     assert "card sk8-drivable-card.csv" in data["title"]
     config = load_unit(SK8)
-    card = read_card(sk8_drivable_card, config.geometry.mechanism()).card
+    card = place(read_card(sk8_drivable_card), config.geometry.mechanism()).card
     r = steady_state(build_machine(config, card), crank_grid(36), rtol=1e-8)
     assert data["series"]["crank_speed_rad_s"] == r.omega.tolist()
     summary = data["summary"]

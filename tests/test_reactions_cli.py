@@ -9,13 +9,14 @@ import json
 import numpy as np
 import pytest
 
-from pumpjack_cli.card_files import read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load
 from pumpjack_cli.analysis.reactions import SUMMARY_STEPS
 from pumpjack_cli.core.sampling import crank_grid, extremes, peak
 from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
 from pumpjack_cli.core.constants import STANDARD_GRAVITY
+from pumpjack_cli.readers.cards import read_card
 
 SK8 = "sk8-3.5-4000"
 
@@ -31,7 +32,7 @@ def library(card, steps=360):
     config = load_unit(SK8)
     spatial = config.geometry.spatial()
     theta = crank_grid(steps)
-    reading = read_card(card, spatial.planar)
+    reading = place(read_card(card), spatial.planar)
     load = card_load(reading.card, theta)
     _, r = rational_mechanism(spatial, config.masses.model(), theta, reading.speed, 0.0, load)
     return theta, load, r
@@ -149,7 +150,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     series = json.loads(out)["series"]
     config = load_unit(SK8)
     theta = crank_grid(90)
-    card = read_card(sk8_drivable_card, config.geometry.mechanism()).card
+    card = place(read_card(sk8_drivable_card), config.geometry.mechanism()).card
     machine = build_machine(config, card)
     state = steady_state(machine, theta)
     assert series["crank_speed_rad_s"] == state.omega.tolist()

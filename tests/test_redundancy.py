@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 import scipy.linalg
 
-from pumpjack_cli.card_files import read_card
+from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import Deviations, load_unit
 from pumpjack_cli.core.beam import redundancy
 from pumpjack_cli.core.beam.card import card_load
@@ -24,6 +24,7 @@ from pumpjack_cli.core.sampling import crank_grid, peak
 from pumpjack_cli.core.beam.kinetostatics import applied_loads, rational_mechanism
 from pumpjack_cli.core.beam.redundancy import PinTilts, real_mechanism
 from pumpjack_cli.core.beam.spatial import spatial_motion
+from pumpjack_cli.readers.cards import read_card
 
 ROOT = Path(__file__).resolve().parent.parent
 UNIT = "7sk12-2.5-5600"
@@ -35,7 +36,7 @@ def setup():
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
     theta = crank_grid(72)
-    card = read_card(ROOT / "samples" / f"{UNIT}-card.csv", ideal.planar).card
+    card = place(read_card(ROOT / "samples" / f"{UNIT}-card.csv"), ideal.planar).card
     return config, ideal, config.masses.model(), config.pitman_section.model(), theta, card_load(card, theta)
 
 
@@ -241,7 +242,7 @@ def test_command_deviation_options_reach_the_solver(run_cli):
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
     theta = crank_grid(REDUNDANCY_SUMMARY_STEPS)
-    reading = read_card(CARD, ideal.planar)
+    reading = place(read_card(CARD), ideal.planar)
     load = card_load(reading.card, theta)
     actual = dataclasses.replace(ideal, pitman_length_offset=0.002)
     masses, section = config.masses.model(), config.pitman_section.model()
@@ -330,7 +331,7 @@ def test_kinematic_part_is_the_rational_mechanisms_own_change(run_cli):
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
     theta = crank_grid(36)
-    reading = read_card(CARD, ideal.planar)
+    reading = place(read_card(CARD), ideal.planar)
     load = card_load(reading.card, theta)
     masses = config.masses.model()
     actual = dataclasses.replace(ideal, crank_phase_offset=np.radians(0.1))

@@ -1,5 +1,4 @@
-"""Torque components with non-uniform crank speed (Takacs, Kis & Koncz 2016) and the
-crank speed and acceleration from time stamps.
+"""Torque components with non-uniform crank speed (Takacs, Kis & Koncz 2016).
 
 The components are checked against the spatial kinetostatics with inertia (an
 independent model: d'Alembert forces and moments of every link) and the
@@ -16,10 +15,9 @@ import pytest
 
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.counterbalance import Counterbalance, counterbalance_from_masses
-from pumpjack_cli.core.beam.torque import (api_net_torque, beam_group_inertia, crank_group_inertia,
-                                           crank_rates_from_time, exact_net_torque, torque_components)
+from pumpjack_cli.core.beam.torque import (api_net_torque, beam_group_inertia, crank_group_inertia, exact_net_torque,
+                                           torque_components)
 from pumpjack_cli.core.sampling import crank_grid
-from pumpjack_cli.errors import TorqueError
 
 BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
 THETA = crank_grid(720)
@@ -91,39 +89,6 @@ def test_articulating_inertia_is_the_rate_of_beam_kinetic_energy():
     parts = torque_components(lk, theta(t) % (2 * np.pi), np.zeros_like(t), Counterbalance(0.0, 0.0),
                               beam_inertia=ib, omega=omega, alpha=alpha)
     assert parts.articulating_inertia * omega == pytest.approx(power, rel=1e-6, abs=1e-6 * np.max(np.abs(power)))
-
-
-def test_crank_rates_from_time_recover_an_analytic_motion():
-    """theta(t) = W t + 0.05 sin(W t) + 0.02 cos(2 W t + 0.4), sampled unevenly in time:
-    omega and alpha from the analytic derivatives. The fit represents t(theta) by 16
-    harmonics; the series of the inverse function converges geometrically (ratio about
-    the 0.09 speed modulation), so the residual is far below the 1e-7 tolerance."""
-    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
-    w = 1.1
-    period = 2 * np.pi / w
-    u = np.linspace(0.0, 1.0, 240, endpoint=False)
-    t = period * (u + 0.1 * u * (1 - u))            # uneven, increasing, within one period
-
-    def theta(x):
-        return w * x + 0.05 * np.sin(w * x) + 0.02 * np.cos(2 * w * x + 0.4)
-
-    omega_true = w * (1 + 0.05 * np.cos(w * t) - 0.04 * np.sin(2 * w * t + 0.4))
-    alpha_true = w**2 * (-0.05 * np.sin(w * t) - 0.08 * np.cos(2 * w * t + 0.4))
-    omega, alpha = crank_rates_from_time(lk, t, theta(t) % (2 * np.pi), harmonics=16)
-    assert omega == pytest.approx(omega_true, rel=1e-7)
-    assert alpha == pytest.approx(alpha_true, abs=1e-7 * w**2)
-
-
-@pytest.mark.parametrize("time, angle, harmonics, message", [
-    (np.array([0.0, 1.0, 1.0, 2.0, 3.0, 4.0]), np.linspace(0, 5, 6), 1, "time must increase"),
-    (np.arange(6.0), np.linspace(5, 0, 6), 1, "does not advance"),
-    (np.arange(6.0), np.linspace(0, 5, 6), 3, "3 harmonics need at least 8 samples"),
-    (np.arange(6.0), np.array([0, 1, 2, np.nan, 4, 5.0]), 1, "not finite"),
-])
-def test_crank_rates_from_time_rejects_bad_input(time, angle, harmonics, message):
-    lk = load_unit("sk8-3.5-4000").geometry.mechanism()
-    with pytest.raises(TorqueError, match=message):
-        crank_rates_from_time(lk, time, angle, harmonics)
 
 
 @pytest.mark.parametrize("name", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])

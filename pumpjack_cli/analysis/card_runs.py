@@ -1,5 +1,10 @@
 """A dynamometer card on crank-angle grids, with uniform or dynamic crank rotation.
 
+A card is read without a unit (:func:`pumpjack_cli.readers.cards.read_card`) and placed
+on the unit's crank-angle axis (:func:`pumpjack_cli.core.cards.place_card`) once, by
+:meth:`CardSource.read`; ``--rotation card`` takes the crank speed and acceleration that
+the placement's time fit gives at every sample.
+
 The crank speed of a uniform run is the card's own when its time stamps give one (a
 ``--spm`` that disagrees by more than 2 % is an error that prints both), else
 ``--spm``, else the motor's rated speed through the drive. A run is evaluated on the
@@ -9,25 +14,26 @@ reports do not depend on ``--steps``.
 
 from __future__ import annotations
 
-import functools
+import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from ..card_files import CardReading, check_speed, parse_card_columns, read_card
 from ..core.beam.card import card_load
-from ..core.beam.linkage import Linkage
-from ..core.beam.torque import crank_rates_from_time
+from ..core.cards import PlacedCard, place_card
 from ..core.dynamics.periodic import steady_state
+from ..core.mechanism import Mechanism
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import PumpjackError, warn
+from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
+from ..readers.cards import RawCard, read_card
 from .inputs import crank_speed
 from .machine import machine
 
-#: Harmonics of the time-against-angle fit of a card's time stamps (--rotation card).
-CARD_HARMONICS = 4
+#: --spm and the card's time stamps may differ by this fraction; the card's speed wins.
+SPEED_TOLERANCE = 0.02
 #: Steps of the integration t = int dtheta / omega over one revolution.
 FINE_STEPS = 3600
 #: Crank-angle points per time sample when a card is put on a uniform time grid.
@@ -42,25 +48,75 @@ ROTATIONS = ("uniform", "card", "dynamic", "auto")
 @dataclass(frozen=True)
 class CardSource:
     """Where a card comes from: a path (``-`` for standard input), the units of columns
-    whose header names none (None: such a column is refused), and an optional
-    ``--card-columns`` mapping text."""
+    whose header names none (None: such a column is refused), and an optional column
+    mapping kind -> header (``--card-columns``, parsed)."""
 
     path: Path
     units: str | None = None
-    columns: str | None = None
+    columns: Mapping[str, str] | None = None
 
-    def read(self, linkage: Linkage) -> CardReading:
-        """The card on the unit's crank-angle axis; the reader's warnings are noted (:func:`~pumpjack_cli.errors.warn`)."""
-        mapping = None if self.columns is None else parse_card_columns(self.columns)
-        reading = read_card(self.path, linkage, self.units, columns=mapping)
-        for warning in reading.warnings:
+    def read(self, mechanism: Mechanism) -> PlacedCard:
+        """The card read and placed on the unit's crank-angle axis; the warnings are noted
+        (:func:`~pumpjack_cli.errors.warn`)."""
+        placed = place(read_card(self.path, units=self.units, columns=self.columns), mechanism)
+        for warning in placed.warnings:
             warn(warning)
-        return reading
+        return placed
 
     @property
     def name(self) -> str:
         """The card's name for titles."""
         return "<stdin>" if str(self.path) == "-" else self.path.name
+
+
+def place(raw: RawCard, mechanism: Mechanism) -> PlacedCard:
+    """A raw card on the crank-angle axis of ``mechanism`` (:func:`~pumpjack_cli.core.cards.place_card`),
+    its messages in the file's own position unit."""
+    return place_card(mechanism, raw.load, crank_angle=raw.crank_angle, position=raw.position, time=raw.time,
+                      source=raw.source, position_unit=raw.column_units.get("position", ("m", 1.0)),
+                      reversed=raw.reversed, warnings=raw.warnings)
+
+
+def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
+    """The crank speed to use [rad/s]: the card's, checked against an ``--spm`` given too.
+
+    Parameters
+    ----------
+    card_speed : float or None
+        Crank speed fitted to the card's time stamps [rad/s] (``PlacedCard.speed``).
+    spm_option : float or None
+        Crank speed given on the command line [rad/s] (``--spm`` converted).
+    source : str
+        The card's name for the message.
+
+    Returns
+    -------
+    float or None
+        ``card_speed`` when there is one (the time stamps are the measurement),
+        otherwise ``spm_option``.
+
+    Raises
+    ------
+    CardError
+        When both are given and differ by more than :data:`SPEED_TOLERANCE` (2 %);
+        the message prints both in strokes per minute.
+
+    >>> check_speed(0.6283, 0.63)            # 6.00 and 6.02 strokes/min: the card wins
+    0.6283
+    >>> check_speed(None, 0.63)
+    0.63
+    """
+    for name, value in (("card speed", card_speed), ("--spm", spm_option)):
+        if value is not None and not (math.isfinite(value) and value > 0):
+            raise CardError(f"{name} {value!r}: not a positive speed")
+    if card_speed is None or spm_option is None:
+        return spm_option if card_speed is None else card_speed
+    mismatch = spm_option / card_speed - 1.0
+    if abs(mismatch) > SPEED_TOLERANCE:
+        raise CardError(f"--spm {spm_option * 30.0 / math.pi:.4g} disagrees with the time stamps of {source} "
+                        f"({card_speed * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; "
+                        f"drop --spm or check the card")
+    return card_speed
 
 
 @dataclass(frozen=True)
@@ -82,28 +138,18 @@ class CardRun:
         return 2.0 * np.pi / self.period
 
 
-def uniform_speed(unit, reading: CardReading, spm: float | None) -> float:
+def uniform_speed(unit, reading: PlacedCard, spm: float | None) -> float:
     """Crank speed [1/s] of a uniform run: the card's time stamps, else ``--spm``, else the drive."""
     option = None if spm is None else parse_quantity(f"{spm} spm", "rotational_speed")
     speed = check_speed(reading.speed, option, reading.source)
     return crank_speed(unit, None) if speed is None else speed
 
 
-@functools.lru_cache(maxsize=8)
-def _crank_rates(linkage: Linkage, time: bytes, crank_angle: bytes) -> tuple[np.ndarray, np.ndarray]:
-    """The fit of :func:`crank_rates_from_time` for a card's samples, kept (read-only) for the
-    next analysis of the same card (a batch runs torque and downhole on every card)."""
-    rates = crank_rates_from_time(linkage, np.frombuffer(time), np.frombuffer(crank_angle), CARD_HARMONICS)
-    for values in rates:
-        values.flags.writeable = False
-    return rates
-
-
-def _card_rotations(linkage: Linkage, reading: CardReading, thetas: list[np.ndarray]) -> list[CardRun]:
-    """The crank speed and acceleration the card's time stamps give ([Takacs2016]), on each grid."""
+def _card_rotations(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]:
+    """The crank speed and acceleration fitted to the card's time stamps ([Takacs2016]), on each grid."""
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --rotation card needs a card with time stamps")
-    omega_s, alpha_s = _crank_rates(linkage, reading.time.tobytes(), reading.crank_angle.tobytes())
+    omega_s, alpha_s = reading.crank_speed, reading.crank_acceleration
     order = np.argsort(reading.crank_angle)
     angles = reading.crank_angle[order]
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
@@ -115,10 +161,10 @@ def _card_rotations(linkage: Linkage, reading: CardReading, thetas: list[np.ndar
                     float(elapsed[-1]), "card") for theta in thetas]
 
 
-def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, grids: tuple[int, ...],
-              rotation: str) -> tuple[CardReading, list[CardRun]]:
+def card_runs(unit, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
+              rotation: str) -> tuple[PlacedCard, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
-    reading = source.read(linkage)
+    reading = source.read(mechanism)
     thetas = [crank_grid(steps) for steps in grids]
     if rotation == "auto":
         rotation = "uniform" if reading.time is None or spm is not None else "card"
@@ -131,7 +177,7 @@ def card_runs(unit, linkage: Linkage, source: CardSource, spm: float | None, gri
         raise PumpjackError(f"--spm sets a uniform crank speed; with --rotation {rotation} the "
                             f"{'card' if rotation == 'card' else 'motor'} sets the speed")
     if rotation == "card":
-        return reading, _card_rotations(linkage, reading, thetas)
+        return reading, _card_rotations(reading, thetas)
     state = steady_state(machine(unit, reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:
@@ -155,13 +201,13 @@ class TimeCard:
     period: float
 
 
-def time_card(unit, linkage: Linkage, source: CardSource, spm: float | None, samples: int,
-              rotation: str) -> tuple[CardReading, TimeCard]:
+def time_card(unit, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
+              rotation: str) -> tuple[PlacedCard, TimeCard]:
     """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
     from the card's time stamps or from the equation of motion) is resolved on a fine
     crank-angle grid and inverted, so a card of positions only is usable through the
     unit's exact kinematics."""
-    reading, (run,) = card_runs(unit, linkage, source, spm, (RESAMPLE_FACTOR * samples,), rotation)
+    reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), rotation)
     time = np.arange(samples) * (run.period / samples)
     theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
-    return reading, TimeCard(time, theta, linkage.rod_position(theta), card_load(reading.card, theta), run.period)
+    return reading, TimeCard(time, theta, mechanism.rod_position(theta), card_load(reading.card, theta), run.period)

@@ -11,9 +11,8 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 class PhaseMode(str, Enum):
     pin_bore = "pin-bore"
@@ -81,5 +80,5 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value,
+    sink.emit(run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value,
                   given, given_joints), SHOWN)

@@ -7,13 +7,12 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.card_runs import CardSource
 from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, Rotation, RotationOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
-                       finite)
+                       card_source, finite)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -46,6 +45,6 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, rotation.value, method.value,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, rotation.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -8,13 +8,12 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.card_runs import CardSource
 from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..errors import PumpjackError
 from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
-                       UnitsOption, UnitSystem, finite, positive)
+                       UnitsOption, UnitSystem, card_source, finite, positive)
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -65,7 +64,7 @@ def dynamics(
         for given, option in ((damping, "--damping"), (samples, "--samples")):
             if given is not None:
                 raise PumpjackError(f"{option} applies to --well-model wave")
-        source = None if card is None else CardSource(card, card_units, card_columns)
+        source = None if card is None else card_source(card, card_units, card_columns)
         sink.emit(run(load_unit(unit), source, rtol, DEFAULT_POINTS if steps is None else steps), SHOWN)
         return
     if card is not None:

@@ -8,9 +8,8 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..analysis.card_runs import CardSource
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
-                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity)
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
 
@@ -38,6 +37,6 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value, weights=not no_weights,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

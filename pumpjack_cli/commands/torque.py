@@ -7,11 +7,11 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.card_runs import CardSource
 from ..analysis.torque import torque as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, finite)
+                       PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
          "permissible_load_max")
@@ -55,7 +55,7 @@ def torque(
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), CardSource(card, card_units, card_columns), spm, steps, rotation.value,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

@@ -205,6 +205,10 @@ class Mechanism(Protocol):
         """The bottom and top of the stroke (crank angles [rad], stroke [m])."""
         ...
 
+    def turned(self) -> Mechanism:
+        """The same unit turning the other way (its rotation reversed)."""
+        ...
+
     @property
     def stroke(self) -> float:
         """The exact polished-rod stroke [m]."""

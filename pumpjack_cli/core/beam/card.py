@@ -14,7 +14,8 @@ kinematics of :mod:`.linkage` (no approximation):
   rotation theta_i = theta_0 + omega t_i, and theta_0 and omega are fitted by least
   squares to the measured positions (:func:`fit_rotation`), optionally with a
   periodic variation of the crank speed over the cycle. The fitted mean omega is the
-  card's pumping speed, and the residual says how well the card fits this unit.
+  card's pumping speed, the fitted series' derivatives the crank speed and
+  acceleration at every sample, and the residual says how well the card fits this unit.
   [Takacs2016] derive the crank angle against time from dynamometer data
   iteratively; here it is a least-squares fit of a few parameters.
 
@@ -47,6 +48,9 @@ _LINE_SEARCH = 20
 #: A Gauss-Newton step below this many radians (start angle, and speed times the half
 #: time span) ends the fit: 1e-10 rad moves a 3 m-stroke polished rod by under 1 nm.
 _FIT_TOLERANCE = 1e-10
+#: Harmonics fitted before the others: a pumping unit's crank speed varies mostly at once
+#: and twice per revolution (the upstroke's and the downstroke's torque peaks).
+_FIRST_HARMONICS = 2
 
 
 @dataclass(frozen=True)
@@ -69,15 +73,17 @@ class Card:
 class RotationFit:
     """Crank rotation fitted to time-stamped polished-rod positions (:func:`fit_rotation`).
 
-    ``crank_angle`` [rad] of every sample (not wrapped), ``crank_speed`` [rad/s] of
-    every sample, ``start_angle`` [rad] the crank angle at the first sample, ``speed``
-    the mean crank speed omega [rad/s], ``offset`` c [m] and ``scale`` k [-] of the
-    positions (p = c + k s), ``rms`` the root-mean-square position residual [m] of this
-    fit and ``uniform_rms`` [m] that of the uniform-rotation fit.
+    ``crank_angle`` [rad] of every sample (not wrapped), ``crank_speed`` omega =
+    dtheta/dt [rad/s] and ``crank_acceleration`` alpha = d2theta/dt2 [rad/s²] of every
+    sample (the fitted series differentiated), ``start_angle`` [rad] the crank angle at
+    the first sample, ``speed`` the mean crank speed [rad/s], ``offset`` c [m] and
+    ``scale`` k [-] of the positions (p = c + k s), ``rms`` the root-mean-square position
+    residual [m] of this fit and ``uniform_rms`` [m] that of the uniform-rotation fit.
     """
 
     crank_angle: np.ndarray
     crank_speed: np.ndarray
+    crank_acceleration: np.ndarray
     start_angle: float
     speed: float
     offset: float
@@ -266,22 +272,26 @@ def largest_gap(crank_angle: np.ndarray) -> float:
     return float(np.max(np.diff(theta, append=theta[0] + 2.0 * np.pi)))
 
 
-def _angles(params: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Crank angles, their derivatives by the parameters (n, 2 + 2K), and speed over mean speed.
+def _angles(params: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Crank angles, their derivatives by the parameters (n, 2 + 2K), and the first and second
+    derivatives of the angle by phi (speed over mean speed, acceleration over its square).
 
     theta = theta_c + phi + sum_j (a_j cos j phi + b_j sin j phi), phi = omega t_c, for
-    params = (theta_c, omega, a_1, b_1, ..., a_K, b_K).
+    params = (theta_c, omega, a_1, b_1, ..., a_K, b_K); so
+    dtheta/dphi = 1 + sum_j j (b_j cos j phi - a_j sin j phi) and
+    d2theta/dphi2 = -sum_j j^2 (a_j cos j phi + b_j sin j phi).
     """
     phi = params[1] * tc
     k = np.arange(1, (params.size - 2) // 2 + 1)
     cos, sin = np.cos(np.outer(phi, k)), np.sin(np.outer(phi, k))
     a, b = params[2::2], params[3::2]
     ratio = 1.0 + (cos * b - sin * a) @ k
+    curvature = -(cos * a + sin * b) @ (k * k)
     theta = params[0] + phi + cos @ a + sin @ b
     columns = np.empty((tc.size, params.size))
     columns[:, 0], columns[:, 1] = 1.0, tc * ratio
     columns[:, 2::2], columns[:, 3::2] = cos, sin
-    return theta, columns, ratio
+    return theta, columns, ratio, curvature
 
 
 def _least_squares(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np.ndarray) -> tuple[np.ndarray, float]:
@@ -293,7 +303,7 @@ def _least_squares(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np
     scale[1] = 0.5 * (tc[-1] - tc[0])
 
     def evaluate(q):
-        theta, columns, _ = _angles(q[:-2], tc)
+        theta, columns, _, _ = _angles(q[:-2], tc)
         s, ds = _rod(linkage, theta)
         residual = q[-1] * s + q[-2] - p
         return residual, np.column_stack([q[-1] * ds[:, None] * columns, np.ones_like(s), s])
@@ -335,7 +345,12 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     unwrapped along time and fitted by a straight line (no assumption on how many
     cycles the card holds); then Gauss-Newton with the exact Jacobian through
     ds/dtheta = A psi', halving a step that does not lower the sum of squares; the
-    uniform fit first, then (if ``harmonics``) the periodic terms from zero.
+    uniform fit first, then the first two harmonics, then the rest, each fit started
+    from the previous one with the new terms at zero (a large speed variation, which a
+    uniform start can miss, is found through the two harmonics that carry most of it).
+    The speed and acceleration at every sample are the derivatives of the fitted series:
+    omega = omega_m (1 + sum_j j (b_j cos j phi - a_j sin j phi)),
+    alpha = -omega_m^2 sum_j j^2 (a_j cos j phi + b_j sin j phi), omega_m the mean speed.
 
     Parameters
     ----------
@@ -352,9 +367,9 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     Returns
     -------
     RotationFit
-        Crank angle [rad] and crank speed [rad/s] of every sample, start angle [rad],
-        mean speed omega [rad/s], position offset [m] and scale, RMS position residual
-        [m] of this fit and of the uniform fit.
+        Crank angle [rad], speed [rad/s] and acceleration [rad/s²] of every sample,
+        start angle [rad], mean speed omega [rad/s], position offset [m] and scale, RMS
+        position residual [m] of this fit and of the uniform fit.
 
     References
     ----------
@@ -382,6 +397,14 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     (True, True)
     >>> abs(periodic.speed / (0.2 * np.pi) - 1.0) < 1e-9, periodic.rms < 1e-9, periodic.uniform_rms == uniform.rms
     (True, True, True)
+
+    and with them the speed omega (1 + 0.1 cos omega t) and acceleration -0.1 omega^2 sin omega t:
+
+    >>> w = 0.2 * np.pi
+    >>> bool(np.allclose(periodic.crank_speed, w * (1 + 0.1 * np.cos(w * t)), rtol=1e-9, atol=0))
+    True
+    >>> bool(np.allclose(periodic.crank_acceleration, -0.1 * w**2 * np.sin(w * t), rtol=0, atol=1e-9 * w**2))
+    True
     """
     t = np.asarray(time, dtype=float)
     p = np.asarray(position, dtype=float)
@@ -398,9 +421,13 @@ def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, har
     omega = float(np.sum(tc * (unwrapped - unwrapped.mean())) / np.sum(tc * tc))
     params, cost = _least_squares(linkage, tc, p, np.array([unwrapped.mean() - omega * tc.mean(), omega, 0.0, 1.0]))
     uniform_rms = math.sqrt(cost / t.size)
-    if harmonics:
-        params, cost = _least_squares(linkage, tc, p, np.concatenate([params[:2], np.zeros(2 * harmonics), params[2:]]))
-    theta, _, ratio = _angles(params[:-2], tc)
-    return RotationFit(crank_angle=theta, crank_speed=params[1] * ratio, start_angle=float(theta[0]),
+    fitted = 0
+    for count in sorted({min(_FIRST_HARMONICS, harmonics), harmonics} - {0}):
+        params, cost = _least_squares(linkage, tc, p,
+                                      np.concatenate([params[:-2], np.zeros(2 * (count - fitted)), params[-2:]]))
+        fitted = count
+    theta, _, ratio, curvature = _angles(params[:-2], tc)
+    return RotationFit(crank_angle=theta, crank_speed=params[1] * ratio, crank_acceleration=params[1] ** 2 * curvature,
+                       start_angle=float(theta[0]),
                        speed=float(params[1]), offset=float(params[-2]), scale=float(params[-1]),
                        rms=math.sqrt(cost / t.size), uniform_rms=uniform_rms)

@@ -26,6 +26,7 @@ the array kinematics is :mod:`.linkage`.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -179,6 +180,10 @@ class Linkage:
     def torque_factor(self, crank_angle: Any):
         """TF = ds/dtheta = A psi' [m] at crank angles [rad] ([API11E]; [KretzerSWPSC])."""
         return self.motion(crank_angle).torque_factor
+
+    def turned(self) -> Linkage:
+        """The same four-bar turning the other way."""
+        return dataclasses.replace(self, rotation=-self.rotation)
 
     def joint_rates(self, motion: Any):
         """Crank-angle derivatives of crank pin and equalizer bearing [m/rad, m/rad²] (:func:`.linkage.joint_rates`)."""

@@ -10,8 +10,8 @@ tau the lag of the counterweight resultant behind the crank pin.
 API net torque ([API11E]; [Rowlan2004] method 1): T = TF (W - B) - M sin(theta - tau).
 
 Decomposition with non-uniform crank speed ([Takacs2016]): crank speed omega(t) and
-acceleration alpha(t) from the card's time stamps (:func:`crank_rates_from_time`) or from
-the machine's equation of motion (:mod:`pumpjack_cli.core.dynamics.periodic`); then
+acceleration alpha(t) from the card's time stamps (:func:`pumpjack_cli.core.cards.place_card`) or
+from the machine's equation of motion (:mod:`pumpjack_cli.core.dynamics.periodic`); then
 
 * rod-load torque TF W,
 * structural-unbalance torque -TF B,
@@ -190,78 +190,6 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
         articulating_inertia=m.beam_rate * beam_inertia * beam_acceleration,
         rotary_inertia=rotary_inertia * alpha,
     )
-
-
-def crank_rates_from_time(linkage: Mechanism, time: np.ndarray, crank_angle: np.ndarray,
-                          harmonics: int = 4) -> tuple[np.ndarray, np.ndarray]:
-    """Crank speed omega [1/s] and acceleration alpha [1/s²] from time-stamped crank angles of one cycle.
-
-    The crank angles (in time order, one revolution, as read from a card's positions on
-    their stroke branches) are unwrapped to theta_u, and the time is fitted as a
-    function of angle, t(theta) = c0 + c1 theta + sum_k (a_k cos k theta + b_k sin k theta),
-    k = 1..``harmonics``, by weighted linear least squares: the period is 2 pi c1 and the
-    fit is periodic by construction, whatever the time sampling. A position error ds
-    moves the angle by ds / TF, so each sample is weighted by |TF(theta)| (the angles
-    read near the dead positions carry little information). Then omega = 1/t' and
-    alpha = d omega/dt = -t'' / t'^3 (chain rule). Truncating the series smooths the
-    noise that differentiation amplifies: more harmonics follow faster speed changes and
-    more noise ([Takacs2016] computes theta(t) from the card for the same purpose).
-
-    Parameters
-    ----------
-    linkage : Mechanism
-        The unit (torque factors for the weights).
-    time : ndarray
-        t [s], increasing.
-    crank_angle : ndarray
-        theta [rad] at those times, advancing with the rotation.
-    harmonics : int
-        Harmonics of the fit; at most (N - 2) / 2 for N samples.
-
-    Returns
-    -------
-    (ndarray, ndarray)
-        omega [1/s] and alpha [1/s²] at the samples.
-
-    References
-    ----------
-    [Takacs2016].
-
-    Examples
-    --------
-    A uniform crank at 1 rad/s: omega = 1, alpha = 0.
-
-    >>> from pumpjack_cli.core.beam.geometry import Linkage
-    >>> t = np.linspace(0.0, 2 * np.pi, 36, endpoint=False)
-    >>> w, a = crank_rates_from_time(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0), t, (t + 0.3) % (2 * np.pi))
-    >>> bool(np.allclose(w, 1.0) and np.allclose(a, 0.0, atol=1e-12))
-    True
-    """
-    t = np.asarray(time, dtype=float)
-    theta = np.asarray(crank_angle, dtype=float)
-    _finite("crank rates from time", t, theta)
-    if t.shape != theta.shape or t.ndim != 1:
-        raise TorqueError("crank rates from time: time and crank angle must be 1-D arrays of one length")
-    if not 1 <= harmonics <= (t.size - 2) // 2:
-        raise TorqueError(f"crank rates from time: {harmonics} harmonics need at least {2 * harmonics + 2} "
-                          f"samples, the card has {t.size}")
-    if np.any(np.diff(t) <= 0):
-        raise TorqueError("crank rates from time: time must increase")
-    unwrapped = np.unwrap(theta)
-    if not unwrapped[-1] > unwrapped[0]:
-        raise TorqueError("crank rates from time: the crank angle does not advance with time")
-    weight = np.abs(linkage.torque_factor(theta))
-    k = np.arange(1, harmonics + 1)
-    phase = np.outer(unwrapped, k)
-    basis = np.hstack([np.ones((t.size, 1)), unwrapped[:, None], np.cos(phase), np.sin(phase)])
-    coef = np.linalg.lstsq(basis * weight[:, None], t * weight, rcond=None)[0]
-    a, b = coef[2:2 + harmonics], coef[2 + harmonics:]
-    dt = coef[1] + np.sin(phase) @ (-k * a) + np.cos(phase) @ (k * b)
-    d2t = np.cos(phase) @ (-k * k * a) + np.sin(phase) @ (-k * k * b)
-    if not np.all(dt > 0):
-        raise TorqueError("crank rates from time: the fitted crank stops or turns back; "
-                          "use fewer harmonics or check the card's time stamps")
-    return 1.0 / dt, -d2t / dt**3
 
 
 def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance: Counterbalance,

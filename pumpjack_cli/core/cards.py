@@ -1,0 +1,229 @@
+"""A dynamometer card placed on a unit's crank-angle axis: once per card and run.
+
+The columns of a card as read (:class:`pumpjack_cli.readers.cards.RawCard`: load with
+crank angles, positions, or time stamps and positions, in SI) go onto the crank angle
+of the unit's :class:`~pumpjack_cli.core.mechanism.Mechanism` here, through its exact
+kinematics (:mod:`pumpjack_cli.core.beam.card`):
+
+* crank angles are taken as given (wrapped to one turn);
+* a position card is shifted to the bottom of the stroke and scaled to the unit's
+  stroke (refused beyond 5 %, a warning beyond 2 %), read in reverse when its loop
+  work says so, and each point is mapped on the branch of its direction of travel;
+* a time card is placed by one least-squares fit of theta(t), uniform rotation plus
+  :data:`HARMONICS` harmonics of a periodic speed variation, which gives the crank
+  angle of every sample and, analytically from the fitted series, the crank speed
+  omega = dtheta/dt and acceleration alpha = d2theta/dt2 there (``--rotation card``);
+  the other rotation direction is tried when the fit is not near exact.
+
+Every refusal is a one-line :class:`~pumpjack_cli.errors.CardError` starting with the
+card's name; the warnings are returned, one line each (``docs/cards.md``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import CardError
+from .beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_position, fit_rotation, largest_gap,
+                        loop_work, upstroke_points)
+from .beam.geometry import CLOCKWISE, COUNTERCLOCKWISE
+from .mechanism import Mechanism
+
+#: Relative stroke mismatch refused, and warned about (the card is scaled to the unit's stroke).
+STROKE_ERROR = 0.05
+STROKE_WARNING = 0.02
+#: RMS position residual of the time fit, relative to the stroke, refused and warned about.
+FIT_ERROR = 0.10
+FIT_WARNING = 0.02
+#: Harmonics of the periodic crank-speed variation fitted to time stamps, for the angles and
+#: the rates alike; fewer when the card has under four samples per angle parameter (2 + 2K).
+#: Enough: the machine's equation of motion under the SK8-3,5-4000 sample card (load swing
+#: halved, so that its motor can drive it) gives a crank speed whose harmonics 1 to 6 are
+#: 1.7, 1.9, 0.65, 0.61, 0.32 and 0.31 % of the mean, the 7th 0.13 % and every higher one
+#: (the rod string's stress waves) below 0.06 %: six leave 0.12 % RMS of omega, and a quarter
+#: of alpha's RMS (the 7th harmonic and the waves), unfitted. Few enough: Gaussian position
+#: noise sigma on a 180-sample card passes into omega as 5.5 sigma/S RMS and into alpha as
+#: 24 sigma/S omega^2 (S the stroke; the least-squares covariance, tests/test_card_time.py),
+#: against about 2.6 and 7.7 for four harmonics and 8.4 and 47 for eight: a dynamometer
+#: resolving 1e-4 S gives omega to 0.06 % and alpha to 0.24 % of omega^2.
+HARMONICS = 6
+#: The other rotation direction "fits clearly better" when its uniform-rotation
+#: residual is below half of the unit's and the unit's is above this fraction of the stroke.
+ROTATION_EVIDENCE = 0.002
+#: A loop whose work is below this fraction of (stroke range x load range) has no
+#: clear orientation and is read as listed.
+WORK_TOLERANCE = 1e-3
+#: The largest crank rotation without a sample that still counts as a whole cycle [rad]
+#: (or two mean sample spacings, if larger).
+MAX_GAP = math.radians(30.0)
+
+_ROTATION_NAMES = {CLOCKWISE: "clockwise", COUNTERCLOCKWISE: "counterclockwise"}
+
+
+@dataclass(frozen=True)
+class PlacedCard:
+    """A card on the crank-angle axis, the samples it came from, and what was noticed.
+
+    ``load`` [N], ``crank_angle`` [rad] (fitted or mapped, in [0, 2 pi)), ``position``
+    [m] and ``time`` [s] are per sample, in SI, in cycle order (reversed when the file
+    was), a repeated closing sample dropped; ``position`` as read (not shifted or
+    scaled), None on a crank-angle card; ``time`` None without time stamps. ``speed``
+    is the mean crank speed omega [rad/s] fitted to the time stamps (the card's pumping
+    speed), ``crank_speed`` [rad/s] and ``crank_acceleration`` [rad/s²] the fitted
+    speed and acceleration at each sample, ``fit_rms`` the RMS position residual of that
+    fit [m] and ``fit_rms_relative`` the same over the unit's stroke [-]; all None
+    without time stamps. ``reversed`` is True when the rows were read in reverse (one
+    warning says so).
+    """
+
+    card: Card
+    source: str
+    warnings: tuple[str, ...]
+    load: np.ndarray
+    crank_angle: np.ndarray
+    position: np.ndarray | None = None
+    time: np.ndarray | None = None
+    speed: float | None = None
+    crank_speed: np.ndarray | None = None
+    crank_acceleration: np.ndarray | None = None
+    fit_rms: float | None = None
+    fit_rms_relative: float | None = None
+    reversed: bool = False
+
+    @property
+    def strokes_per_minute(self) -> float | None:
+        """The card's pumping speed [1/min], None without time stamps."""
+        return None if self.speed is None else self.speed * 30.0 / math.pi
+
+
+def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarray | None = None,
+               position: np.ndarray | None = None, time: np.ndarray | None = None, source: str = "the card",
+               position_unit: tuple[str, float] = ("m", 1.0), reversed: bool = False,
+               warnings: tuple[str, ...] = ()) -> PlacedCard:
+    """Put a card's samples on the crank-angle axis of ``mechanism``.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The unit the card was measured on (:meth:`~pumpjack_cli.core.mechanism.Mechanism.turned`
+        gives it turning the other way, to try the other rotation direction).
+    load : numpy.ndarray
+        Polished-rod load of every sample [N].
+    crank_angle : numpy.ndarray, optional
+        Crank angles [rad] of an angle card.
+    position : numpy.ndarray, optional
+        Polished-rod positions [m] of a position or time card, as measured.
+    time : numpy.ndarray, optional
+        Increasing time stamps [s] of a time card.
+    source : str
+        The card's name, first in every message.
+    position_unit : (str, float)
+        The unit the file wrote positions in and its size [m], for messages.
+    reversed : bool
+        The samples were read in reverse (kept in :attr:`PlacedCard.reversed`).
+    warnings : tuple of str
+        The reader's warnings, kept before the placement's own.
+
+    Returns
+    -------
+    PlacedCard
+        The card on the crank-angle axis, the samples in cycle order, and for a time
+        card its mean speed, crank speed and acceleration at every sample.
+
+    References
+    ----------
+    [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
+    """
+    if crank_angle is not None:
+        theta = np.asarray(crank_angle, dtype=float) % (2.0 * math.pi)
+        if np.all(theta == theta[0]):
+            raise CardError(f"{source}: every crank angle is {math.degrees(theta[0]):.6g} deg; a card covers a whole cycle")
+        _check_coverage(theta, source, "crank angles")
+        return PlacedCard(card_from_angles(theta, load), source, tuple(warnings), load, theta, reversed=reversed)
+    if position is None:
+        raise CardError(f"{source}: a card has crank angles or polished-rod positions; this one has neither")
+    unit, factor = position_unit
+    steps = np.diff(position)
+    if np.all(steps == 0):
+        raise CardError(f"{source}: the polished rod does not move (every position is {position[0] / factor:.6g} {unit}); "
+                        f"a card covers a whole cycle")
+    if np.all(steps >= 0) or np.all(steps <= 0):
+        raise CardError(f"{source}: the polished rod moves only {'up' if steps.sum() > 0 else 'down'}; "
+                        f"a card covers a whole cycle")
+    stroke = mechanism.dead_positions().stroke
+    card_stroke = float(position.max() - position.min())
+    mismatch = card_stroke / stroke - 1.0
+    message = (f"{source}: card stroke {card_stroke / factor:.4g} {unit} differs from the unit's exact stroke "
+               f"{stroke / factor:.4g} {unit} by {100 * mismatch:+.1f} %")
+    notes = list(warnings)
+    if abs(mismatch) > STROKE_ERROR:
+        raise CardError(f"{message}; wrong unit, crank hole or position units?")
+    if abs(mismatch) > STROKE_WARNING:
+        notes.append(f"{message}; positions scaled to the unit's stroke")
+    work = loop_work(position, load)
+    if work < -WORK_TOLERANCE * card_stroke * float(np.ptp(load)):
+        if time is not None:
+            raise CardError(f"{source}: in time order the rods do {-work:.4g} J of work on the unit per cycle; a pumping "
+                            f"unit does positive work: rows reversed against their time stamps, or a sign inverted?")
+        reversed = True
+        position, load = position[::-1], load[::-1]
+        notes.append(f"{source}: listed in reverse (the rods would do {-work:.4g} J of work on the unit per cycle; "
+                     f"a pumping unit lifts them on the high load); read in reverse order")
+    scaled = (position - position.min()) * (stroke / card_stroke)
+    if time is None:
+        theta = crank_angle_from_position(mechanism, scaled, upstroke_points(scaled))
+        return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, reversed=reversed)
+    fit = _rotation(mechanism, time, scaled, position_unit, source, notes)
+    theta = fit.crank_angle % (2.0 * math.pi)
+    _check_coverage(theta, source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
+    return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, time, fit.speed,
+                      fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke, reversed)
+
+
+def _check_coverage(theta: np.ndarray, source: str, what: str) -> None:
+    gap = largest_gap(theta)
+    if gap > max(MAX_GAP, 4.0 * math.pi / theta.size):
+        raise CardError(f"{source}: the {what} leave {math.degrees(gap):.0f} deg of the crank's revolution without "
+                        f"a sample; a card covers a whole cycle")
+
+
+def harmonics_for(samples: int) -> int:
+    """Harmonics fitted to a time card of ``samples`` samples: :data:`HARMONICS`, or as many
+    as leave four samples per angle parameter (2 + 2K).
+
+    >>> harmonics_for(180), harmonics_for(24), harmonics_for(8)
+    (6, 2, 0)
+    """
+    return max(0, min(HARMONICS, (samples // 4 - 2) // 2))
+
+
+def _rotation(mechanism: Mechanism, time: np.ndarray, scaled: np.ndarray, position_unit: tuple[str, float],
+              source: str, notes: list[str]) -> RotationFit:
+    """The time fit, its warnings appended to ``notes``; the other rotation direction is tried
+    only when the uniform fit is not near exact."""
+    fit = fit_rotation(mechanism, time, scaled, harmonics_for(time.size))
+    stroke = mechanism.dead_positions().stroke
+    relative = fit.rms / stroke
+    unit, factor = position_unit
+    residual = f"RMS position error {fit.rms / factor:.3g} {unit}, {100 * relative:.2g} % of the stroke"
+    if relative > FIT_ERROR:
+        raise CardError(f"{source}: the time stamps do not fit this unit's motion ({residual}); "
+                        f"wrong columns or a card from another unit?")
+    if np.min(fit.crank_speed) <= 0.0:
+        raise CardError(f"{source}: the crank angles fitted to the time stamps turn backwards at times "
+                        f"(crank speed {np.min(fit.crank_speed):.3g} rad/s); wrong columns or a card from another unit?")
+    if fit.uniform_rms > ROTATION_EVIDENCE * stroke:
+        other = fit_rotation(mechanism.turned(), time, scaled)
+        if other.uniform_rms < 0.5 * fit.uniform_rms:
+            own_name, other_name = _ROTATION_NAMES[mechanism.rotation], _ROTATION_NAMES[-mechanism.rotation]
+            notes.append(f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
+                         f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
+                         f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation")
+            return fit
+    if relative > FIT_WARNING:
+        notes.append(f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
+                     f"the fitted crank angles are used")
+    return fit
