@@ -32,7 +32,7 @@ class UnitSystem(str, Enum):
     field = "field"
 
 
-class Rotation(str, Enum):
+class CrankMotion(str, Enum):
     uniform = "uniform"
     card = "card"
     dynamic = "dynamic"
@@ -97,8 +97,8 @@ CardSpmOption = Annotated[float | None, typer.Option(
     "--spm", help="pumping speed, strokes/min [default: the card's time stamps, else from motor and drive]",
     min=0.1, max=60, callback=finite)]
 StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
-RotationOption = Annotated[Rotation, typer.Option(
-    "--rotation", help="uniform: constant crank speed (the card's time stamps, --spm or the motor's rated speed); "
+CrankMotionOption = Annotated[CrankMotion, typer.Option(
+    "--crank-motion", help="uniform: constant crank speed (the card's time stamps, --spm or the motor's rated speed); "
     "card: speed and acceleration from the card's time stamps; dynamic: the periodic motion from the machine's "
     "equation of motion under this card (as `pumpjack dynamics --card`); auto: card if the card has time "
     "stamps and no --spm is given, else uniform")]

@@ -70,9 +70,9 @@ def counted(monkeypatch) -> Counter:
 
 
 def test_torque_with_the_cards_rotation_parses_and_fits_once(run_cli, counted):
-    """--rotation card takes the crank speed and acceleration from the placement's fit: no
+    """--crank-motion card takes the crank speed and acceleration from the placement's fit: no
     second fit of the time stamps."""
-    code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", SAMPLE, "--rotation", "card", "-f", "csv")
+    code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", SAMPLE, "--crank-motion", "card", "-f", "csv")
     assert code == 0, err
     assert counted == {"parse": 1, "fit": 1}
 

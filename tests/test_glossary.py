@@ -36,7 +36,7 @@ RUNS = [
     ("torque", "c-80d-133-48", "--card", "samples/c-80d-133-48-card.csv", "--steps", "8"),
     ("downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--samples", "64"),
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1"),
-    ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1", "--rotation", "dynamic"),
+    ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1", "--crank-motion", "dynamic"),
     ("predict", "c-80d-133-48", "--samples", "64", "--damping", "0.1", "--spm", "8"),
     ("dynamics", "sk8-3.5-4000", "--samples", "64", "--well-model", "wave", "--damping", "0.1"),
 ]

@@ -46,7 +46,7 @@ def series(doc, name):
 
 
 C114 = ("predict", "c-114d-133-54", "--spm", "10", "--damping", "0.1")
-SK8_COUPLED = ("predict", "sk8-3.5-4000", "--rotation", "dynamic", "--damping", "0.1", "--samples", "256")
+SK8_COUPLED = ("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--damping", "0.1", "--samples", "256")
 
 
 def test_predicted_surface_card_gives_back_the_pump_card(run, tmp_path):
@@ -115,7 +115,7 @@ def test_very_slow_full_pump_is_the_static_card(run):
 def test_coupled_gearbox_torque_is_the_kinetostatic_net_torque(run):
     """Two models of the same crank: the equation of motion's net gearbox torque M_drive - I_drive eps
     (`dynamics --well-model wave`) and the spatial kinetostatics' net torque under the predicted load
-    with the coupled omega, eps (`predict --rotation dynamic`)."""
+    with the coupled omega, eps (`predict --crank-motion dynamic`)."""
     gearbox = series(run("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0.1", "--samples",
                          "256"), "net_torque_n_m")
     net = series(run(*SK8_COUPLED), "net_torque_n_m")
@@ -165,8 +165,8 @@ def test_field_units(run):
     (("predict", "c-114d-133-54", "--spm", "10", "--submergence", "100 m", "--intake-pressure", "1 MPa"),
      "--submergence and --intake-pressure: give one of them"),
     (("predict", "c-114d-133-54"), "give the speed with --spm"),
-    (("predict", "c-80d-133-48", "--rotation", "dynamic"), "[masses]"),
-    (("predict", "sk8-3.5-4000", "--rotation", "dynamic", "--spm", "8"), "--spm"),
+    (("predict", "c-80d-133-48", "--crank-motion", "dynamic"), "[masses]"),
+    (("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--spm", "8"), "--spm"),
     (("predict", "unb-600a"), "not a beam pumping unit"),
     (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--steps", "100"), "the wave model takes --samples"),
     (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--samples", "10"), "--samples"),

@@ -136,7 +136,7 @@ def test_plot(run_cli, tmp_path, sk8_card):
 
 
 def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
-    """--rotation dynamic: the kinetostatics run on the speed and acceleration of the
+    """--crank-motion dynamic: the kinetostatics run on the speed and acceleration of the
     machine's equation of motion. The gearbox torque on the crank is then the motor
     torque through the drive less what accelerates the drive's own inertia,
     M_z = u M_motor - I_drive eps1: two independent models (spatial kinetostatics,
@@ -144,7 +144,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     from pumpjack_cli.analysis.machine import machine as build_machine
     from pumpjack_cli.core.dynamics.periodic import steady_state
 
-    code, out, err = run_cli("reactions", SK8, "--card", sk8_drivable_card, "--rotation", "dynamic", "--steps", "90",
+    code, out, err = run_cli("reactions", SK8, "--card", sk8_drivable_card, "--crank-motion", "dynamic", "--steps", "90",
                              "-f", "json")
     assert (code, err) == (0, "")
     series = json.loads(out)["series"]
@@ -160,5 +160,5 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
 
 
 def test_spm_with_dynamic_rotation_is_an_error(run_cli, sk8_card):
-    code, _, err = run_cli("reactions", SK8, "--card", sk8_card, "--rotation", "dynamic", "--spm", "8")
+    code, _, err = run_cli("reactions", SK8, "--card", sk8_card, "--crank-motion", "dynamic", "--spm", "8")
     assert code == 2 and "--spm sets a uniform crank speed" in err

@@ -44,7 +44,7 @@ def massless_sk8(tmp_path: Path) -> Path:
 
 def test_massless_exact_equals_api(run_cli, tmp_path):
     unit = massless_sk8(tmp_path)
-    doc = run(run_cli, unit, "--rotation", "uniform", "--method", "exact", card_file=card("sk8-3.5-4000"))
+    doc = run(run_cli, unit, "--crank-motion", "uniform", "--method", "exact", card_file=card("sk8-3.5-4000"))
     api = np.array(doc["series"]["api_net_torque_n_m"])
     exact = np.array(doc["series"]["exact_net_torque_n_m"])
     assert np.max(np.abs(exact - api)) < 1e-9 * np.max(np.abs(api))
@@ -52,7 +52,7 @@ def test_massless_exact_equals_api(run_cli, tmp_path):
 
 @pytest.mark.parametrize("unit", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])
 def test_exact_method_equals_the_reactions_net_torque(run_cli, unit):
-    doc = run(run_cli, unit, "--rotation", "uniform", "--method", "exact", "--steps", "72")
+    doc = run(run_cli, unit, "--crank-motion", "uniform", "--method", "exact", "--steps", "72")
     code, out, err = run_cli("reactions", unit, "--card", card(unit), "--steps", "72", "-f", "json")
     assert code == 0, err
     reactions = np.array(json.loads(out)["series"]["net_torque_n_m"])

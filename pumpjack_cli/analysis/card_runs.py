@@ -2,7 +2,7 @@
 
 A card is read without a unit (:func:`pumpjack_cli.readers.cards.read_card`) and placed
 on the unit's crank-angle axis (:func:`pumpjack_cli.core.cards.place_card`) once, by
-:meth:`CardSource.read`; ``--rotation card`` takes the crank speed and acceleration that
+:meth:`CardSource.read`; ``--crank-motion card`` takes the crank speed and acceleration that
 the placement's time fit gives at every sample.
 
 The crank speed of a uniform run is the card's own when its time stamps give one (a
@@ -39,10 +39,10 @@ FINE_STEPS = 3600
 #: Crank-angle points per time sample when a card is put on a uniform time grid.
 RESAMPLE_FACTOR = 8
 
-#: Crank rotation models of the card-driven analyses: constant speed; the speed and
+#: Crank-motion models of the card-driven analyses: constant speed; the speed and
 #: acceleration fitted to the card's time stamps; the machine's equation of motion;
 #: auto: the card's time stamps if it has them and no --spm is given, else constant speed.
-ROTATIONS = ("uniform", "card", "dynamic", "auto")
+CRANK_MOTIONS = ("uniform", "card", "dynamic", "auto")
 
 
 @dataclass(frozen=True)
@@ -122,7 +122,7 @@ def check_speed(card_speed: float | None, spm_option: float | None, source: str 
 @dataclass(frozen=True)
 class CardRun:
     """Crank angles [rad], time [s], crank speed [1/s] and acceleration [1/s²] and the
-    card's polished-rod load [N] on them, the cycle time [s] and the rotation model."""
+    card's polished-rod load [N] on them, the cycle time [s] and the crank-motion model."""
 
     crank_angle: np.ndarray
     time: np.ndarray
@@ -130,7 +130,7 @@ class CardRun:
     epsilon: np.ndarray
     load: np.ndarray
     period: float
-    rotation: str
+    crank_motion: str
 
     @property
     def mean_crank_speed(self) -> float:
@@ -145,10 +145,10 @@ def uniform_speed(unit, reading: PlacedCard, spm: float | None) -> float:
     return crank_speed(unit, None) if speed is None else speed
 
 
-def _card_rotations(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]:
+def _card_motion(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]:
     """The crank speed and acceleration fitted to the card's time stamps ([Takacs2016]), on each grid."""
     if reading.time is None:
-        raise PumpjackError(f"{reading.source}: --rotation card needs a card with time stamps")
+        raise PumpjackError(f"{reading.source}: --crank-motion card needs a card with time stamps")
     omega_s, alpha_s = reading.crank_speed, reading.crank_acceleration
     order = np.argsort(reading.crank_angle)
     angles = reading.crank_angle[order]
@@ -162,28 +162,28 @@ def _card_rotations(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardR
 
 
 def card_runs(unit, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
-              rotation: str) -> tuple[PlacedCard, list[CardRun]]:
+              crank_motion: str) -> tuple[PlacedCard, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
     reading = source.read(mechanism)
     thetas = [crank_grid(steps) for steps in grids]
-    if rotation == "auto":
-        rotation = "uniform" if reading.time is None or spm is not None else "card"
-    if rotation == "uniform":
+    if crank_motion == "auto":
+        crank_motion = "uniform" if reading.time is None or spm is not None else "card"
+    if crank_motion == "uniform":
         omega = uniform_speed(unit, reading, spm)
         runs = [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),
-                        card_load(reading.card, theta), cycle_period(omega), rotation) for theta in thetas]
+                        card_load(reading.card, theta), cycle_period(omega), crank_motion) for theta in thetas]
         return reading, runs
     if spm is not None:
-        raise PumpjackError(f"--spm sets a uniform crank speed; with --rotation {rotation} the "
-                            f"{'card' if rotation == 'card' else 'motor'} sets the speed")
-    if rotation == "card":
-        return reading, _card_rotations(reading, thetas)
+        raise PumpjackError(f"--spm sets a uniform crank speed; with --crank-motion {crank_motion} the "
+                            f"{'card' if crank_motion == 'card' else 'motor'} sets the speed")
+    if crank_motion == "card":
+        return reading, _card_motion(reading, thetas)
     state = steady_state(machine(unit, reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:
         part = slice(start, start + theta.size)
         runs.append(CardRun(theta, state.time[part], state.omega[part], state.epsilon[part],
-                            card_load(reading.card, theta), state.summary.period, rotation))
+                            card_load(reading.card, theta), state.summary.period, crank_motion))
         start += theta.size
     return reading, runs
 
@@ -202,12 +202,12 @@ class TimeCard:
 
 
 def time_card(unit, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
-              rotation: str) -> tuple[PlacedCard, TimeCard]:
+              crank_motion: str) -> tuple[PlacedCard, TimeCard]:
     """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
     from the card's time stamps or from the equation of motion) is resolved on a fine
     crank-angle grid and inverted, so a card of positions only is usable through the
     unit's exact kinematics."""
-    reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), rotation)
+    reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), crank_motion)
     time = np.arange(samples) * (run.period / samples)
     theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
     return reading, TimeCard(time, theta, mechanism.rod_position(theta), card_load(reading.card, theta), run.period)

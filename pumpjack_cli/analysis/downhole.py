@@ -44,7 +44,7 @@ def damping_factor(unit, given: float | None, rod_string, card, method: str) -> 
     return nu, "energy balance"
 
 
-def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: str, damping: float | None,
+def downhole(unit, card: CardSource, spm: float | None, crank_motion: str, method: str, damping: float | None,
              samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0) -> Result:
     """Pump card, pump-card figures and rod stresses of one surface card."""
     if method not in downhole_methods():
@@ -52,7 +52,7 @@ def downhole(unit, card: CardSource, spm: float | None, rotation: str, method: s
     well = well_of(unit)
     string = rods(unit)
     linkage = unit.geometry.mechanism()
-    reading, surface = time_card(unit, linkage, card, spm, samples, rotation)
+    reading, surface = time_card(unit, linkage, card, spm, samples, crank_motion)
     try:
         nu, source = damping_factor(unit, damping, string, surface, method)
         pump = pump_card(string, surface.period, surface.position, surface.load, fluid_density=well.fluid_density,

@@ -32,8 +32,8 @@ from .torque import SUMMARY_STEPS, card_torque
 
 #: Time samples per cycle of the predicted cards.
 DEFAULT_SAMPLES = 360
-#: Rotation models of a prediction.
-ROTATIONS = ("uniform", "dynamic")
+#: CrankMotion models of a prediction.
+CRANK_MOTIONS = ("uniform", "dynamic")
 
 
 @dataclass(frozen=True)
@@ -113,21 +113,21 @@ class Predicted:
     damping: float
 
 
-def predicted(unit, spm: float | None, rotation: str, samples: int, damping: float | None) -> Predicted:
+def predicted(unit, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
     """Solve the well at uniform crank speed (``--spm`` or the drive) or coupled with the machine."""
-    if rotation not in ROTATIONS:
-        raise PumpjackError(f"--rotation {rotation}: use one of {', '.join(ROTATIONS)}")
+    if crank_motion not in CRANK_MOTIONS:
+        raise PumpjackError(f"--crank-motion {crank_motion}: use one of {', '.join(CRANK_MOTIONS)}")
     string, well_pump, well = rods(unit), pump(unit), unit.well
-    if rotation == "uniform":
+    if crank_motion == "uniform":
         omega = crank_speed(unit, spm)
         nu = damping_factor(unit, damping)
         cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
     if spm is not None:
-        raise PumpjackError("--spm sets a uniform crank speed; with --rotation dynamic the motor sets the speed")
+        raise PumpjackError("--spm sets a uniform crank speed; with --crank-motion dynamic the motor sets the speed")
     for section in ("masses", "drive"):
-        require(unit, section, "--rotation dynamic solves the machine's equation of motion")
+        require(unit, section, "--crank-motion dynamic solves the machine's equation of motion")
     nu = damping_factor(unit, damping)
     from ..core.dynamics.coupled import predict_coupled
 
@@ -246,12 +246,12 @@ def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
     return rows
 
 
-def predict(unit, spm: float | None, rotation: str, samples: int, damping: float | None,
+def predict(unit, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
             steps: int = SUMMARY_STEPS) -> Result:
     """The result of `pumpjack predict` (module docstring)."""
     unit = with_overrides(unit, overrides)
-    found = predicted(unit, spm, rotation, samples, damping)
+    found = predicted(unit, spm, crank_motion, samples, damping)
     cards = found.cards
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
     string = rods(unit)
@@ -283,7 +283,7 @@ def predict(unit, spm: float | None, rotation: str, samples: int, damping: float
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
-    title = (f"{unit.name}: predicted cards, {rotation} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
+    title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
              f"damping {found.damping:.3g}")
     return Result(title, tuple(summary), tuple(columns), tuple(panels))
 

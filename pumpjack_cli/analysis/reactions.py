@@ -46,7 +46,7 @@ def _peak(summary: list[Scalar], name: str, theta, values) -> None:
                 Scalar(f"{name}_crank_angle", found.crank_angle)]
 
 
-def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: str, *,
+def reactions(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str, *,
               weights: bool = True, inertia: bool = True, counterweight_count: int | None = None,
               counterweight_radius: float | None = None) -> Result:
     """The rational mechanism's reactions, bearing moments and balancing torque under a card.
@@ -56,7 +56,7 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: s
     """
     masses = mass_model(unit, counterweight_count, counterweight_radius)
     spatial = unit.geometry.spatial(unit.name)
-    reading, runs = card_runs(unit, spatial.planar, card, spm, (steps, SUMMARY_STEPS), rotation)
+    reading, runs = card_runs(unit, spatial.planar, card, spm, (steps, SUMMARY_STEPS), crank_motion)
     r, dense = (joint_reactions("rational", spatial, masses, run.crank_angle, run.omega, run.epsilon, run.load,
                                 weights=weights, inertia=inertia).reactions for run in runs)
     run, theta = runs[0], runs[1].crank_angle
@@ -80,7 +80,7 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, rotation: s
         Panel("beam reactions", ("r45_y", "r05_x", "r05_y")),
         Panel("net gearbox torque", ("net_torque",)),
     )
-    title = f"{unit.name}: reactions and net gearbox torque, card {card.name}, {rotation} rotation"
+    title = f"{unit.name}: reactions and net gearbox torque, card {card.name}, {crank_motion} rotation"
     return Result(title, tuple(summary), tuple(columns), panels)
 
 
@@ -94,7 +94,7 @@ def with_options(section, given: dict):
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {error_message(first, type(section))}") from None
 
 
-def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, rotation: str,
+def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str,
                        given_deviations: dict, given_joints: dict | None = None) -> Result:
     """The real mechanism (revolute pins, elastic pitmans, errors) beside the rational one under a card.
 
@@ -113,7 +113,7 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
     masses = mass_model(unit)
     ideal = unit.geometry.spatial(unit.name)
     actual = errors.apply(ideal)
-    _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), rotation)
+    _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), crank_motion)
 
     def solve(run: CardRun):
         motion = (masses, run.crank_angle, run.omega, run.epsilon, run.load)
@@ -186,5 +186,5 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, ro
         Panel("net gearbox torque M_z ([Spatial7SK12] fig. 14)", ("net_torque_real",), ("net_torque_rational",)),
     )
     title = (f"{unit.name}: real against rational mechanism (same errors; crank phase of the "
-             f"{errors.crank_phase_mode.replace('-', ' ')}), card {card.name}, {rotation} rotation")
+             f"{errors.crank_phase_mode.replace('-', ' ')}), card {card.name}, {crank_motion} rotation")
     return Result(title, tuple(summary), tuple(columns), panels)

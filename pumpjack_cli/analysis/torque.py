@@ -5,7 +5,7 @@ the card and the counterbalance (B, M, tau from ``[counterbalance]`` or from the
 masses); the exact method is the spatial kinetostatics of `pumpjack reactions` with
 link weights and inertia ([Spatial7SK12]). The net torque is decomposed as
 [Takacs2016] does, with the crank's speed and acceleration from the card's time stamps
-(``--rotation card``, the default for a time-stamped card), uniform, or from the
+(``--crank-motion card``, the default for a time-stamped card), uniform, or from the
 machine's equation of motion. The counterbalance that meets a balance criterion, the
 loading against the ratings of the unit's designation and the permissible load diagram
 ([GaultSWPSC]) follow.
@@ -118,14 +118,14 @@ def _exact_basis(spatial, masses, crank_angle: bytes) -> ExactTorqueBasis:
     return exact_torque_basis(spatial, masses, np.frombuffer(crank_angle))
 
 
-def torque(unit, card: CardSource, spm: float | None, steps: int, rotation: str, method: str, criterion: str,
+def torque(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str, method: str, criterion: str,
            drive_efficiency: float = 1.0) -> Result:
     """The torque analysis of one card (see the module docstring)."""
     check_options(method, criterion)
     ratings(unit)
-    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), rotation)
+    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), crank_motion)
     found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
-    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].rotation} rotation, "
+    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank_motion, "
              f"balance {criterion}")
     return Result(title, found.card_summary + found.summary, found.columns, found.panels)
 

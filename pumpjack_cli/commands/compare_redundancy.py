@@ -11,7 +11,7 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 class PhaseMode(str, Enum):
@@ -42,7 +42,7 @@ def compare_redundancy(
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
-    rotation: RotationOption = Rotation.uniform,
+    crank_motion: CrankMotionOption = CrankMotion.uniform,
     crank_phase: Annotated[str | None, _deviation("crank pin A1 ahead of A, e.g. '0.5 deg'")] = None,
     crank_radius: Annotated[str | None, _deviation("crank radius of A1 minus that of A, e.g. '2 mm'")] = None,
     pitman_length: Annotated[str | None, _deviation("pitman A1B1 minus AB, e.g. '2 mm'")] = None,
@@ -80,5 +80,5 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value,
+    sink.emit(run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
                   given, given_joints), SHOWN)

@@ -11,7 +11,7 @@ from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, Rotation, RotationOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
+                       PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
@@ -28,7 +28,7 @@ def downhole(
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
-    rotation: RotationOption = Rotation.auto,
+    crank_motion: CrankMotionOption = CrankMotion.auto,
     method: Annotated[Method, typer.Option(
         help="gibbs: exact per-harmonic solution; everitt-jennings: finite-difference march in depth")] = Method.gibbs,
     damping: Annotated[float | None, typer.Option(
@@ -45,6 +45,6 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, rotation.value, method.value,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -16,7 +16,7 @@ from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFa
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
 
 
-class Rotation(str, Enum):
+class CrankMotion(str, Enum):
     uniform = "uniform"
     dynamic = "dynamic"
 
@@ -28,9 +28,9 @@ def _well(help_text: str):
 def predict(
     unit: UnitArgument,
     spm: SpmOption = None,
-    rotation: Annotated[Rotation, typer.Option(
+    crank_motion: Annotated[CrankMotion, typer.Option(
         help="uniform: constant crank speed (--spm or the motor's rated speed); dynamic: the crank speed from the "
-             "machine's equation of motion solved together with the rods")] = Rotation.uniform,
+             "machine's equation of motion solved together with the rods")] = CrankMotion.uniform,
     damping: Annotated[float | None, typer.Option(
         help="Gibbs' dimensionless damping factor nu of the rods, above 0 (undamped rods never settle to a "
              "steady state) [default: the unit file's, else 0.05]",
@@ -64,5 +64,5 @@ def predict(
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
     )
-    result = run(load_unit(unit), spm, rotation.value, samples, damping, overrides, service_factor)
+    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor)
     sink.emit(result, SHOWN)

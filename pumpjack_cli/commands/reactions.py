@@ -8,7 +8,7 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, Rotation, RotationOption,
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
@@ -21,7 +21,7 @@ def reactions(
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
-    rotation: RotationOption = Rotation.uniform,
+    crank_motion: CrankMotionOption = CrankMotion.uniform,
     no_inertia: Annotated[bool, typer.Option("--no-inertia", help="leave out the links' inertia forces and moments")] = False,
     no_weights: Annotated[bool, typer.Option("--no-weights", help="leave out the links' weights")] = False,
     counterweight_count: Annotated[int | None, typer.Option(help="number of counterweight blocks instead of the unit's", min=0, max=16)] = None,
@@ -37,6 +37,6 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value, weights=not no_weights,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

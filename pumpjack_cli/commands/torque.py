@@ -10,7 +10,7 @@ import typer
 from ..analysis.torque import torque as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, Rotation, RotationOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
+                       PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
@@ -35,7 +35,7 @@ def torque(
     card_columns: CardColumnsOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
-    rotation: RotationOption = Rotation.auto,
+    crank_motion: CrankMotionOption = CrankMotion.auto,
     method: Annotated[Method, typer.Option(
         help="api: torque factors, B and M (API 11E); exact: spatial kinetostatics with link weights and inertia "
              "(needs [masses])")] = Method.api,
@@ -55,7 +55,7 @@ def torque(
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, rotation.value,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))
