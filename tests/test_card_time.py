@@ -303,7 +303,7 @@ def test_six_harmonics_hold_the_speed_variation_of_the_equation_of_motion(sk8_dr
     phi = 2 * math.pi * state.time / state.summary.period
     j = np.arange(1, 21)
     basis = np.column_stack([np.ones_like(phi), np.cos(np.outer(phi, j)), np.sin(np.outer(phi, j))])
-    coefficients = np.linalg.lstsq(basis, state.omega, rcond=None)[0]
+    coefficients = np.linalg.lstsq(basis, state.crank_speed, rcond=None)[0]
     amplitude = np.hypot(coefficients[1:21], coefficients[21:]) / coefficients[0]
     assert np.all(amplitude[:6] > 3e-3) and 1e-3 < amplitude[6] < 1.5e-3 and np.all(amplitude[7:] < 7e-4)
     assert math.sqrt(0.5 * np.sum(amplitude[6:] ** 2)) < 1.5e-3

@@ -172,8 +172,8 @@ def test_periodic_solution_ends_at_its_start_speed(machine, solution):
     # Just after the bottom dead position the upstroke starts at omega_0; just before
     # it, the downstroke ends: both must agree to 1e-9 (plus the tiny slope over 1e-9 rad).
     ends = steady_state(machine, np.array([dead.crank_angle_bottom, dead.crank_angle_bottom - 1e-9]))
-    assert ends.omega[0] == pytest.approx(solution.summary.start_speed, rel=1e-12)
-    assert ends.omega[1] == pytest.approx(ends.omega[0], rel=1e-9)
+    assert ends.crank_speed[0] == pytest.approx(solution.summary.start_speed, rel=1e-12)
+    assert ends.crank_speed[1] == pytest.approx(ends.crank_speed[0], rel=1e-9)
     assert solution.summary.convergence.periodicity_error <= 1e-9
 
 
@@ -198,22 +198,22 @@ def test_angle_mean_speed_follows_from_the_energy_balance(machine):
     r = steady_state(machine, theta)
     u, motor = machine.drive_ratio, machine.motor
     expected = (r.summary.energy_per_cycle / (2 * math.pi) - motor.a * u) / (motor.b * u**2)
-    assert np.mean(r.omega) == pytest.approx(expected, rel=1e-7)
+    assert np.mean(r.crank_speed) == pytest.approx(expected, rel=1e-7)
 
 
 def test_epsilon_is_the_time_derivative_of_omega_and_time_integrates_dtheta_over_omega(machine):
     theta = crank_grid(7200)
     r = steady_state(machine, theta)
     h = theta[1] - theta[0]
-    domega = (np.roll(r.omega, -1) - np.roll(r.omega, 1)) / (2 * h)
+    domega = (np.roll(r.crank_speed, -1) - np.roll(r.crank_speed, 1)) / (2 * h)
     # epsilon has a kink at the dead positions (the load changes there), where central
     # differences are only first order: leave those neighbourhoods out.
     dead = dead_positions(machine.linkage)
     far = np.ones(theta.size, bool)
     for angle in (dead.crank_angle_bottom, dead.crank_angle_top):
         far &= np.abs((theta - angle + math.pi) % (2 * math.pi) - math.pi) > 3 * h
-    np.testing.assert_allclose(r.epsilon[far], (r.omega * domega)[far], rtol=0, atol=1e-5 * np.max(np.abs(r.epsilon)))
-    period = np.sum(h / r.omega)  # periodic trapezoid
+    np.testing.assert_allclose(r.crank_acceleration[far], (r.crank_speed * domega)[far], rtol=0, atol=1e-5 * np.max(np.abs(r.crank_acceleration)))
+    period = np.sum(h / r.crank_speed)  # periodic trapezoid
     assert period == pytest.approx(r.summary.period, rel=1e-9)
     assert r.summary.mean_speed == pytest.approx(2 * math.pi / period, rel=1e-9)
     assert r.time[0] == 0.0 and np.all(np.diff(r.time) > 0)
@@ -225,7 +225,7 @@ def test_results_converge_as_the_tolerance_tightens(machine):
     errors = []
     for rtol in (1e-5, 1e-7, 1e-9):
         r = steady_state(machine, theta, rtol=rtol)
-        error = np.max(np.abs(r.omega - reference.omega)) / np.max(reference.omega)
+        error = np.max(np.abs(r.crank_speed - reference.crank_speed)) / np.max(reference.crank_speed)
         errors.append(error)
         assert error <= 100 * rtol
         assert abs(r.summary.energy_per_cycle / reference.summary.energy_per_cycle - 1) <= 100 * rtol
@@ -254,12 +254,12 @@ def test_uniform_columns_are_the_kinematics_at_the_rated_speed(machine, solution
 
 def test_motor_columns_and_inertia_torque_are_consistent(machine, solution):
     u = machine.drive_ratio
-    np.testing.assert_allclose(solution.motor_speed, u * solution.omega, rtol=1e-15)
+    np.testing.assert_allclose(solution.motor_speed, u * solution.crank_speed, rtol=1e-15)
     np.testing.assert_allclose(solution.power, solution.motor_torque * solution.motor_speed, rtol=1e-15)
     # Crank-shaft balance at every angle: drive torque = load + gravity + inertia torque.
     balance = solution.motor_torque * u - solution.rod_load_torque - solution.gravity_torque - solution.inertia_torque
     assert np.max(np.abs(balance)) <= 1e-9 * np.max(np.abs(solution.rod_load_torque))
-    np.testing.assert_allclose(solution.constant_inertia_torque, machine.constant_inertia * solution.epsilon)
+    np.testing.assert_allclose(solution.constant_inertia_torque, machine.constant_inertia * solution.crank_acceleration)
 
 
 # --- dynamometer cards ----------------------------------------------------------------

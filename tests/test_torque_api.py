@@ -126,7 +126,7 @@ def test_exact_equals_api_without_masses(name):
     spatial, _ = unit(name)
     load = card_like(THETA)
     assert counterbalance_from_masses(spatial.planar, ZERO) == (0.0, 0.0, 0.0)
-    both = compare_methods(spatial, ZERO, THETA, load, omega=1.2, alpha=0.05)
+    both = compare_methods(spatial, ZERO, THETA, load, crank_speed=1.2, crank_acceleration=0.05)
     peak = np.max(np.abs(both.api))
     assert np.max(np.abs(both.api - both.exact)) <= 1e-9 * peak
     assert np.max(np.abs(both.api - spatial.planar.torque_factor(THETA) * load)) <= 1e-12 * peak

@@ -45,7 +45,7 @@ def test_components_reproduce_kinetostatics_with_non_uniform_speed(name):
     omega = 1.1 * (1.0 + 0.1 * np.sin(2 * THETA))
     alpha = 0.3 * np.cos(THETA) - 0.2 * np.sin(2 * THETA)
     parts = torque_components(lk, THETA, load(THETA), bal, beam_inertia=beam_group_inertia(lk, m),
-                              rotary_inertia=crank_group_inertia(m), omega=omega, alpha=alpha)
+                              rotary_inertia=crank_group_inertia(m), crank_speed=omega, crank_acceleration=alpha)
     exact = exact_net_torque(spatial, m, THETA, load(THETA), omega, alpha)
     assert np.max(np.abs(parts.net - exact)) <= 1e-9 * np.max(np.abs(exact))
     assert np.max(np.abs(parts.articulating_inertia)) > 1e-3 * np.max(np.abs(exact))  # the term matters here
@@ -87,7 +87,7 @@ def test_articulating_inertia_is_the_rate_of_beam_kinetic_energy():
     omega = w0 * (1 + 0.1 * np.cos(w0 * t))
     alpha = -0.1 * w0**2 * np.sin(w0 * t)
     parts = torque_components(lk, theta(t) % (2 * np.pi), np.zeros_like(t), Counterbalance(0.0, 0.0),
-                              beam_inertia=ib, omega=omega, alpha=alpha)
+                              beam_inertia=ib, crank_speed=omega, crank_acceleration=alpha)
     assert parts.articulating_inertia * omega == pytest.approx(power, rel=1e-6, abs=1e-6 * np.max(np.abs(power)))
 
 

@@ -126,8 +126,8 @@ class CardRun:
 
     crank_angle: np.ndarray
     time: np.ndarray
-    omega: np.ndarray
-    epsilon: np.ndarray
+    crank_speed: np.ndarray
+    crank_acceleration: np.ndarray
     load: np.ndarray
     period: float
     crank_motion: str
@@ -182,7 +182,7 @@ def card_runs(unit, mechanism: Mechanism, source: CardSource, spm: float | None,
     runs, start = [], 0
     for theta in thetas:
         part = slice(start, start + theta.size)
-        runs.append(CardRun(theta, state.time[part], state.omega[part], state.epsilon[part],
+        runs.append(CardRun(theta, state.time[part], state.crank_speed[part], state.crank_acceleration[part],
                             card_load(reading.card, theta), state.summary.period, crank_motion))
         start += theta.size
     return reading, runs

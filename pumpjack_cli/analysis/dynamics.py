@@ -56,7 +56,7 @@ def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
     if isinstance(machine_.rod_load, WellLoad):
         summary += [Scalar(name, getattr(machine_.rod_load, field)) for name, field in _WELL_FORCES]
     columns = (
-        *crank_columns(result.crank_angle, result.time, result.omega, result.epsilon),
+        *crank_columns(result.crank_angle, result.time, result.crank_speed, result.crank_acceleration),
         Column("motor_speed", result.motor_speed),
         Column("motor_torque", result.motor_torque),
         Column("motor_power", result.power),

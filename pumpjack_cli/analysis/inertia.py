@@ -21,12 +21,12 @@ from ..quantities import parse_quantity
 from ..results import Column, Panel, Result, Scalar
 from .inputs import crank_speed
 
-def _comparison(title: str, c: InertiaComparison, omega: float, mass: float | None,
+def _comparison(title: str, c: InertiaComparison, crank_speed: float, mass: float | None,
                 extra: tuple[Scalar, ...] = ()) -> Result:
     """A law comparison: accelerations always, inertia forces -m a when a mass is known."""
     summary = [
-        Scalar("crank_speed", omega),
-        Scalar("strokes_per_minute", omega),
+        Scalar("crank_speed", crank_speed),
+        Scalar("strokes_per_minute", crank_speed),
         Scalar("stroke", c.stroke),
         *extra,
         Scalar("peak_acceleration", c.peak),
@@ -46,7 +46,7 @@ def _comparison(title: str, c: InertiaComparison, omega: float, mass: float | No
         ]
     columns = [
         Column("crank_angle", c.crank_angle),
-        Column("time", uniform_time(c.crank_angle, omega)),
+        Column("time", uniform_time(c.crank_angle, crank_speed)),
         Column("position", c.position),
         Column("velocity", c.velocity),
         Column("acceleration", c.acceleration),

@@ -35,7 +35,7 @@ DEVIATIONS = {
 
 
 def _run_columns(run: CardRun) -> list[Column]:
-    return [*crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
+    return [*crank_columns(run.crank_angle, run.time, run.crank_speed, run.crank_acceleration),
             Column("rod_load", run.load)]
 
 
@@ -57,7 +57,7 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, crank_motio
     masses = mass_model(unit, counterweight_count, counterweight_radius)
     spatial = unit.geometry.spatial(unit.name)
     reading, runs = card_runs(unit, spatial.planar, card, spm, (steps, SUMMARY_STEPS), crank_motion)
-    r, dense = (joint_reactions("rational", spatial, masses, run.crank_angle, run.omega, run.epsilon, run.load,
+    r, dense = (joint_reactions("rational", spatial, masses, run.crank_angle, run.crank_speed, run.crank_acceleration, run.load,
                                 weights=weights, inertia=inertia).reactions for run in runs)
     run, theta = runs[0], runs[1].crank_angle
     columns = _run_columns(run)
@@ -116,7 +116,7 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, cr
     _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), crank_motion)
 
     def solve(run: CardRun):
-        motion = (masses, run.crank_angle, run.omega, run.epsilon, run.load)
+        motion = (masses, run.crank_angle, run.crank_speed, run.crank_acceleration, run.load)
         real = joint_reactions("real", ideal, *motion, actual=actual, tilts=errors.tilts(),
                                section=unit.pitman_section.model(), joints=pins.model())
         return (joint_reactions("rational", ideal, *motion).reactions, joint_reactions("rational", actual, *motion).reactions,

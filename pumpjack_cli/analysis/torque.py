@@ -102,13 +102,13 @@ def _torques(unit, linkage, masses, balance: Counterbalance, run: CardRun, metho
     parts = torque_components(linkage, run.crank_angle, run.load, balance,
                               beam_inertia=beam_group_inertia(linkage, masses) if masses else 0.0,
                               rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
-                              omega=run.omega, alpha=run.epsilon)
+                              crank_speed=run.crank_speed, crank_acceleration=run.crank_acceleration)
     api = (parts.rod_load + parts.structural + parts.counterbalance + parts.articulating_inertia
            + parts.rotary_inertia)
     exact = None
     if masses is not None:
         basis = _exact_basis(unit.geometry.spatial(unit.name), masses, run.crank_angle.tobytes())
-        exact = basis.torque(run.load, run.omega, run.epsilon)
+        exact = basis.torque(run.load, run.crank_speed, run.crank_acceleration)
     return _Torques(run, parts, api, exact, exact if method == "exact" else api)
 
 
@@ -170,7 +170,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     balance, moment_known = counterbalance(unit, masses)
     out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
-    dt = 1.0 / dense.run.omega  # time share of each point of the uniform crank-angle grid
+    dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
     sine = np.sin(theta - balance.offset)
     rod_torque = linkage.torque_factor(theta) * (dense.run.load - balance.structural_unbalance)
     recommendation = recommend_counterbalance(criterion, linkage, theta, dense.run.load, balance,
@@ -254,7 +254,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
     run, parts = t.run, t.components
     m = linkage.motion(run.crank_angle)
     columns = [
-        *crank_columns(run.crank_angle, run.time, run.omega, run.epsilon),
+        *crank_columns(run.crank_angle, run.time, run.crank_speed, run.crank_acceleration),
         Column("position", m.rod_position),
         Column("rod_load", run.load),
         Column("torque_factor", m.torque_factor),

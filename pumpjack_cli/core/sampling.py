@@ -144,14 +144,14 @@ def signed_extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Ext
     return Extreme(float(values[top]), float(theta[top])), Extreme(float(values[bottom]), float(theta[bottom]))
 
 
-def uniform_time(crank_angle: np.ndarray, omega: float) -> np.ndarray:
+def uniform_time(crank_angle: np.ndarray, crank_speed: float) -> np.ndarray:
     """Time from crank angle 0 at uniform rotation, t = theta / omega.
 
     Parameters
     ----------
     crank_angle : numpy.ndarray
         theta [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -164,15 +164,15 @@ def uniform_time(crank_angle: np.ndarray, omega: float) -> np.ndarray:
     >>> uniform_time(np.array([0.0, np.pi]), np.pi / 3).tolist()   # half a 6 s cycle
     [0.0, 3.0]
     """
-    return crank_angle / omega
+    return crank_angle / crank_speed
 
 
-def cycle_period(omega: float) -> float:
+def cycle_period(crank_speed: float) -> float:
     """Time of one crank revolution, T = 2 pi / omega.
 
     Parameters
     ----------
-    omega : float
+    crank_speed : float
         Mean crank speed [1/s].
 
     Returns
@@ -185,7 +185,7 @@ def cycle_period(omega: float) -> float:
     >>> round(cycle_period(2 * np.pi / 6), 12)   # 10 strokes per minute
     6.0
     """
-    return 2.0 * np.pi / omega
+    return 2.0 * np.pi / crank_speed
 
 
 def peak(theta: np.ndarray, values: np.ndarray) -> Extreme:

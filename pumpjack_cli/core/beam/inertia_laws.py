@@ -29,7 +29,7 @@ from ..mechanism import Mechanism
 from .geometry import Linkage
 
 
-def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> RodMotion:
+def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, crank_speed: float) -> RodMotion:
     """Polished-rod motion under the chord law for uniform crank rotation.
 
         s = (A/C) d (x(phi) - x(phi_bottom)),  v = (A/C) d dx/dt,  a = (A/C) d d2x/dt2,
@@ -46,7 +46,7 @@ def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> R
         The unit [m].
     crank_angle : numpy.ndarray
         theta [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -74,8 +74,8 @@ def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> R
     theta = np.asarray(crank_angle, dtype=float)
     phi = chord.phase + theta
     bottom = chord.phase + linkage.dead_positions().crank_angle_bottom
-    slider = exact_motion(chord.slider, phi, omega)
-    start = exact_motion(chord.slider, np.array(bottom), omega).position
+    slider = exact_motion(chord.slider, phi, crank_speed)
+    start = exact_motion(chord.slider, np.array(bottom), crank_speed).position
     scale = chord.scale
     return RodMotion(
         position=scale * (slider.position - start),
@@ -88,18 +88,18 @@ def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> R
 BEAM_LAWS = (*APPROXIMATIONS, "chord")
 
 
-def _rod_laws(linkage: Mechanism, crank_angle: np.ndarray, omega: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
+def _rod_laws(linkage: Mechanism, crank_angle: np.ndarray, crank_speed: float) -> tuple[RodMotion, dict[str, np.ndarray]]:
     """Exact polished-rod motion and the acceleration of every law of :data:`BEAM_LAWS`."""
     dead = linkage.dead_positions()
     m = linkage.motion(crank_angle)
-    exact = rod_motion(m, omega)
+    exact = rod_motion(m, crank_speed)
     from_bottom = crank_angle - dead.crank_angle_bottom
-    laws = {name: approximate_motion(name, linkage, from_bottom, omega).acceleration for name in APPROXIMATIONS}
-    laws["chord"] = chord_motion(linkage, crank_angle, omega).acceleration
+    laws = {name: approximate_motion(name, linkage, from_bottom, crank_speed).acceleration for name in APPROXIMATIONS}
+    laws["chord"] = chord_motion(linkage, crank_angle, crank_speed).acceleration
     return exact, laws
 
 
-def beam_inertia_laws(linkage: Mechanism, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
+def beam_inertia_laws(linkage: Mechanism, crank_speed: float, crank_angle: np.ndarray) -> InertiaComparison:
     """Exact polished-rod motion and every law of :data:`BEAM_LAWS`, with their errors.
 
     The inertia force of a mass m moving with the polished rod is -m a for every law,
@@ -111,7 +111,7 @@ def beam_inertia_laws(linkage: Mechanism, omega: float, crank_angle: np.ndarray)
     ----------
     linkage : Mechanism
         The unit [m].
-    omega : float
+    crank_speed : float
         Crank speed [1/s], positive (uniform rotation).
     crank_angle : numpy.ndarray
         Output crank angles [rad].
@@ -139,13 +139,13 @@ def beam_inertia_laws(linkage: Mechanism, omega: float, crank_angle: np.ndarray)
     >>> round(c.stroke, 4), sorted(c.errors)
     (2.9128, ['chord', 'harmonic', 'two_term'])
     """
-    if not omega > 0:
-        raise ValueError(f"crank speed must be positive, got {omega} 1/s")
+    if not crank_speed > 0:
+        raise ValueError(f"crank speed must be positive, got {crank_speed} 1/s")
     theta = np.asarray(crank_angle, dtype=float)
     dead = linkage.dead_positions()
-    exact, laws = _rod_laws(linkage, theta, omega)
+    exact, laws = _rod_laws(linkage, theta, crank_speed)
     dense = crank_grid(DENSE_STEPS)
-    dense_exact, dense_laws = _rod_laws(linkage, dense, omega)
+    dense_exact, dense_laws = _rod_laws(linkage, dense, crank_speed)
     exact_peak = largest_magnitude(dense, dense_exact.acceleration)
     return InertiaComparison(
         crank_angle=theta,

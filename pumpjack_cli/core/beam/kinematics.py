@@ -51,7 +51,7 @@ class RodMotion:
     acceleration: np.ndarray
 
 
-def rod_motion(m: Motion, omega: np.ndarray | float, epsilon: np.ndarray | float = 0.0) -> RodMotion:
+def rod_motion(m: Motion, crank_speed: np.ndarray | float, crank_acceleration: np.ndarray | float = 0.0) -> RodMotion:
     """Exact polished-rod motion for any crank speed and acceleration.
 
     The chain rule on s(theta(t)):
@@ -62,9 +62,9 @@ def rod_motion(m: Motion, omega: np.ndarray | float, epsilon: np.ndarray | float
     ----------
     m : Motion
         The mechanism's motion at the crank angles (position s [m], TF [m], TF' [m/rad]).
-    omega : float or numpy.ndarray
+    crank_speed : float or numpy.ndarray
         Crank speed [1/s].
-    epsilon : float or numpy.ndarray
+    crank_acceleration : float or numpy.ndarray
         Crank acceleration [1/s²]; 0 for uniform rotation.
 
     Returns
@@ -83,18 +83,18 @@ def rod_motion(m: Motion, omega: np.ndarray | float, epsilon: np.ndarray | float
 
     >>> inch = 0.0254
     >>> c114 = Linkage(72 * inch, 64 * inch, 24 * inch, 74.5 * inch, 64 * inch, 75 * inch)
-    >>> rod = rod_motion(c114.motion(np.radians([90.0])), omega=1.0)
+    >>> rod = rod_motion(c114.motion(np.radians([90.0])), crank_speed=1.0)
     >>> round(float(rod.velocity[0]) / inch, 2)   # in/s at 1 rad/s
     26.45
     """
     return RodMotion(
         position=m.rod_position,
-        velocity=m.torque_factor * omega,
-        acceleration=m.torque_factor_rate * omega**2 + m.torque_factor * epsilon,
+        velocity=m.torque_factor * crank_speed,
+        acceleration=m.torque_factor_rate * crank_speed**2 + m.torque_factor * crank_acceleration,
     )
 
 
-def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
+def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, crank_speed: float) -> RodMotion:
     """Elementary theory: simple harmonic motion of the polished rod.
 
         s = r_e (1 - cos phi),  v = r_e omega sin phi,  a = r_e omega^2 cos phi,
@@ -107,7 +107,7 @@ def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, omega: floa
         r_e = R A / C [m].
     crank_from_bottom : numpy.ndarray
         phi [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -128,12 +128,12 @@ def harmonic_motion(amplitude: float, crank_from_bottom: np.ndarray, omega: floa
     phi = np.asarray(crank_from_bottom, dtype=float)
     return RodMotion(
         position=amplitude * (1.0 - np.cos(phi)),
-        velocity=amplitude * omega * np.sin(phi),
-        acceleration=amplitude * omega**2 * np.cos(phi),
+        velocity=amplitude * crank_speed * np.sin(phi),
+        acceleration=amplitude * crank_speed**2 * np.cos(phi),
     )
 
 
-def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
+def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.ndarray, crank_speed: float) -> RodMotion:
     """Refined theory: harmonic motion plus the second harmonic of a slider-crank.
 
         s = r_e [(1 - cos phi) + (lambda/2) sin^2 phi],
@@ -150,7 +150,7 @@ def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.
         lambda = R / P (dimensionless).
     crank_from_bottom : numpy.ndarray
         phi, crank travel from the bottom dead position [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -174,12 +174,12 @@ def two_term_motion(amplitude: float, crank_ratio: float, crank_from_bottom: np.
     phi = np.asarray(crank_from_bottom, dtype=float)
     return RodMotion(
         position=amplitude * ((1.0 - np.cos(phi)) + 0.5 * crank_ratio * np.sin(phi) ** 2),
-        velocity=amplitude * omega * (np.sin(phi) + 0.5 * crank_ratio * np.sin(2.0 * phi)),
-        acceleration=amplitude * omega**2 * (np.cos(phi) + crank_ratio * np.cos(2.0 * phi)),
+        velocity=amplitude * crank_speed * (np.sin(phi) + 0.5 * crank_ratio * np.sin(2.0 * phi)),
+        acceleration=amplitude * crank_speed**2 * (np.cos(phi) + crank_ratio * np.cos(2.0 * phi)),
     )
 
 
-def approximate_motion(method: str, mechanism: Mechanism, crank_from_bottom: np.ndarray, omega: float) -> RodMotion:
+def approximate_motion(method: str, mechanism: Mechanism, crank_from_bottom: np.ndarray, crank_speed: float) -> RodMotion:
     """Polished-rod motion by one of the textbook approximations of :data:`APPROXIMATIONS`.
 
     The amplitude is r_e = R A / C and, for ``"two_term"``, lambda = R / P
@@ -194,7 +194,7 @@ def approximate_motion(method: str, mechanism: Mechanism, crank_from_bottom: np.
         The unit [m].
     crank_from_bottom : numpy.ndarray
         phi, crank travel from the bottom dead position [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -222,9 +222,9 @@ def approximate_motion(method: str, mechanism: Mechanism, crank_from_bottom: np.
     """
     crank = mechanism.equivalent_crank()
     if method == "harmonic":
-        return harmonic_motion(crank.amplitude, crank_from_bottom, omega)
+        return harmonic_motion(crank.amplitude, crank_from_bottom, crank_speed)
     if method == "two_term":
-        return two_term_motion(crank.amplitude, crank.crank_ratio, crank_from_bottom, omega)
+        return two_term_motion(crank.amplitude, crank.crank_ratio, crank_from_bottom, crank_speed)
     raise ValueError(f"unknown approximation {method!r}; use one of {', '.join(APPROXIMATIONS)}")
 
 
@@ -345,18 +345,18 @@ def _approximation_error(exact: RodMotion, approx: RodMotion, stroke: float) -> 
     )
 
 
-def _summary(linkage: Mechanism, dead: DeadPositions, omega: float) -> KinematicsSummary:
+def _summary(linkage: Mechanism, dead: DeadPositions, crank_speed: float) -> KinematicsSummary:
     theta = crank_grid(_DENSE_STEPS)
     m = linkage.motion(theta)
-    exact = rod_motion(m, omega)
+    exact = rod_motion(m, crank_speed)
     stroke = dead.stroke
     from_bottom = theta - dead.crank_angle_bottom
     v_max, v_min = extremes(theta, exact.velocity)
     a_max, a_min = extremes(theta, exact.acceleration)
     tf_max, tf_min = extremes(theta, m.torque_factor)
     return KinematicsSummary(
-        crank_speed=omega,
-        period=cycle_period(omega),
+        crank_speed=crank_speed,
+        period=cycle_period(crank_speed),
         stroke=stroke,
         crank_angle_bottom=dead.crank_angle_bottom,
         crank_angle_top=dead.crank_angle_top,
@@ -369,13 +369,13 @@ def _summary(linkage: Mechanism, dead: DeadPositions, omega: float) -> Kinematic
         max_torque_factor=tf_max,
         min_torque_factor=tf_min,
         approximation_errors={
-            name: _approximation_error(exact, approximate_motion(name, linkage, from_bottom, omega), stroke)
+            name: _approximation_error(exact, approximate_motion(name, linkage, from_bottom, crank_speed), stroke)
             for name in APPROXIMATIONS
         },
     )
 
 
-def uniform_kinematics(linkage: Mechanism, omega: float, steps: int = 360) -> KinematicsResult:
+def uniform_kinematics(linkage: Mechanism, crank_speed: float, steps: int = 360) -> KinematicsResult:
     """Kinematics of every link for uniform crank rotation.
 
     One array computation over ``steps`` crank angles (see :func:`crank_grid`); time is
@@ -388,7 +388,7 @@ def uniform_kinematics(linkage: Mechanism, omega: float, steps: int = 360) -> Ki
     ----------
     linkage : Mechanism
         The unit [m].
-    omega : float
+    crank_speed : float
         Crank speed [1/s], positive.
     steps : int
         Crank positions per revolution of the output (dimensionless).
@@ -418,24 +418,24 @@ def uniform_kinematics(linkage: Mechanism, omega: float, steps: int = 360) -> Ki
     >>> round(result.summary.stroke, 4), round(result.summary.period, 3)
     (2.9128, 5.501)
     """
-    if not omega > 0:
-        raise ValueError(f"crank speed must be positive, got {omega} 1/s")
+    if not crank_speed > 0:
+        raise ValueError(f"crank speed must be positive, got {crank_speed} 1/s")
     dead = linkage.dead_positions()
     theta = crank_grid(steps)
     m = linkage.motion(theta)
-    rod = rod_motion(m, omega)
+    rod = rod_motion(m, crank_speed)
     from_bottom = theta - dead.crank_angle_bottom
     return KinematicsResult(
         crank_angle=theta,
-        time=uniform_time(theta, omega),
+        time=uniform_time(theta, crank_speed),
         rod=rod,
         torque_factor=m.torque_factor,
         beam_angle=m.beam_angle,
-        beam_angular_velocity=m.beam_rate * omega,
-        beam_angular_acceleration=m.beam_rate2 * omega**2,
+        beam_angular_velocity=m.beam_rate * crank_speed,
+        beam_angular_acceleration=m.beam_rate2 * crank_speed**2,
         pitman_angle=m.pitman_angle,
-        pitman_angular_velocity=m.pitman_rate * omega,
-        pitman_angular_acceleration=m.pitman_rate2 * omega**2,
-        approximations={name: approximate_motion(name, linkage, from_bottom, omega) for name in APPROXIMATIONS},
-        summary=_summary(linkage, dead, omega),
+        pitman_angular_velocity=m.pitman_rate * crank_speed,
+        pitman_angular_acceleration=m.pitman_rate2 * crank_speed**2,
+        approximations={name: approximate_motion(name, linkage, from_bottom, crank_speed) for name in APPROXIMATIONS},
+        summary=_summary(linkage, dead, crank_speed),
     )

@@ -390,8 +390,8 @@ def rational_mechanism(
     spatial: SpatialLinkage,
     masses: MassModel,
     crank_angle: np.ndarray,
-    omega1: np.ndarray | float,
-    epsilon1: np.ndarray | float,
+    crank_speed: np.ndarray | float,
+    crank_acceleration: np.ndarray | float,
     rod_load: np.ndarray,
     *,
     weights: bool = True,
@@ -410,9 +410,9 @@ def rational_mechanism(
         Link masses [kg], centres [m], inertias [kg·m²].
     crank_angle : numpy.ndarray
         theta [rad].
-    omega1 : float or numpy.ndarray
+    crank_speed : float or numpy.ndarray
         Crank speed in the direction of rotation [1/s].
-    epsilon1 : float or numpy.ndarray
+    crank_acceleration : float or numpy.ndarray
         Crank acceleration in the direction of rotation [1/s²].
     rod_load : numpy.ndarray
         Polished-rod load at each crank angle [N].
@@ -455,10 +455,10 @@ def rational_mechanism(
     """
     theta = np.asarray(crank_angle, dtype=float)
     if theta.ndim != 1 or theta.size <= BLOCK:
-        sm = spatial_motion(spatial, crank_angle, omega1, epsilon1)
+        sm = spatial_motion(spatial, crank_angle, crank_speed, crank_acceleration)
         loads = applied_loads(spatial, masses, sm, rod_load, weights=weights, inertia=inertia)
         return sm, rational_reactions(spatial, sm, loads)
-    omega, epsilon, load = (np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (omega1, epsilon1, rod_load))
+    omega, epsilon, load = (np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (crank_speed, crank_acceleration, rod_load))
     starts = range(0, theta.size, BLOCK)
     parts = [rational_mechanism(spatial, masses, theta[s:s + BLOCK], omega[s:s + BLOCK], epsilon[s:s + BLOCK],
                                 load[s:s + BLOCK], weights=weights, inertia=inertia) for s in starts]

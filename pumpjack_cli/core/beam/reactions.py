@@ -63,8 +63,8 @@ def joint_reactions(
     spatial: SpatialLinkage,
     masses: MassModel,
     crank_angle: np.ndarray,
-    omega1: np.ndarray | float,
-    epsilon1: np.ndarray | float,
+    crank_speed: np.ndarray | float,
+    crank_acceleration: np.ndarray | float,
     rod_load: np.ndarray,
     *,
     actual: SpatialLinkage | None = None,
@@ -87,7 +87,7 @@ def joint_reactions(
         Masses [kg], centres [m], inertias [kg·m²].
     crank_angle : numpy.ndarray
         theta [rad].
-    omega1, epsilon1 : float or numpy.ndarray
+    crank_speed, crank_acceleration : float or numpy.ndarray
         Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
     rod_load : numpy.ndarray
         Polished-rod load at each crank angle [N].
@@ -117,14 +117,14 @@ def joint_reactions(
     [Spatial7SK12], [PopovychSenchishak].
     """
     if method == "rational":
-        motion, reactions = rational_mechanism(spatial, masses, crank_angle, omega1, epsilon1, rod_load,
+        motion, reactions = rational_mechanism(spatial, masses, crank_angle, crank_speed, crank_acceleration, rod_load,
                                                weights=weights, inertia=inertia)
         return ReactionSolution(motion, reactions)
     if method == "real":
         if section is None:
             raise ValueError("the real mechanism needs the pitman's elastic section")
         motion, moments, reactions = real_mechanism(spatial, actual or spatial, tilts, section, masses, crank_angle,
-                                                    omega1, epsilon1, rod_load, weights=weights, inertia=inertia,
+                                                    crank_speed, crank_acceleration, rod_load, weights=weights, inertia=inertia,
                                                     joints=joints)
         return ReactionSolution(motion, reactions, moments)
     raise ValueError(f"unknown mechanism model {method!r}; use one of {', '.join(_METHODS)}")

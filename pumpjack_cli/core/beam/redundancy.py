@@ -392,8 +392,8 @@ def real_mechanism(
     section: PitmanSection,
     masses: MassModel,
     crank_angle: np.ndarray,
-    omega1: np.ndarray | float,
-    epsilon1: np.ndarray | float,
+    crank_speed: np.ndarray | float,
+    crank_acceleration: np.ndarray | float,
     rod_load: np.ndarray,
     *,
     weights: bool = True,
@@ -423,7 +423,7 @@ def real_mechanism(
         Masses [kg], centres [m], inertias [kg·m²].
     crank_angle : numpy.ndarray
         theta [rad].
-    omega1, epsilon1 : float or numpy.ndarray
+    crank_speed, crank_acceleration : float or numpy.ndarray
         Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
     rod_load : numpy.ndarray
         Polished-rod load at each crank angle [N].
@@ -466,13 +466,13 @@ def real_mechanism(
     """
     theta = np.asarray(crank_angle, dtype=float)
     if theta.size > CHUNK:  # bounded memory: about 50 kB per crank angle while it is solved
-        per = [np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (omega1, epsilon1, rod_load)]
+        per = [np.broadcast_to(np.asarray(v, dtype=float), theta.shape) for v in (crank_speed, crank_acceleration, rod_load)]
         parts = [real_mechanism(ideal, actual, tilts, section, masses, theta[k:k + CHUNK],
                                 *(v[k:k + CHUNK] for v in per), weights=weights, inertia=inertia, joints=joints)
                  for k in range(0, theta.size, CHUNK)]
         return tuple(_joined([part[i] for part in parts]) for i in range(3))
-    ideal_motion = spatial_motion(ideal, crank_angle, omega1, epsilon1)
-    sm = spatial_motion(actual, crank_angle, omega1, epsilon1)
+    ideal_motion = spatial_motion(ideal, crank_angle, crank_speed, crank_acceleration)
+    sm = spatial_motion(actual, crank_angle, crank_speed, crank_acceleration)
     loads = applied_loads(actual, masses, sm, rod_load, weights=weights, inertia=inertia)
     a2, u2, a3, u3 = pin_axes(actual, sm, tilts)
     bases = {"m12": _moment_basis(a2), "m24": _moment_basis(u2), "m13": _moment_basis(a3), "m34": _moment_basis(u3)}

@@ -282,7 +282,7 @@ def _pose(spatial: SpatialLinkage, theta: np.ndarray) -> _Pose:
 
 
 def spatial_motion(
-    spatial: SpatialLinkage, crank_angle: np.ndarray, omega1: np.ndarray | float, epsilon1: np.ndarray | float = 0.0
+    spatial: SpatialLinkage, crank_angle: np.ndarray, crank_speed: np.ndarray | float, crank_acceleration: np.ndarray | float = 0.0
 ) -> SpatialMotion:
     """Positions, angular velocities and accelerations of every link, whole revolution at once.
 
@@ -298,9 +298,9 @@ def spatial_motion(
         The mechanism [m, rad].
     crank_angle : numpy.ndarray
         theta, (N,) [rad].
-    omega1 : float or numpy.ndarray
+    crank_speed : float or numpy.ndarray
         Crank speed in the direction of rotation [1/s].
-    epsilon1 : float or numpy.ndarray
+    crank_acceleration : float or numpy.ndarray
         Crank acceleration in the direction of rotation [1/s²].
 
     Returns
@@ -330,8 +330,8 @@ def spatial_motion(
     """
     theta = np.asarray(crank_angle, dtype=float)
     n = theta.size
-    omega1 = np.broadcast_to(np.asarray(omega1, dtype=float), (n,))
-    epsilon1 = np.broadcast_to(np.asarray(epsilon1, dtype=float), (n,))
+    crank_speed = np.broadcast_to(np.asarray(crank_speed, dtype=float), (n,))
+    crank_acceleration = np.broadcast_to(np.asarray(crank_acceleration, dtype=float), (n,))
     pose = _pose(spatial, theta)
     b, e = spatial.crank_half_spacing, spatial.equalizer_half_length
     zeros = np.zeros(n)
@@ -347,8 +347,8 @@ def spatial_motion(
     l4, l41 = d - pb, d - pb1
     l5 = -d
     spin = spatial.crank_spin
-    w1 = omega1[:, None] * spin
-    e1 = epsilon1[:, None] * spin
+    w1 = crank_speed[:, None] * spin
+    e1 = crank_acceleration[:, None] * spin
     k = _loop_matrix(l2, l3, l4, l41, l5, line)
 
     rhs_v = np.concatenate([-cross(w1, l1), -cross(w1, l11), np.zeros((n, 2))], axis=1)
@@ -372,8 +372,8 @@ def spatial_motion(
     e5 = np.stack([zeros, zeros, y[:, 7]], axis=-1)
     return SpatialMotion(
         crank_angle=theta,
-        omega1=omega1,
-        epsilon1=epsilon1,
+        omega1=crank_speed,
+        epsilon1=crank_acceleration,
         crank_shaft=o,
         pin_a=a,
         pin_a1=a1,

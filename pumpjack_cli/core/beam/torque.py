@@ -144,7 +144,7 @@ def crank_group_inertia(masses: MassModel) -> float:
 
 def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray, balance: Counterbalance, *,
                       beam_inertia: float = 0.0, rotary_inertia: float = 0.0,
-                      omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> TorqueComponents:
+                      crank_speed: np.ndarray | float = 0.0, crank_acceleration: np.ndarray | float = 0.0) -> TorqueComponents:
     """The gearbox torque terms of [Takacs2016] at each crank angle, as arrays.
 
     Parameters
@@ -161,7 +161,7 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
         I_b [kg·m²] about the saddle bearing (:func:`beam_group_inertia`).
     rotary_inertia : float
         I_r [kg·m²] about the crank shaft (:func:`crank_group_inertia`).
-    omega, alpha : ndarray or float
+    crank_speed, crank_acceleration : ndarray or float
         Crank speed [1/s] and acceleration [1/s²] in the direction of rotation.
 
     Returns
@@ -176,19 +176,19 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
     """
     theta = np.asarray(crank_angle, dtype=float)
     w = np.asarray(rod_load, dtype=float)
-    omega = np.broadcast_to(np.asarray(omega, dtype=float), theta.shape)
-    alpha = np.broadcast_to(np.asarray(alpha, dtype=float), theta.shape)
-    _finite("torque components", theta, w, omega, alpha)
+    crank_speed = np.broadcast_to(np.asarray(crank_speed, dtype=float), theta.shape)
+    crank_acceleration = np.broadcast_to(np.asarray(crank_acceleration, dtype=float), theta.shape)
+    _finite("torque components", theta, w, crank_speed, crank_acceleration)
     m = linkage.motion(theta)
     tf = m.torque_factor
-    beam_acceleration = m.beam_rate2 * omega**2 + m.beam_rate * alpha
+    beam_acceleration = m.beam_rate2 * crank_speed**2 + m.beam_rate * crank_acceleration
     return TorqueComponents(
         crank_angle=theta,
         rod_load=tf * w,
         structural=-tf * balance.structural_unbalance,
         counterbalance=-balance.moment * np.sin(theta - balance.offset),
         articulating_inertia=m.beam_rate * beam_inertia * beam_acceleration,
-        rotary_inertia=rotary_inertia * alpha,
+        rotary_inertia=rotary_inertia * crank_acceleration,
     )
 
 
@@ -256,15 +256,15 @@ def torque_methods() -> tuple[str, ...]:
 
 
 def exact_net_torque(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray, rod_load: np.ndarray,
-                     omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> np.ndarray:
+                     crank_speed: np.ndarray | float = 0.0, crank_acceleration: np.ndarray | float = 0.0) -> np.ndarray:
     """Net gearbox torque [N·m] of the rational spatial mechanism: the balancing torque M_z
     of :func:`.kinetostatics.rational_mechanism` with weights and inertia of every link
     ([Spatial7SK12], [PopovychSenchishak]); omega [1/s], alpha [1/s²] the crank speed and
     acceleration (0: static)."""
     theta = np.asarray(crank_angle, dtype=float)
     load = np.asarray(rod_load, dtype=float)
-    _finite("exact net torque", theta, load, np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float))
-    _, reactions = rational_mechanism(spatial, masses, theta, omega, alpha, load)
+    _finite("exact net torque", theta, load, np.asarray(crank_speed, dtype=float), np.asarray(crank_acceleration, dtype=float))
+    _, reactions = rational_mechanism(spatial, masses, theta, crank_speed, crank_acceleration, load)
     return reactions.net_torque
 
 
@@ -288,12 +288,12 @@ class ExactTorqueBasis:
     per_speed_squared: np.ndarray
     per_acceleration: np.ndarray
 
-    def torque(self, rod_load, omega=0.0, alpha=0.0) -> np.ndarray:
+    def torque(self, rod_load, crank_speed=0.0, crank_acceleration=0.0) -> np.ndarray:
         """M_z [N·m] for the polished-rod load [N] and crank speed [1/s] and acceleration [1/s²]
         at the basis' crank angles."""
-        omega = np.asarray(omega, dtype=float)
-        return (self.static + self.per_load * np.asarray(rod_load, dtype=float) + self.per_speed_squared * omega**2
-                + self.per_acceleration * np.asarray(alpha, dtype=float))
+        crank_speed = np.asarray(crank_speed, dtype=float)
+        return (self.static + self.per_load * np.asarray(rod_load, dtype=float) + self.per_speed_squared * crank_speed**2
+                + self.per_acceleration * np.asarray(crank_acceleration, dtype=float))
 
 
 def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) -> np.ndarray:
@@ -319,14 +319,14 @@ def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: 
 
 
 def net_torque(method: str, spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray,
-               rod_load: np.ndarray, omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> np.ndarray:
+               rod_load: np.ndarray, crank_speed: np.ndarray | float = 0.0, crank_acceleration: np.ndarray | float = 0.0) -> np.ndarray:
     """Net gearbox torque [N·m] by ``method``: ``api`` (static, B, M, tau from the masses by
     :func:`.counterbalance.counterbalance_from_masses`; omega and alpha unused) or ``exact``
     (:func:`exact_net_torque`)."""
     if method not in TORQUE_METHODS:
         raise TorqueError(f"unknown torque method {method!r}; use one of {', '.join(TORQUE_METHODS)}")
     if method == "exact":
-        return exact_net_torque(spatial, masses, crank_angle, rod_load, omega, alpha)
+        return exact_net_torque(spatial, masses, crank_angle, rod_load, crank_speed, crank_acceleration)
     linkage = spatial.planar
     return api_net_torque(crank_angle, linkage.torque_factor(crank_angle), np.asarray(rod_load, dtype=float),
                           counterbalance_from_masses(linkage, masses))
@@ -343,10 +343,10 @@ class MethodComparison:
 
 
 def compare_methods(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray, rod_load: np.ndarray,
-                    omega: np.ndarray | float = 0.0, alpha: np.ndarray | float = 0.0) -> MethodComparison:
+                    crank_speed: np.ndarray | float = 0.0, crank_acceleration: np.ndarray | float = 0.0) -> MethodComparison:
     """Both methods side by side; their difference is the beam group's weight off level
     (cos psi), the pitmans' weight shared with the crank pins, and (omega, alpha != 0) inertia."""
     theta = np.asarray(crank_angle, dtype=float)
     return MethodComparison(theta, net_torque("api", spatial, masses, theta, rod_load),
-                            net_torque("exact", spatial, masses, theta, rod_load, omega, alpha),
+                            net_torque("exact", spatial, masses, theta, rod_load, crank_speed, crank_acceleration),
                             counterbalance_from_masses(spatial.planar, masses))

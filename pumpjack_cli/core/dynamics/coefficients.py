@@ -162,12 +162,12 @@ class Machine:
         """Crank speed at the motor's rated speed, omega_1 = omega_n / u [1/s] (:func:`.drive.rated_crank_speed`)."""
         return rated_crank_speed(self.motor.rated_speed, self.drive_ratio)
 
-    def drive_torque(self, omega: np.ndarray | float) -> np.ndarray | float:
+    def drive_torque(self, crank_speed: np.ndarray | float) -> np.ndarray | float:
         """Motor torque reduced to the crank, M_drive = (a + b u omega) u.
 
         Parameters
         ----------
-        omega : float or numpy.ndarray
+        crank_speed : float or numpy.ndarray
             Crank speed [1/s].
 
         Returns
@@ -179,7 +179,7 @@ class Machine:
         ----------
         [SK8Rotation2013] eq. 26.
         """
-        return self.motor.torque(self.drive_ratio * omega) * self.drive_ratio
+        return self.motor.torque(self.drive_ratio * crank_speed) * self.drive_ratio
 
 
 @dataclass(frozen=True)
@@ -385,7 +385,7 @@ def coefficients(machine: Machine, crank_angle: np.ndarray, upstroke: np.ndarray
     )
 
 
-def mean_rod_speeds(linkage: Mechanism, omega: float) -> tuple[float, float]:
+def mean_rod_speeds(linkage: Mechanism, crank_speed: float) -> tuple[float, float]:
     """Mean polished-rod speeds of the upstroke and the downstroke at uniform crank speed.
 
     v = S / t, with t = (crank travel of the stroke) / omega.
@@ -394,7 +394,7 @@ def mean_rod_speeds(linkage: Mechanism, omega: float) -> tuple[float, float]:
     ----------
     linkage : Linkage
         The four-bar [m].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -416,4 +416,4 @@ def mean_rod_speeds(linkage: Mechanism, omega: float) -> tuple[float, float]:
     True
     """
     dead = linkage.dead_positions()
-    return dead.stroke * omega / dead.upstroke_crank_travel, dead.stroke * omega / dead.downstroke_crank_travel
+    return dead.stroke * crank_speed / dead.upstroke_crank_travel, dead.stroke * crank_speed / dead.downstroke_crank_travel

@@ -195,8 +195,8 @@ class SteadyState:
 
     crank_angle: np.ndarray
     time: np.ndarray
-    omega: np.ndarray
-    epsilon: np.ndarray
+    crank_speed: np.ndarray
+    crank_acceleration: np.ndarray
     motor_speed: np.ndarray
     motor_torque: np.ndarray
     power: np.ndarray
@@ -426,8 +426,8 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
     return SteadyState(
         crank_angle=theta_out,
         time=(states[1] - time_zero) % period,
-        omega=omega,
-        epsilon=epsilon,
+        crank_speed=omega,
+        crank_acceleration=epsilon,
         motor_speed=motor_speed,
         motor_torque=motor_torque,
         power=motor_torque * motor_speed,

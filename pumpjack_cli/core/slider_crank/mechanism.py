@@ -63,7 +63,7 @@ class SliderMotion:
     acceleration: np.ndarray
 
 
-def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> SliderMotion:
+def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, crank_speed: float) -> SliderMotion:
     """Exact slider motion for uniform crank rotation.
 
     With u = r sin phi - e, u' = r cos phi, q = sqrt(l^2 - u^2):
@@ -83,7 +83,7 @@ def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) 
         r, l, e [m].
     crank_angle : numpy.ndarray
         phi [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -118,8 +118,8 @@ def exact_motion(mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) 
     q = np.sqrt(l * l - u * u)
     return SliderMotion(
         position=r * cos + q,
-        velocity=omega * (-r * sin - u * du / q),
-        acceleration=omega**2 * (-r * cos - (du * du - u * r * sin) / q - (u * du) ** 2 / q**3),
+        velocity=crank_speed * (-r * sin - u * du / q),
+        acceleration=crank_speed**2 * (-r * cos - (du * du - u * r * sin) / q - (u * du) ** 2 / q**3),
     )
 
 
@@ -246,7 +246,7 @@ def law_methods() -> tuple[str, ...]:
     return tuple(LAW_TERMS)
 
 
-def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: np.ndarray, omega: float) -> np.ndarray:
+def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: np.ndarray, crank_speed: float) -> np.ndarray:
     """Slider acceleration by an approximate law of :func:`law_methods`.
 
         a = -r omega^2 [cos phi + sum_j c_j cos 2j phi]
@@ -261,7 +261,7 @@ def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: n
         r, l [m] (the offset is ignored: the laws are those of the centric drive).
     crank_angle : numpy.ndarray
         phi [rad].
-    omega : float
+    crank_speed : float
         Crank speed [1/s].
 
     Returns
@@ -290,7 +290,7 @@ def approximate_acceleration(method: str, mechanism: SliderCrank, crank_angle: n
     c = series_coefficients(mechanism.crank_ratio, LAW_TERMS[method])
     harmonics = 2.0 * np.arange(1, c.size + 1)
     series = np.cos(phi[..., None] * harmonics) @ c if c.size else 0.0
-    return -mechanism.crank_radius * omega**2 * (np.cos(phi) + series)
+    return -mechanism.crank_radius * crank_speed**2 * (np.cos(phi) + series)
 
 
 @dataclass(frozen=True)
@@ -416,7 +416,7 @@ class InertiaComparison:
 DENSE_STEPS = 7200
 
 
-def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.ndarray) -> InertiaComparison:
+def slider_inertia_laws(mechanism: SliderCrank, crank_speed: float, crank_angle: np.ndarray) -> InertiaComparison:
     """Exact slider motion and every approximate law, with their errors, for uniform rotation.
 
     Position is x - x_inner, from the inner dead centre, away from the crank positive,
@@ -427,7 +427,7 @@ def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.nd
     ----------
     mechanism : SliderCrank
         r, l, e [m].
-    omega : float
+    crank_speed : float
         Crank speed [1/s], positive.
     crank_angle : numpy.ndarray
         Output grid [rad].
@@ -456,23 +456,23 @@ def slider_inertia_laws(mechanism: SliderCrank, omega: float, crank_angle: np.nd
     >>> round(c.peak, 12), round(c.errors["harmonic"].peak_error, 12)   # r(1 + lambda), lambda/(1 + lambda)
     (0.24, 0.166666666667)
     """
-    if not omega > 0:
-        raise ValueError(f"crank speed must be positive, got {omega} 1/s")
+    if not crank_speed > 0:
+        raise ValueError(f"crank speed must be positive, got {crank_speed} 1/s")
     dead = dead_centres(mechanism)
-    exact = exact_motion(mechanism, crank_angle, omega)
+    exact = exact_motion(mechanism, crank_angle, crank_speed)
     dense = crank_grid(DENSE_STEPS)
-    dense_exact = exact_motion(mechanism, dense, omega).acceleration
+    dense_exact = exact_motion(mechanism, dense, crank_speed).acceleration
     exact_peak = largest_magnitude(dense, dense_exact)
     return InertiaComparison(
         crank_angle=np.asarray(crank_angle, dtype=float),
         position=exact.position - dead.position_inner,
         velocity=exact.velocity,
         acceleration=exact.acceleration,
-        laws={name: approximate_acceleration(name, mechanism, crank_angle, omega) for name in LAW_TERMS},
+        laws={name: approximate_acceleration(name, mechanism, crank_angle, crank_speed) for name in LAW_TERMS},
         stroke=dead.stroke,
         peak=exact_peak.value,
         peak_crank_angle=exact_peak.crank_angle,
         errors=law_errors(
-            dense, dense_exact, {name: approximate_acceleration(name, mechanism, dense, omega) for name in LAW_TERMS}
+            dense, dense_exact, {name: approximate_acceleration(name, mechanism, dense, crank_speed) for name in LAW_TERMS}
         ),
     )
