@@ -17,7 +17,6 @@ from pathlib import Path
 import numpy as np
 
 from pumpjack_cli.analysis.card_runs import place
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import Card
 from pumpjack_cli.core.dynamics.periodic import DEFAULT_RTOL, steady_state
@@ -29,10 +28,10 @@ ROOT = Path(__file__).resolve().parent.parent
 
 def main() -> None:
     config = load_unit("sk8-3.5-4000")
-    well = build_machine(config)
+    well = config.machine()
     sample = place(read_card(ROOT / "samples" / "sk8-3.5-4000-card.csv"), config.geometry.mechanism()).card
     mean = float(np.mean(sample.load))
-    card = build_machine(config, Card(sample.crank_angle, mean + 0.5 * (sample.load - mean)))
+    card = config.machine(Card(sample.crank_angle, mean + 0.5 * (sample.load - mean)))
     print(f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}, "
           f"numpy {np.__version__}")
     steady_state(well)  # imports scipy

@@ -17,7 +17,6 @@ import platform
 
 import numpy as np
 
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.geometry import Linkage
 from pumpjack_cli.core.dynamics.coupled import predict_coupled
@@ -68,7 +67,7 @@ def main() -> None:
     sk8 = _position(linkage, 1024)
     best = best_of(lambda: predict(rods, pump, sk8, 2 * np.pi / 1.1422, damping=0.1, fluid_density=820.0), 5)
     print(f"predict, SK8 seed well, 1024 samples, nu 0.1:    {best * 1e3:6.1f} ms")
-    machine = build_machine(load_unit("sk8-3.5-4000"))
+    machine = load_unit("sk8-3.5-4000").machine()
     for samples in (1024, 512):
         result = predict_coupled(machine, rods, pump, damping=0.1, fluid_density=820.0, samples=samples)
         best = best_of(lambda: predict_coupled(machine, rods, pump, damping=0.1, fluid_density=820.0,

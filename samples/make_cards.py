@@ -26,7 +26,6 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from pumpjack_cli.analysis.rods import pump, rods  # noqa: E402
 from pumpjack_cli.config import load_unit  # noqa: E402
 from pumpjack_cli.core.rods.downhole import DEFAULT_DAMPING_FACTOR  # noqa: E402
 from pumpjack_cli.core.rods.predict import predict_cards  # noqa: E402
@@ -47,7 +46,7 @@ def card(name: str, spm: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarr
     unit = load_unit(name)
     well = unit.well
     omega = unit.drive.rated_crank_speed if spm is None else spm * math.pi / 30.0
-    cards = predict_cards(unit.geometry.mechanism(), omega, rods(unit), pump(unit), damping=DEFAULT_DAMPING_FACTOR,
+    cards = predict_cards(unit.geometry.mechanism(), omega, unit.rods(), unit.pump(), damping=DEFAULT_DAMPING_FACTOR,
                           fluid_density=well.fluid_density, samples=POINTS, rod_density=well.rod_density)
     order = np.roll(np.arange(POINTS), -int(np.argmin(cards.polished_rod_position)))
     position, load = cards.polished_rod_position[order], cards.polished_rod_load[order]

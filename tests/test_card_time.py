@@ -16,7 +16,6 @@ import numpy as np
 import pytest
 
 from pumpjack_cli.analysis.card_runs import SPEED_TOLERANCE, check_speed, place
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import fit_rotation, loop_work
 from pumpjack_cli.core import cards as placement
@@ -298,7 +297,7 @@ def test_six_harmonics_hold_the_speed_variation_of_the_equation_of_motion(sk8_dr
     the speed unfitted. The harmonics come from least squares on 720 crank angles of the motion
     (uneven in time) with 20 harmonics, far more than the motion holds above the 1e-5 level."""
     config = load_unit("sk8-3.5-4000")
-    state = steady_state(build_machine(config, place(read_card(sk8_drivable_card), SK8).card), crank_grid(720),
+    state = steady_state(config.machine(place(read_card(sk8_drivable_card), SK8).card), crank_grid(720),
                          rtol=1e-10)
     phi = 2 * math.pi * state.time / state.summary.period
     j = np.arange(1, 21)

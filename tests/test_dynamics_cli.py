@@ -10,7 +10,6 @@ import math
 import pytest
 
 from pumpjack_cli.analysis.card_runs import place
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.periodic import steady_state
 from pumpjack_cli.core.sampling import crank_grid
@@ -41,7 +40,7 @@ def test_json_equals_the_library(run_cli):
     code, out, err = run_cli("dynamics", SK8, "--steps", "24", "-f", "json")
     assert (code, err) == (0, "")
     data = json.loads(out)
-    r = steady_state(build_machine(load_unit(SK8)), crank_grid(24))
+    r = steady_state(load_unit(SK8).machine(), crank_grid(24))
     series, summary = data["series"], data["summary"]
     assert series["crank_speed_rad_s"] == r.crank_speed.tolist()
     assert series["crank_acceleration_rad_s2"] == r.crank_acceleration.tolist()
@@ -63,7 +62,7 @@ def test_csv_in_field_units(run_cli):
     assert code == 0
     rows = list(csv.DictReader(io.StringIO(out)))
     assert len(rows) == 12
-    r = steady_state(build_machine(load_unit(SK8)), crank_grid(12))
+    r = steady_state(load_unit(SK8).machine(), crank_grid(12))
     hp, ft = 745.69987158227022, 0.3048
     assert float(rows[3]["motor_power_hp"]) == pytest.approx(r.power[3] / hp, rel=1e-12)
     assert float(rows[3]["velocity_ft_s"]) == pytest.approx(r.rod.velocity[3] / ft, rel=1e-12)
@@ -85,7 +84,7 @@ def test_card_drives_the_machine(run_cli, sk8_drivable_card):
     assert "card sk8-drivable-card.csv" in data["title"]
     config = load_unit(SK8)
     card = place(read_card(sk8_drivable_card), config.geometry.mechanism()).card
-    r = steady_state(build_machine(config, card), crank_grid(36), rtol=1e-8)
+    r = steady_state(config.machine(card), crank_grid(36), rtol=1e-8)
     assert data["series"]["crank_speed_rad_s"] == r.crank_speed.tolist()
     summary = data["summary"]
     # Energy closure to the integrator's accuracy: DOP853 holds each step's local error of the

@@ -20,7 +20,6 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import Card
 from pumpjack_cli.core.dynamics.coefficients import CardLoad, coefficients
@@ -42,7 +41,7 @@ def sk8():
 
 @pytest.fixture(scope="module")
 def machine(sk8):
-    return build_machine(sk8)
+    return sk8.machine()
 
 
 @pytest.fixture(scope="module")

@@ -323,11 +323,10 @@ def test_a_long_grid_solved_in_blocks_is_the_whole_grid(monkeypatch):
     """Beyond BLOCK crank angles the kinetostatics is solved block by block (bounded
     memory); every array of the motion and of the reactions is that of one batch of the
     whole grid, to the bit, with the crank speed and acceleration varying along it."""
-    from pumpjack_cli.analysis.machine import mass_model
     from pumpjack_cli.core.beam import kinetostatics
 
     unit = load_unit("sk8-3.5-4000")
-    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    spatial, masses = unit.geometry.spatial(), unit.mass_model()
     theta = np.linspace(0.0, 2 * np.pi, 1000, endpoint=False)
     omega, epsilon, load = 1.1 + 0.1 * np.sin(theta), 0.05 * np.cos(theta), 5e4 + 2e4 * np.sin(theta)
     speeds = (omega, 1.1)

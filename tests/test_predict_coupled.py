@@ -25,7 +25,6 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli.analysis.machine import machine as build_machine
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.dynamics.coupled import predict_coupled
 from pumpjack_cli.core.dynamics.drive import motor_characteristic
@@ -52,7 +51,7 @@ def _pump() -> Pump:
 
 @pytest.fixture(scope="module")
 def sk8():
-    return build_machine(load_unit("sk8-3.5-4000"))
+    return load_unit("sk8-3.5-4000").machine()
 
 
 @pytest.fixture(scope="module")

@@ -141,7 +141,6 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     torque through the drive less what accelerates the drive's own inertia,
     M_z = u M_motor - I_drive eps1: two independent models (spatial kinetostatics,
     reduced-inertia equation of motion) must agree through the power balance."""
-    from pumpjack_cli.analysis.machine import machine as build_machine
     from pumpjack_cli.core.dynamics.periodic import steady_state
 
     code, out, err = run_cli("reactions", SK8, "--card", sk8_drivable_card, "--crank-motion", "dynamic", "--steps", "90",
@@ -151,7 +150,7 @@ def test_dynamic_rotation_balances_the_motor(run_cli, sk8_drivable_card):
     config = load_unit(SK8)
     theta = crank_grid(90)
     card = place(read_card(sk8_drivable_card), config.geometry.mechanism()).card
-    machine = build_machine(config, card)
+    machine = config.machine(card)
     state = steady_state(machine, theta)
     assert series["crank_speed_rad_s"] == state.crank_speed.tolist()
     expected = machine.drive_ratio * state.motor_torque - machine.drive_inertia * state.crank_acceleration

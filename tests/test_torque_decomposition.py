@@ -97,11 +97,10 @@ def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
     solution for arbitrary loads, speeds and accelerations at every angle: the rational
     mechanism is linear in its loads and its inertia terms scale with omega^2 and eps
     ([Spatial7SK12]); 1e-10 of the peak torque (round-off of the differences)."""
-    from pumpjack_cli.analysis.machine import mass_model
     from pumpjack_cli.core.beam.torque import exact_net_torque, exact_torque_basis
 
     unit = load_unit(name)
-    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    spatial, masses = unit.geometry.spatial(), unit.mass_model()
     theta = crank_grid(97)
     basis = exact_torque_basis(spatial, masses, theta)
     rng = np.random.default_rng(7)
@@ -115,12 +114,11 @@ def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
 def test_exact_torque_basis_in_blocks_is_the_whole_grid(monkeypatch):
     """A grid longer than a quarter of the kinetostatics' BLOCK is solved block by block
     (only the torques kept: bounded memory); the responses are those of one batch, to the bit."""
-    from pumpjack_cli.analysis.machine import mass_model
     from pumpjack_cli.core.beam import kinetostatics
     from pumpjack_cli.core.beam.torque import exact_torque_basis
 
     unit = load_unit("sk8-3.5-4000")
-    spatial, masses = unit.geometry.spatial(), mass_model(unit)
+    spatial, masses = unit.geometry.spatial(), unit.mass_model()
     theta = crank_grid(1000)
     whole = exact_torque_basis(spatial, masses, theta)
     monkeypatch.setattr(kinetostatics, "BLOCK", 64)

@@ -18,6 +18,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -29,8 +30,9 @@ from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
 from ..readers.cards import RawCard, read_card
-from .inputs import crank_speed
-from .machine import machine
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: --spm and the card's time stamps may differ by this fraction; the card's speed wins.
 SPEED_TOLERANCE = 0.02
@@ -138,11 +140,11 @@ class CardRun:
         return 2.0 * np.pi / self.period
 
 
-def uniform_speed(unit, reading: PlacedCard, spm: float | None) -> float:
+def uniform_speed(unit: UnitConfig, reading: PlacedCard, spm: float | None) -> float:
     """Crank speed [1/s] of a uniform run: the card's time stamps, else ``--spm``, else the drive."""
     option = None if spm is None else parse_quantity(f"{spm} spm", "rotational_speed")
     speed = check_speed(reading.speed, option, reading.source)
-    return crank_speed(unit, None) if speed is None else speed
+    return unit.crank_speed(None) if speed is None else speed
 
 
 def _card_motion(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]:
@@ -161,7 +163,7 @@ def _card_motion(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]
                     float(elapsed[-1]), "card") for theta in thetas]
 
 
-def card_runs(unit, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
+def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
               crank_motion: str) -> tuple[PlacedCard, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
     reading = source.read(mechanism)
@@ -178,7 +180,7 @@ def card_runs(unit, mechanism: Mechanism, source: CardSource, spm: float | None,
                             f"{'card' if crank_motion == 'card' else 'motor'} sets the speed")
     if crank_motion == "card":
         return reading, _card_motion(reading, thetas)
-    state = steady_state(machine(unit, reading.card), np.concatenate(thetas))
+    state = steady_state(unit.machine(reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:
         part = slice(start, start + theta.size)
@@ -201,7 +203,7 @@ class TimeCard:
     period: float
 
 
-def time_card(unit, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
+def time_card(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
               crank_motion: str) -> tuple[PlacedCard, TimeCard]:
     """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
     from the card's time stamps or from the equation of motion) is resolved on a fine

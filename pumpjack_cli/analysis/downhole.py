@@ -10,30 +10,45 @@ rods for stresses and Goodman loading ([API11BR]).
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..core.beam.counterbalance import rp11l_counterbalance_effect
-from ..core.rods.analysis import card_work, displacement_rate, intake_pressure, summarise_pump_card, taper_loads
-from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR, damping_from_fluid_load, downhole_methods, pump_card
+from ..core.rods.analysis import (
+    card_work,
+    displacement_rate,
+    intake_pressure,
+    summarise_pump_card,
+    taper_loads,
+)
+from ..core.rods.downhole import (
+    DEFAULT_DAMPING_FACTOR,
+    damping_from_fluid_load,
+    downhole_methods,
+    pump_card,
+)
 from ..errors import DownholeError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
-from .rods import goodman_panel, pressures, rods, taper_summary, well_of
+from .rods import goodman_panel, taper_summary
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Samples per period of the surface card on its uniform time grid.
 DEFAULT_SAMPLES = 360
 
 
-def damping_factor(unit, given: float | None, rod_string, card, method: str) -> tuple[float, str]:
+def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, method: str) -> tuple[float, str]:
     """Gibbs' nu and where it comes from: the option, the unit file, or the energy balance
     with the well's fluid load ([Gibbs1963], [EverittJennings1992])."""
-    well = well_of(unit)
+    well = unit.require_well()
     if given is not None:
         return given, "--damping"
     if well.damping_factor is not None:
         return well.damping_factor, "well.damping_factor"
-    found = pressures(unit)
+    found = unit.pump_pressures()
     if found is None:
         warn(f"unit {unit.name}: no fluid level or intake pressure for the energy balance; damping factor "
              f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
@@ -44,13 +59,13 @@ def damping_factor(unit, given: float | None, rod_string, card, method: str) -> 
     return nu, "energy balance"
 
 
-def downhole(unit, card: CardSource, spm: float | None, crank_motion: str, method: str, damping: float | None,
+def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion: str, method: str, damping: float | None,
              samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0) -> Result:
     """Pump card, pump-card figures and rod stresses of one surface card."""
     if method not in downhole_methods():
         raise PumpjackError(f"--method {method}: use one of {', '.join(downhole_methods())}")
-    well = well_of(unit)
-    string = rods(unit)
+    well = unit.require_well()
+    string = unit.rods()
     linkage = unit.geometry.mechanism()
     reading, surface = time_card(unit, linkage, card, spm, samples, crank_motion)
     try:
@@ -81,7 +96,7 @@ def downhole(unit, card: CardSource, spm: float | None, crank_motion: str, metho
         Scalar("pump_displacement", float(displacement_rate(figures.net_stroke, surface.period,
                                                                          well.plunger_diameter))),
     ]
-    found = pressures(unit)
+    found = unit.pump_pressures()
     if found is not None:
         summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0]))))
     summary += taper_summary(string, loads, service_factor)

@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..core.dynamics.periodic import steady_state
 from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardSource
 from .inputs import crank_columns, extreme_scalars
-from .machine import machine
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Well-model forces of the summary: name, description.
 _WELL_FORCES = (("upstroke_rod_load", "upstroke"), ("downstroke_rod_load", "downstroke"), ("rod_weight", "rod_weight"),
@@ -16,10 +20,10 @@ _WELL_FORCES = (("upstroke_rod_load", "upstroke"), ("downstroke_rod_load", "down
                 ("tubing_friction", "tubing_friction"), ("rod_friction", "rod_friction"))
 
 
-def dynamics(unit, card: CardSource | None, rtol: float, steps: int) -> Result:
+def dynamics(unit: UnitConfig, card: CardSource | None, rtol: float, steps: int) -> Result:
     """The periodic motion under the motor, the well model (or a card) and the weights ([SK8Rotation2013])."""
     measured = None if card is None else card.read(unit.geometry.mechanism()).card
-    machine_ = machine(unit, measured)
+    machine_ = unit.machine(measured)
     result = steady_state(machine_, crank_grid(steps), rtol=rtol)
     s = result.summary
     summary = [

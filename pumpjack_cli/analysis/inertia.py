@@ -8,18 +8,30 @@ For a beam unit: the polished rod against the elementary, refined and arc-as-cho
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ..core.beam.inertia_laws import beam_inertia_laws
 from ..core.sampling import crank_grid, signed_extremes, uniform_time
-from ..core.slider_crank.mechanism import (InertiaComparison, inertia_force, slider_inertia_laws,
-                                           travel_from_outer_dead_centre)
-from ..core.slider_crank.support_friction import (reduction_coefficients, redundant_support_friction,
-                                                  solid_round_second_moment)
+from ..core.slider_crank.mechanism import (
+    InertiaComparison,
+    inertia_force,
+    slider_inertia_laws,
+    travel_from_outer_dead_centre,
+)
+from ..core.slider_crank.support_friction import (
+    reduction_coefficients,
+    redundant_support_friction,
+    solid_round_second_moment,
+)
 from ..errors import PumpjackError
 from ..quantities import parse_quantity
 from ..results import Column, Panel, Result, Scalar
-from .inputs import crank_speed
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
+    from ..config.slider_crank import SliderCrankConfig
 
 def _comparison(title: str, c: InertiaComparison, crank_speed: float, mass: float | None,
                 extra: tuple[Scalar, ...] = ()) -> Result:
@@ -70,7 +82,7 @@ def _comparison(title: str, c: InertiaComparison, crank_speed: float, mass: floa
     return Result(title, tuple(summary), tuple(columns), tuple(panels))
 
 
-def support_friction(unit, steps: int) -> Result:
+def support_friction(unit: SliderCrankConfig, steps: int) -> Result:
     """Reactions and friction of the redundant supports of the stepped slider over one revolution."""
     slider = unit.stepped_slider
     if slider is None:
@@ -128,7 +140,7 @@ def support_friction(unit, steps: int) -> Result:
                   (Panel("friction", friction_curves), Panel("reactions", reaction_curves), Panel("travel", ("travel",))))
 
 
-def inertia_error(unit, spm: float | None, mass: float | None, support: bool, steps: int) -> Result:
+def inertia_error(unit: UnitConfig | SliderCrankConfig, spm: float | None, mass: float | None, support: bool, steps: int) -> Result:
     """The comparison (or, with ``support``, the stepped slider's support friction) for a unit of any kind."""
     if mass is not None and not mass > 0:
         raise PumpjackError(f"--mass must be positive, got {mass} kg")
@@ -146,6 +158,6 @@ def inertia_error(unit, spm: float | None, mass: float | None, support: bool, st
         )
     if support:
         raise PumpjackError(f"unit {unit.name} is a beam pumping unit: --support-friction needs a slider-crank unit")
-    omega = crank_speed(unit, spm)
+    omega = unit.crank_speed(spm)
     return _comparison(f"{unit.name}: polished-rod inertia, exact and approximate laws",
                        beam_inertia_laws(unit.geometry.mechanism(), omega, crank_grid(steps)), omega, mass)

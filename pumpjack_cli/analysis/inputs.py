@@ -1,31 +1,13 @@
-"""From a validated unit and the options to the core's inputs, decided once for every analysis.
+"""Result pieces shared by the analyses: the crank-motion columns and the summary of extremes.
 
-The crank speed (``--spm``, or the motor's rated speed through belt and gearbox) and
-the sections a unit must have: every command that needs one of these gets it here.
-The dynamometer card on a crank-angle grid is :mod:`.card_runs`; the machine of the
-equation of motion, the well load and the masses are :mod:`.machine`.
+The core's objects of a unit (mechanism, masses, rods, pump, machine) are built by its
+config (:class:`~pumpjack_cli.config.beam_unit.UnitConfig`); the dynamometer card on a
+crank-angle grid is :mod:`.card_runs`.
 """
 
 from __future__ import annotations
 
-from ..errors import PumpjackError
-from ..quantities import parse_quantity
 from ..results import Column, Scalar
-
-
-def require(unit, section: str, purpose: str) -> None:
-    """Refuse a unit without the config section an analysis needs, saying what it is needed for."""
-    if getattr(unit, section) is None:
-        raise PumpjackError(f"unit {unit.name} has no [{section}] section; {purpose}")
-
-
-def crank_speed(unit, spm: float | None) -> float:
-    """Crank speed [1/s]: from ``--spm`` (strokes per minute) if given, else the motor's rated speed through the drive."""
-    if spm is not None:
-        return parse_quantity(f"{spm} spm", "rotational_speed")
-    if unit.drive is None:
-        raise PumpjackError(f"unit {unit.name} has no [drive] section: give the speed with --spm")
-    return unit.drive.rated_crank_speed
 
 
 def crank_columns(crank_angle, time, speed, acceleration) -> list[Column]:

@@ -2,17 +2,21 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from ..core.beam.kinematics import APPROXIMATIONS, uniform_kinematics
 from ..results import Column, Panel, Result, Scalar
-from .inputs import crank_speed
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Quantities whose extremes the summary gives.
 _EXTREMES = ("velocity", "acceleration", "torque_factor")
 
 
-def kinematics(unit, spm: float | None, steps: int) -> Result:
+def kinematics(unit: UnitConfig, spm: float | None, steps: int) -> Result:
     """Exact polished-rod, beam and pitman kinematics with the textbook approximations beside it."""
-    result = uniform_kinematics(unit.geometry.mechanism(), crank_speed(unit, spm), steps)
+    result = uniform_kinematics(unit.geometry.mechanism(), unit.crank_speed(spm), steps)
     s = result.summary
     summary = [
         Scalar("crank_speed", s.crank_speed),

@@ -12,23 +12,26 @@ stress and Goodman summary of `pumpjack downhole` ([API11BR]).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..config.files import error_message
 from ..core.beam.card import Card, card_load
 from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..config.files import error_message
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
-from .inputs import crank_columns, crank_speed, extreme_scalars, require
-from .machine import machine
-from .rods import goodman_panel, pump, rods, taper_summary, well_of
+from .inputs import crank_columns, extreme_scalars
+from .rods import goodman_panel, taper_summary
 from .torque import SUMMARY_STEPS, card_torque
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Time samples per cycle of the predicted cards.
 DEFAULT_SAMPLES = 360
@@ -62,7 +65,7 @@ _OVERRIDES = {
 }
 
 
-def with_overrides(unit, overrides: WellOverrides):
+def with_overrides(unit: UnitConfig, overrides: WellOverrides):
     """The unit with its ``[well]`` changed by the options, validated by the well's schema
     (a value out of range is refused naming its option)."""
     from pydantic import ValidationError
@@ -70,7 +73,7 @@ def with_overrides(unit, overrides: WellOverrides):
     if overrides.submergence is not None and overrides.intake_pressure is not None:
         raise PumpjackError("--submergence and --intake-pressure: give one of them; each sets the pump's intake "
                             "pressure")
-    well = well_of(unit)
+    well = unit.require_well()
     data = well.model_dump()
     for name, (field, _) in _OVERRIDES.items():
         value = getattr(overrides, name)
@@ -90,7 +93,7 @@ def with_overrides(unit, overrides: WellOverrides):
     return unit.model_copy(update={"well": changed})
 
 
-def damping_factor(unit, given: float | None) -> float:
+def damping_factor(unit: UnitConfig, given: float | None) -> float:
     """Gibbs' nu: the option, else the unit file's, else the default with a warning ([Gibbs1963])."""
     if given is not None:
         return given
@@ -113,13 +116,13 @@ class Predicted:
     damping: float
 
 
-def predicted(unit, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
+def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
     """Solve the well at uniform crank speed (``--spm`` or the drive) or coupled with the machine."""
     if crank_motion not in CRANK_MOTIONS:
         raise PumpjackError(f"--crank-motion {crank_motion}: use one of {', '.join(CRANK_MOTIONS)}")
-    string, well_pump, well = rods(unit), pump(unit), unit.well
+    string, well_pump, well = unit.rods(), unit.pump(), unit.well
     if crank_motion == "uniform":
-        omega = crank_speed(unit, spm)
+        omega = unit.crank_speed(spm)
         nu = damping_factor(unit, damping)
         cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
@@ -127,11 +130,11 @@ def predicted(unit, spm: float | None, crank_motion: str, samples: int, damping:
     if spm is not None:
         raise PumpjackError("--spm sets a uniform crank speed; with --crank-motion dynamic the motor sets the speed")
     for section in ("masses", "drive"):
-        require(unit, section, "--crank-motion dynamic solves the machine's equation of motion")
+        unit.require(section, "--crank-motion dynamic solves the machine's equation of motion")
     nu = damping_factor(unit, damping)
     from ..core.dynamics.coupled import predict_coupled
 
-    both = predict_coupled(machine(unit, elastic_rods=True), string, well_pump, damping=nu,
+    both = predict_coupled(unit.machine(elastic_rods=True), string, well_pump, damping=nu,
                            fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
     margin = both.summary.breakdown_torque_margin
     if margin < 1.0:
@@ -217,13 +220,13 @@ def coupled_summary(s) -> list[Scalar]:
     return rows
 
 
-def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
+def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar]:
     """How the coupled solution differs from uniform rotation at its mean speed and from the
     rigid-rod model of [SK8Rotation2013]."""
     from ..core.dynamics.periodic import steady_state
 
     cards = found.cards.summary
-    uniform = predict_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, rods(unit), pump(unit),
+    uniform = predict_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, unit.rods(), unit.pump(),
                             damping=found.damping, fluid_density=unit.well.fluid_density, samples=samples,
                             rod_density=unit.well.rod_density)
     uniform_found = Predicted(uniform, np.full(samples, 2.0 * np.pi / cards.period), np.zeros(samples), None,
@@ -231,7 +234,7 @@ def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
     card, runs = _runs(uniform_found, SUMMARY_STEPS)
     method = "exact" if unit.masses is not None else "api"
     uniform_peak = card_torque(unit, card, runs, method, "equal-peaks").peak_net_torque
-    rigid = steady_state(machine(unit), crank_grid(SUMMARY_STEPS))
+    rigid = steady_state(unit.machine(), crank_grid(SUMMARY_STEPS))
     rigid_load = rigid.rod_load
     rows = [
         Scalar("uniform_max_rod_load", uniform.summary.peak_polished_rod_load.value),
@@ -246,7 +249,7 @@ def _comparison(unit, found: Predicted, samples: int) -> list[Scalar]:
     return rows
 
 
-def predict(unit, spm: float | None, crank_motion: str, samples: int, damping: float | None,
+def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
             steps: int = SUMMARY_STEPS) -> Result:
     """The result of `pumpjack predict` (module docstring)."""
@@ -254,7 +257,7 @@ def predict(unit, spm: float | None, crank_motion: str, samples: int, damping: f
     found = predicted(unit, spm, crank_motion, samples, damping)
     cards = found.cards
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
-    string = rods(unit)
+    string = unit.rods()
     joint = np.vstack([cards.taper_top_load, cards.taper_bottom_load[-1:]])
     loads = taper_loads(string, joint)
     summary += taper_summary(string, loads, service_factor)
@@ -288,7 +291,7 @@ def predict(unit, spm: float | None, crank_motion: str, samples: int, damping: f
     return Result(title, tuple(summary), tuple(columns), tuple(panels))
 
 
-def wave_dynamics(unit, samples: int, damping: float | None) -> Result:
+def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None) -> Result:
     """`pumpjack dynamics --well-model wave`: the machine's periodic motion with the elastic rods
     of the unit's ``[well]`` instead of the rigid-rod model ([SK8Rotation2013], [Gibbs1963])."""
     found = predicted(unit, None, "dynamic", samples, damping)

@@ -2,17 +2,21 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from pydantic import ValidationError
 
+from ..config.files import error_message
 from ..core.beam.reactions import joint_reactions
 from ..core.sampling import extremes, peak
-from ..config.files import error_message
 from ..errors import PumpjackError
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import crank_columns, require
-from .machine import mass_model
+from .inputs import crank_columns
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Reaction vectors, bearing moments and joint moments of the output (their meanings: the catalogue).
 REACTIONS = ("r12", "r13", "r24", "r34", "r45", "r05", "r01")
@@ -46,7 +50,7 @@ def _peak(summary: list[Scalar], name: str, theta, values) -> None:
                 Scalar(f"{name}_crank_angle", found.crank_angle)]
 
 
-def reactions(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str, *,
+def reactions(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, crank_motion: str, *,
               weights: bool = True, inertia: bool = True, counterweight_count: int | None = None,
               counterweight_radius: float | None = None) -> Result:
     """The rational mechanism's reactions, bearing moments and balancing torque under a card.
@@ -54,7 +58,7 @@ def reactions(unit, card: CardSource, spm: float | None, steps: int, crank_motio
     The columns are on ``steps`` crank angles; the summary's extremes on a fixed grid of
     :data:`SUMMARY_STEPS`, refined between its points, whatever ``steps``.
     """
-    masses = mass_model(unit, counterweight_count, counterweight_radius)
+    masses = unit.mass_model(counterweight_count, counterweight_radius)
     spatial = unit.geometry.spatial(unit.name)
     reading, runs = card_runs(unit, spatial.planar, card, spm, (steps, SUMMARY_STEPS), crank_motion)
     r, dense = (joint_reactions("rational", spatial, masses, run.crank_angle, run.crank_speed, run.crank_acceleration, run.load,
@@ -94,7 +98,7 @@ def with_options(section, given: dict):
         raise PumpjackError(f"--{first['loc'][0].replace('_', '-')}: {error_message(first, type(section))}") from None
 
 
-def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str,
+def compare_redundancy(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, crank_motion: str,
                        given_deviations: dict, given_joints: dict | None = None) -> Result:
     """The real mechanism (revolute pins, elastic pitmans, errors) beside the rational one under a card.
 
@@ -107,10 +111,10 @@ def compare_redundancy(unit, card: CardSource, spm: float | None, steps: int, cr
     ``steps`` crank angles; the summary's peaks on a fixed grid of
     :data:`REDUNDANCY_SUMMARY_STEPS`, refined between its points, whatever ``steps``.
     """
-    require(unit, "pitman_section", "the real mechanism needs the pitman's stiffness")
+    unit.require("pitman_section", "the real mechanism needs the pitman's stiffness")
     errors = with_options(unit.deviations, given_deviations)
     pins = with_options(unit.joints, given_joints or {})
-    masses = mass_model(unit)
+    masses = unit.mass_model()
     ideal = unit.geometry.spatial(unit.name)
     actual = errors.apply(ideal)
     _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), crank_motion)

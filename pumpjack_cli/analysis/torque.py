@@ -16,23 +16,37 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..core.beam.balance import balance_criteria, recommend_counterbalance
 from ..core.beam.card import Card
-from ..core.beam.counterbalance import (Counterbalance, counterbalance_effect, counterbalance_from_masses,
-                                        counterweight_placement)
+from ..core.beam.counterbalance import (
+    Counterbalance,
+    counterbalance_effect,
+    counterbalance_from_masses,
+    counterweight_placement,
+)
 from ..core.beam.loading import card_work, cyclic_load_factor
-from ..core.beam.torque import (ExactTorqueBasis, beam_group_inertia, crank_group_inertia, exact_torque_basis,
-                                permissible_load, torque_components, torque_methods)
+from ..core.beam.torque import (
+    ExactTorqueBasis,
+    beam_group_inertia,
+    crank_group_inertia,
+    exact_torque_basis,
+    permissible_load,
+    torque_components,
+    torque_methods,
+)
 from ..core.designations import parse_designation
 from ..core.sampling import extremes, peak
 from ..errors import PumpjackError, warn
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
 from .inputs import crank_columns, extreme_scalars
-from .machine import mass_model
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ..config.beam_unit import UnitConfig
 
 #: Crank positions of the grid on which the summary's extremes, balance and loading are computed.
 SUMMARY_STEPS = 3600
@@ -53,7 +67,7 @@ class Ratings:
     max_stroke: float | None
 
 
-def ratings(unit) -> Ratings:
+def ratings(unit: UnitConfig) -> Ratings:
     """The unit's ratings: its ``designation`` (or its name when that is a designation),
     completed or overridden by ``[rating]``; a class other than conventional is refused."""
     text = unit.designation if unit.designation is not None else unit.name
@@ -75,7 +89,7 @@ def ratings(unit) -> Ratings:
     return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
 
 
-def counterbalance(unit, masses) -> tuple[Counterbalance, bool]:
+def counterbalance(unit: UnitConfig, masses) -> tuple[Counterbalance, bool]:
     """B, M, tau of the API method and whether M is known: ``[counterbalance]`` if given,
     else from the masses; without either the structural unbalance is taken as 0."""
     given = unit.counterbalance
@@ -98,7 +112,7 @@ class _Torques:
     net: np.ndarray
 
 
-def _torques(unit, linkage, masses, balance: Counterbalance, run: CardRun, method: str) -> _Torques:
+def _torques(unit: UnitConfig, linkage, masses, balance: Counterbalance, run: CardRun, method: str) -> _Torques:
     parts = torque_components(linkage, run.crank_angle, run.load, balance,
                               beam_inertia=beam_group_inertia(linkage, masses) if masses else 0.0,
                               rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
@@ -118,7 +132,7 @@ def _exact_basis(spatial, masses, crank_angle: bytes) -> ExactTorqueBasis:
     return exact_torque_basis(spatial, masses, np.frombuffer(crank_angle))
 
 
-def torque(unit, card: CardSource, spm: float | None, steps: int, crank_motion: str, method: str, criterion: str,
+def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, crank_motion: str, method: str, criterion: str,
            drive_efficiency: float = 1.0) -> Result:
     """The torque analysis of one card (see the module docstring)."""
     check_options(method, criterion)
@@ -155,7 +169,7 @@ class CardTorque:
     rating_levels: tuple[tuple[str, float], ...]
 
 
-def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: str,
+def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, criterion: str,
                 drive_efficiency: float = 1.0) -> CardTorque:
     """Net torque, balance and loading of a card (load at crank angles) run on the output grid
     ``runs[0]`` and the summary grid ``runs[1]`` (:data:`SUMMARY_STEPS` points): the
@@ -163,7 +177,7 @@ def card_torque(unit, card: Card, runs: list[CardRun], method: str, criterion: s
     check_options(method, criterion)
     rated = ratings(unit)
     linkage = unit.geometry.mechanism()
-    masses = mass_model(unit) if unit.masses is not None else None
+    masses = unit.mass_model() if unit.masses is not None else None
     if method == "exact" and masses is None:
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
                             f"(--method api needs only [counterbalance])")

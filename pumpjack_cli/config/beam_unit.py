@@ -16,14 +16,21 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 from pydantic import Discriminator, Field, Tag, ValidationInfo, field_validator
 
 from ..core.designations import parse_designation
-from ..errors import DesignationError
+from ..errors import ConfigError, DesignationError
+from ..quantities import parse_quantity
 from .drive import Drive
 from .masses import Masses
 from .unit_classes import UNIT_CLASSES, unit_class
 from .well import Well
-if TYPE_CHECKING:  # the spatial models are imported when a command uses them
+if TYPE_CHECKING:  # the core's models are imported when a command uses them
+    from ..core.beam.card import Card
+    from ..core.beam.masses import MassModel
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
+    from ..core.dynamics.coefficients import Machine
+    from ..core.rods.pump import Pump
+    from ..core.rods.string import RodString
+    from ..core.well import WellLoad
 from .quantities import (Angle, Area, AreaMoment, Force, Length, Pressure, RotationalStiffness, Section,
                          Torque, at_least)
 
@@ -175,3 +182,96 @@ class UnitConfig(Section):
         if not isinstance(geometry, dict):
             return geometry
         return {**geometry, "class": unit_class(geometry, info.data.get("designation"))}
+
+    # --- the core's objects of the unit: built here, once, for every analysis -------------
+
+    def require(self, section: str, purpose: str) -> None:
+        """Refuse a unit without the section an analysis needs, saying what it is needed for."""
+        if getattr(self, section) is None:
+            raise ConfigError(f"unit {self.name} has no [{section}] section; {purpose}")
+
+    def crank_speed(self, spm: float | None) -> float:
+        """Crank speed [1/s]: ``spm`` (strokes per minute) if given, else the motor's rated speed
+        through the drive."""
+        if spm is not None:
+            return parse_quantity(f"{spm} spm", "rotational_speed")
+        if self.drive is None:
+            raise ConfigError(f"unit {self.name} has no [drive] section: give the speed with --spm")
+        return self.drive.rated_crank_speed
+
+    def require_well(self) -> Well:
+        """The ``[well]``, required."""
+        self.require("well", "the rod-string models need the pump depth, the plunger and the rod string")
+        assert self.well is not None
+        return self.well
+
+    def rods(self) -> RodString:
+        """The tapered rod string of the ``[well]`` (:meth:`.well.Well.rods`)."""
+        try:
+            return self.require_well().rods()
+        except ConfigError as exc:
+            raise ConfigError(f"unit {self.name}: {exc}") from None
+
+    def pump_pressures(self) -> tuple[float, float] | None:
+        """Discharge and intake pressure at the pump [Pa] (:meth:`.well.Well.pressures`)."""
+        return self.require_well().pressures()
+
+    def pump(self) -> Pump:
+        """The pump of the ``[well]`` (:meth:`.well.Well.pump`)."""
+        try:
+            return self.require_well().pump()
+        except ConfigError as exc:
+            raise ConfigError(f"unit {self.name}: {exc}") from None
+
+    def mass_model(self, counterweight_count: int | None = None, counterweight_radius: float | None = None) -> MassModel:
+        """The masses, with the number of counterweight blocks or their radius [m] replaced if given."""
+        self.require("masses", "this analysis needs the link masses")
+        assert self.masses is not None
+        if counterweight_radius is not None and not 0 <= counterweight_radius <= 5:
+            raise ConfigError(f"--counterweight-radius: {counterweight_radius} m is outside 0..5 m")
+        return self.masses.model(counterweight_count, counterweight_radius)
+
+    def rigid_well_load(self) -> WellLoad:
+        """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod
+        speeds of the rated crank speed."""
+        import numpy as np
+
+        from ..core.dynamics.coefficients import mean_rod_speeds
+        from ..core.well import well_load
+
+        if self.well is None:
+            raise ConfigError(f"unit {self.name} has no [well] section: give one, or a dynamometer card with --card")
+        w = self.well
+        missing = [name for name in ("plunger_clearance", "pump_submergence") if getattr(w, name) is None]
+        if missing:
+            raise ConfigError(f"unit {self.name}: well.{' and well.'.join(missing)} needed by the well model "
+                              f"(or drive the unit with --card)")
+        self.require("drive", "the well model's friction needs the rated crank speed")
+        up, down = mean_rod_speeds(self.geometry.mechanism(), self.crank_speed(None))
+        return well_load(pump_depth=w.pump_depth, submergence=w.pump_submergence, plunger_diameter=w.plunger_diameter,
+                         plunger_clearance=w.plunger_clearance, rod_diameters=np.array([s.diameter for s in w.rod_string]),
+                         rod_fractions=np.array([s.fraction for s in w.rod_string]), rod_density=w.rod_density,
+                         fluid_density=w.fluid_density, kinematic_viscosity=w.fluid_kinematic_viscosity,
+                         tubing_diameter=w.tubing_inner_diameter, upstroke_speed=up, downstroke_speed=down)
+
+    def machine(self, card: Card | None = None, *, elastic_rods: bool = False) -> Machine:
+        """The machine of the equation of motion: masses, drive, motor and the well model or a card;
+        with ``elastic_rods`` no rod load (the coupled model carries the rods itself)."""
+        from ..core.dynamics.coefficients import CardLoad, Machine
+        from ..core.dynamics.drive import drive_inertia, motor_characteristic
+
+        for section in ("masses", "drive"):
+            self.require(section, "the equation of motion needs it")
+        assert self.masses is not None and self.drive is not None
+        drive, motor = self.drive, self.drive.motor
+        return Machine(
+            linkage=self.geometry.mechanism(),
+            masses=self.masses.model(),
+            drive_inertia=drive_inertia(motor.rotor_inertia + drive.motor_sheave_inertia,
+                                        drive.gearbox_sheave_inertia + drive.gearbox_inertia, 0.0, drive.belt_ratio,
+                                        drive.gearbox_ratio),
+            drive_ratio=drive.total_ratio,
+            motor=motor_characteristic(motor.rated_power, motor.synchronous_speed, motor.rated_speed,
+                                       motor.starting_torque_ratio, motor.breakdown_torque_ratio),
+            rod_load=None if elastic_rods else self.rigid_well_load() if card is None else CardLoad(card),
+        )

@@ -91,16 +91,18 @@ class Masses(Section):
     beam: BeamPart = Field(description="walking beam body (m_b, m_bal)")
     horsehead: BeamPart = Field(description="horsehead (m_gb)")
 
-    def model(self) -> MassModel:
-        """The numerical core's view of the masses."""
+    def model(self, counterweight_count: int | None = None, counterweight_radius: float | None = None) -> MassModel:
+        """The numerical core's view of the masses, with the number of counterweight blocks or
+        their radius [m] replaced if given."""
         from ..core.beam.masses import MassModel, counterweight_set_mass
 
+        count = self.counterweights.count if counterweight_count is None else counterweight_count
         return MassModel(
             crank_arm_mass=self.crank_arm.mass,
             crank_arm_cg=self.crank_arm.cg_radius,
             crank_arm_inertia=self.crank_arm.inertia,
-            counterweight_mass=counterweight_set_mass(self.counterweights.mass, self.counterweights.count),
-            counterweight_radius=self.counterweights.radius,
+            counterweight_mass=counterweight_set_mass(self.counterweights.mass, count),
+            counterweight_radius=self.counterweights.radius if counterweight_radius is None else counterweight_radius,
             counterweight_phase=self.counterweights.phase,
             pitman_mass=self.pitman.mass,
             pitman_cg=self.pitman.cg_from_crank_pin,

@@ -1,11 +1,25 @@
-"""Schema of a unit file's ``[well]``: pump, rods, fluid, tubing and pressures."""
+"""Schema of a unit file's ``[well]``: pump, rods, fluid, tubing and pressures, and the core's
+rod string and pump built from them.
+
+Rod sections are given by length or by share of the pump depth; their weight with couplings
+and modulus come from the API tables by diameter unless given ([API11L], [API11B]); steel
+displaces the fluid with the well's ``rod_density``, as in the rigid-rod well model. A
+section whose diameter is an API rod size is a steel rod, any other a sinker bar, unless
+its ``kind`` says otherwise.
+"""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+import math
+from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, model_validator
 
+from ..errors import ConfigError, DownholeError
+
+if TYPE_CHECKING:  # the rod models are imported when a command uses them
+    from ..core.rods.pump import Pump
+    from ..core.rods.string import RodString
 from .quantities import (Density, Fraction, KinematicViscosity, Length, Number, Pressure, Section, WeightPerLength,
                          at_least)
 
@@ -38,6 +52,18 @@ class RodSection(Section):
         if (self.fraction is None) == (self.length is None):
             raise ValueError("give the section's length or its fraction of the pump depth (one of them)")
         return self
+
+    def rod_kind(self) -> str:
+        """steel, sinker or fibreglass: the ``kind`` given, else steel for an API rod size."""
+        from ..core.rods.tables import steel_rod
+
+        if self.kind is not None:
+            return self.kind
+        try:
+            steel_rod(self.diameter)
+        except DownholeError:
+            return "sinker"
+        return "steel"
 
 
 class Well(Section):
@@ -84,3 +110,50 @@ class Well(Section):
         if self.pump_submergence is not None and self.pump_intake_pressure is not None:
             raise ValueError("give pump_submergence or pump_intake_pressure, not both")
         return self
+
+    def rods(self) -> RodString:
+        """The core's tapered rod string of ``rod_string``, top section first ([API11L], [API11B] tables)."""
+        from ..core.constants import STANDARD_GRAVITY
+        from ..core.rods.tables import RodSection as CoreSection
+        from ..core.rods.tables import rod_string
+
+        sections = []
+        for section in self.rod_string:
+            kind = section.rod_kind()
+            sections.append(CoreSection(
+                section.diameter, section.length if section.length is not None else section.fraction * self.pump_depth,
+                kind=kind, grade=section.grade, youngs_modulus=section.youngs_modulus,
+                mass_per_length=None if section.weight_per_length is None else section.weight_per_length / STANDARD_GRAVITY,
+                tensile_strength=section.tensile_strength,
+                material_density=None if kind == "fibreglass" else self.rod_density))
+        try:
+            return rod_string(sections)
+        except DownholeError as exc:
+            raise ConfigError(f"well.rod_string: {exc}") from None
+
+    def pressures(self) -> tuple[float, float] | None:
+        """Discharge and intake pressure at the pump [Pa], or None when the well gives neither its
+        fluid level (pump submergence) nor its intake pressure."""
+        from ..core.rods.pump import pump_pressures
+
+        if self.pump_submergence is None and self.pump_intake_pressure is None:
+            return None
+        return pump_pressures(self.pump_depth, self.fluid_density, submergence=self.pump_submergence,
+                              intake_pressure=self.pump_intake_pressure, tubing_head_pressure=self.tubing_head_pressure,
+                              casing_head_pressure=self.casing_head_pressure)
+
+    def pump(self) -> Pump:
+        """The pump with its valves' pressures, fillage, gas and tubing stretch."""
+        from ..core.rods.pump import Pump, tubing_stiffness
+
+        found = self.pressures()
+        if found is None:
+            raise ConfigError("the well needs pump_submergence (fluid level above the pump) or pump_intake_pressure "
+                              "for the pump's valves")
+        stiffness = math.inf
+        if not self.tubing_anchored:
+            if self.tubing_size is None:
+                raise ConfigError("well.tubing_size is needed for an unanchored tubing's stretch")
+            stiffness = tubing_stiffness(self.tubing_size, self.pump_depth)
+        return Pump(math.pi * self.plunger_diameter**2 / 4.0, found[0], found[1], fillage=self.pump_fillage,
+                    gas_exponent=self.gas_exponent, tubing_stiffness=stiffness)

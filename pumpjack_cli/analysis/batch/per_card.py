@@ -10,11 +10,15 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from ...errors import PumpjackError, collected_warnings
 from ...readers.manifest import Job
 from ...readers.unit_files import read_table
 from ...results import check_finite, converted_summary
+
+if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
+    from ...config.beam_unit import UnitConfig
 
 #: Analyses a card can go through, in the order they run.
 ANALYSES = ("torque", "downhole")
@@ -71,19 +75,18 @@ def _unit(job: Job):
     return _UNITS[key]
 
 
-def _with_moment(unit, moment: float):
+def _with_moment(unit: UnitConfig, moment: float):
     """The unit whose API counterbalance moment is ``moment`` [N·m] (B and tau kept)."""
-    from ..machine import mass_model
     from ..torque import counterbalance
 
-    balance, _ = counterbalance(unit, mass_model(unit) if unit.masses is not None else None)
+    balance, _ = counterbalance(unit, unit.mass_model() if unit.masses is not None else None)
     section = {"structural_unbalance": balance.structural_unbalance, "moment": moment, "phase": balance.offset}
     data = unit.model_dump()
     data["counterbalance"] = section
     return type(unit).model_validate(data)
 
 
-def _with_rod_string(unit, path: str):
+def _with_rod_string(unit: UnitConfig, path: str):
     """The unit whose ``[well].rod_string`` is the one in the file ``path``."""
     if unit.well is None:
         raise PumpjackError(f"unit {unit.name} has no [well] section for the rod string of {path}")
