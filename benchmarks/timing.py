@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import os
+import platform
 import time
+from pathlib import Path
 
 
 def best_of(func, repeats: int) -> float:
@@ -13,3 +16,15 @@ def best_of(func, repeats: int) -> float:
         func()
         times.append(time.perf_counter() - start)
     return min(times)
+
+
+def machine() -> str:
+    """The machine a benchmark ran on, for the record: architecture, processor model
+    (/proc/cpuinfo), cores, Python."""
+    try:
+        lines = Path("/proc/cpuinfo").read_text().splitlines()
+        model = next((line.split(":", 1)[1].strip() for line in lines if line.startswith("model name")), "")
+    except OSError:
+        model = ""
+    return (f"{platform.machine()}, {model or platform.processor() or 'unknown CPU'}, {os.cpu_count()} cores, "
+            f"{platform.python_implementation()} {platform.python_version()}")

@@ -18,6 +18,7 @@ from pydantic import Field, model_validator
 from ..errors import ConfigError, DownholeError
 
 if TYPE_CHECKING:  # the rod models are imported when a command uses them
+    from ..core.rods.path import WellPath
     from ..core.rods.pump import Pump
     from ..core.rods.string import RodString
 from .quantities import (Density, Fraction, KinematicViscosity, Length, Number, Pressure, Section, WeightPerLength,
@@ -131,14 +132,25 @@ class Well(Section):
         except DownholeError as exc:
             raise ConfigError(f"well.rod_string: {exc}") from None
 
+    def path(self) -> WellPath:
+        """The well's path along the rods (:mod:`~pumpjack_cli.core.rods.path`): a vertical hole."""
+        from ..core.rods.path import VerticalPath
+
+        return VerticalPath()
+
+    def pump_vertical_depth(self) -> float:
+        """The pump's true vertical depth [m]: the head of the fluid columns above it."""
+        return float(self.path().vertical_depth(self.pump_depth))
+
     def pressures(self) -> tuple[float, float] | None:
         """Discharge and intake pressure at the pump [Pa], or None when the well gives neither its
-        fluid level (pump submergence) nor its intake pressure."""
+        fluid level (pump submergence) nor its intake pressure; the heads over the pump's true
+        vertical depth."""
         from ..core.rods.pump import pump_pressures
 
         if self.pump_submergence is None and self.pump_intake_pressure is None:
             return None
-        return pump_pressures(self.pump_depth, self.fluid_density, submergence=self.pump_submergence,
+        return pump_pressures(self.pump_vertical_depth(), self.fluid_density, submergence=self.pump_submergence,
                               intake_pressure=self.pump_intake_pressure, tubing_head_pressure=self.tubing_head_pressure,
                               casing_head_pressure=self.casing_head_pressure)
 
