@@ -6,4 +6,4 @@ Layers: :mod:`pumpjack_cli.core` (pure numerics, SI arrays) <- :mod:`pumpjack_cl
 module per subcommand). See ``docs/architecture.md``.
 """
 
-__version__ = "0.2.0"
+__version__ = "0.3.0"
