@@ -173,10 +173,10 @@ def test_counterbalance_effect_balances_the_torque_at_the_test_angle():
     lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     bal = Counterbalance(-800.0, 60e3, 0.0)
     test = np.array([math.pi / 2])
-    cbe = counterbalance_effect(float(lk.torque_factor(test)[0]), bal)
+    cbe = counterbalance_effect(lk.motion(test), bal)
     assert api_net_torque(test, lk.torque_factor(test), np.array([cbe]), bal)[0] == pytest.approx(0.0, abs=1e-9)
     with pytest.raises(TorqueError, match="test angle"):
-        counterbalance_effect(0.0, bal)
+        counterbalance_effect(dataclasses.replace(lk.motion(test), torque_factor=np.zeros(1)), bal)
 
 
 def test_permissible_load_by_hand():
@@ -187,7 +187,7 @@ def test_permissible_load_by_hand():
     tf = lk.torque_factor(theta)
     bal = Counterbalance(700.0, 80e3, 0.0)
     rating = 5600 * 9.80665
-    low, high = permissible_load(theta, tf, bal, rating)
+    low, high = permissible_load(tf, -tf * 700.0 - 80e3 * np.sin(theta), rating)
     for k in range(theta.size):
         cb = 80e3 * math.sin(theta[k])
         a, b = 700.0 + (cb - rating) / tf[k], 700.0 + (cb + rating) / tf[k]
@@ -201,11 +201,11 @@ def test_permissible_load_by_hand():
 def test_permissible_load_where_the_torque_factor_vanishes():
     """TF = 0: any load if the counterbalance alone is within the rating, none otherwise."""
     theta = np.radians([0.0, 90.0])
-    low, high = permissible_load(theta, np.zeros(2), Counterbalance(0.0, 50e3, 0.0), 40e3)
+    low, high = permissible_load(np.zeros(2), -50e3 * np.sin(theta), 40e3)
     assert (low[0], high[0]) == (-np.inf, np.inf)      # |50e3 sin 0| = 0 <= 40e3
     assert (low[1], high[1]) == (np.inf, -np.inf)      # |50e3 sin 90| = 50e3 > 40e3: empty
     with pytest.raises(TorqueError, match="gearbox rating"):
-        permissible_load(theta, np.ones(2), Counterbalance(0.0, 0.0), 0.0)
+        permissible_load(np.ones(2), np.zeros(2), 0.0)
 
 
 def test_upstroke_mask_matches_rising_polished_rod():

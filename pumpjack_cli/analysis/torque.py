@@ -106,7 +106,7 @@ class _Torques:
     """Torque terms [N·m] on one crank-angle grid and the net torque of the chosen method."""
 
     run: CardRun
-    components: object
+    components: TorqueComponents
     api: np.ndarray
     exact: np.ndarray | None
     net: np.ndarray
@@ -185,18 +185,17 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
-    sine = np.sin(theta - balance.offset)
-    rod_torque = linkage.torque_factor(theta) * (dense.run.load - balance.structural_unbalance)
-    recommendation = recommend_counterbalance(criterion, linkage, theta, dense.run.load, balance,
-                                              extra_torque=dense.net - rod_torque + balance.moment * sine,
-                                              weights=dt, test_angle=TEST_ANGLE)
+    parts = dense.components
+    recommendation = recommend_counterbalance(
+        criterion, linkage, theta, dense.run.load, balance, weights=dt, test_angle=TEST_ANGLE,
+        extra_torque=dense.net - parts.rod_load - parts.structural - parts.counterbalance)
     if recommendation.moment is None:
         raise PumpjackError(f"--balance {criterion}: {recommendation.note}; try --balance min-peak or min-rms")
 
-    def shifted(t: _Torques, moment: float) -> np.ndarray:
-        return t.net + (balance.moment - moment) * np.sin(t.run.crank_angle - balance.offset)
+    def shifted(t: _Torques, value: float) -> np.ndarray:
+        """The net torque with the balancing variable at ``value`` (its torque is affine in it)."""
+        return t.net + (value - balance.value) * balance.torque_per_value(linkage.motion(t.run.crank_angle))
 
-    tf_test = float(linkage.torque_factor(np.array([TEST_ANGLE]))[0])
     work = card_work(linkage, card)
     frequency = 1.0 / out.run.period
     summary = [Scalar("structural_unbalance", balance.structural_unbalance),
@@ -205,7 +204,8 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     if moment_known:
         found = peak(theta, current)
         summary += [Scalar("counterbalance_moment", balance.moment),
-                    Scalar("counterbalance_effect", counterbalance_effect(tf_test, balance, TEST_ANGLE)),
+                    Scalar("counterbalance_effect",
+                           counterbalance_effect(linkage.motion(np.array([TEST_ANGLE])), balance)),
                     Scalar("peak_net_torque", found.value),
                     Scalar("peak_net_torque_crank_angle", found.crank_angle)]
         summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))
@@ -286,7 +286,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
                     Column("exact_minus_api_torque", t.exact - t.api)]
     columns.append(Column("recommended_net_torque", recommended))
     if rated.gearbox_torque is not None and moment_known:
-        low, high = permissible_load(run.crank_angle, m.torque_factor, balance, rated.gearbox_torque)
+        low, high = permissible_load(m.torque_factor, parts.structural + parts.counterbalance, rated.gearbox_torque)
         columns += [Column("permissible_load_min", _clip(low, run.load)),
                     Column("permissible_load_max", _clip(high, run.load))]
     return columns

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import TorqueError
-from .counterbalance import Counterbalance, counterbalance_effect, upstroke_mask
+from .counterbalance import CounterbalanceModel, counterbalance_effect, upstroke_mask
 from ..mechanism import Mechanism
 
 #: Balance criteria of :func:`recommend_counterbalance`.
@@ -317,11 +317,14 @@ class BalanceRecommendation:
 
 
 def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray,
-                             balance: Counterbalance, *, extra_torque: np.ndarray | float = 0.0,
+                             balance: CounterbalanceModel, *, extra_torque: np.ndarray | float = 0.0,
                              weights: np.ndarray | None = None, test_angle: float = math.pi / 2) -> BalanceRecommendation:
-    """The counterbalance moment M that meets ``criterion`` for a card, with B and tau kept.
+    """The value of the balancing variable (crank counterweights: the moment M) that meets
+    ``criterion`` for a card, the structure and the rest of the counterbalance kept.
 
-    T(theta; M) = TF (W - B) + T_extra - M sin(theta - tau) is affine in M:
+    The net torque T(theta; x) = TF W + T_s + T_c(x) + T_extra is affine in the variable x,
+    T_c(x) = c0 + x g (:class:`.counterbalance.CounterbalanceModel`; crank counterweights: T = TF (W - B) + T_extra -
+    M sin(theta - tau)); with base = TF W + T_s + c0 + T_extra and sine = -g, T = base - x sine:
 
     * ``equal-peaks``: the largest T of the upstroke equals that of the downstroke
       (:func:`equal_peaks_moment`);
@@ -338,8 +341,9 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
         theta [rad]; a uniform grid over one revolution unless ``weights`` are given.
     rod_load : ndarray
         W [N] at those angles.
-    balance : Counterbalance
-        B [N] and tau [rad] are used; its M is ignored.
+    balance : CounterbalanceModel
+        The structure and counterbalance (crank counterweights: B [N] and tau [rad] are
+        used; its M is ignored).
     extra_torque : ndarray or float
         Further torque terms that do not change with M [N·m] (e.g. the inertia terms of
         :func:`.torque.torque_components`); 0 for the API method.
@@ -359,11 +363,12 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
     if criterion not in BALANCE_CRITERIA:
         raise TorqueError(f"unknown balance criterion {criterion!r}; use one of {', '.join(BALANCE_CRITERIA)}")
     theta = np.asarray(crank_angle, dtype=float)
-    tf = linkage.torque_factor(theta)
-    base = tf * (np.asarray(rod_load, dtype=float) - balance.structural_unbalance) + extra_torque
+    m = linkage.motion(theta)
+    sine = -balance.torque_per_value(m)
+    fixed = balance.structural_torque(m) + balance.counterbalance_torque(m) + balance.value * sine
+    base = m.torque_factor * np.asarray(rod_load, dtype=float) + fixed + extra_torque
     if not np.all(np.isfinite(base)):
         raise TorqueError("balance: the rod load or the extra torque is not finite at every crank angle")
-    sine = np.sin(theta - balance.offset)
     if weights is not None and (np.shape(weights) != theta.shape or not np.all(np.isfinite(weights))
                                 or np.any(np.asarray(weights) < 0) or not np.sum(weights) > 0):
         raise TorqueError("balance: the weights must be finite, >= 0, not all 0, one per crank angle")
@@ -387,6 +392,5 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
     u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
     w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
     rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
-    tf_test = float(linkage.torque_factor(np.array([test_angle]))[0])
-    cbe = counterbalance_effect(tf_test, balance._replace(moment=moment), test_angle)
+    cbe = counterbalance_effect(linkage.motion(np.array([test_angle])), balance.with_value(moment))
     return BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note)

@@ -37,21 +37,85 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import NamedTuple, Protocol
 
 import numpy as np
 
 from ...errors import TorqueError
 from ..constants import STANDARD_GRAVITY
-from ..mechanism import Mechanism
+from ..mechanism import Mechanism, Motion
 from .masses import MassModel
 
+
+class CounterbalanceModel(Protocol):
+    """How a unit's structure and counterbalance load the gearbox: the seam of balancing kinds.
+
+    The gearbox torque of the structure and of the counterbalance at the mechanism's motion,
+    the latter affine in the unit's balancing variable ``value`` (the crank counterweights'
+    moment M, a beam counterweight, an air cylinder's pressure): counterbalance torque =
+    c0(theta) + value g(theta), g = :meth:`torque_per_value`. Crank counterweights are
+    :class:`Counterbalance`; a unit kind that balances otherwise adds its model in its own
+    module (``docs/architecture.md``). Torques are + when they drive the crank forward.
+    """
+
+    @property
+    def value(self) -> float:
+        """The balancing variable's present value (its unit: the kind's)."""
+        ...
+
+    def structural_torque(self, motion: Motion) -> np.ndarray:
+        """Gearbox torque of the structure's unbalance [N·m] at the motion's crank angles."""
+        ...
+
+    def counterbalance_torque(self, motion: Motion) -> np.ndarray:
+        """Gearbox torque of the counterbalance [N·m] at the motion's crank angles."""
+        ...
+
+    def torque_per_value(self, motion: Motion) -> np.ndarray:
+        """d(counterbalance torque)/d(value) at the motion's crank angles."""
+        ...
+
+    def with_value(self, value: float) -> CounterbalanceModel:
+        """The same counterbalance with the balancing variable at ``value``."""
+        ...
+
+
 class Counterbalance(NamedTuple):
-    """Structural unbalance B [N], maximum counterbalance moment M [N·m], crank offset tau [rad]."""
+    """Crank counterweights: structural unbalance B [N], maximum counterbalance moment M [N·m]
+    (the balancing variable), crank offset tau [rad]; a :class:`CounterbalanceModel`.
+
+    >>> import numpy as np
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> m = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0).motion(np.array([np.pi / 2]))
+    >>> balance = Counterbalance(1000.0, 50e3, 0.0)
+    >>> float(balance.counterbalance_torque(m)[0]), float(balance.torque_per_value(m)[0])
+    (-50000.0, -1.0)
+    """
 
     structural_unbalance: float
     moment: float
     offset: float = 0.0
+
+    @property
+    def value(self) -> float:
+        """M [N·m]."""
+        return self.moment
+
+    def structural_torque(self, motion: Motion) -> np.ndarray:
+        """-TF B [N·m] ([API11E])."""
+        return -motion.torque_factor * self.structural_unbalance
+
+    def counterbalance_torque(self, motion: Motion) -> np.ndarray:
+        """-M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004])."""
+        return -self.moment * np.sin(motion.crank_angle - self.offset)
+
+    def torque_per_value(self, motion: Motion) -> np.ndarray:
+        """-sin(theta - tau) [N·m per N·m]."""
+        return -np.sin(motion.crank_angle - self.offset)
+
+    def with_value(self, value: float) -> Counterbalance:
+        """The counterweights with the moment M = ``value`` [N·m]."""
+        return self._replace(moment=value)
 
 
 def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: float = STANDARD_GRAVITY) -> Counterbalance:
@@ -143,20 +207,21 @@ def rp11l_counterbalance_effect(buoyant_rod_weight: float, fluid_load: float) ->
     return RP11L_COUNTERBALANCE_FACTOR * (buoyant_rod_weight + 0.5 * fluid_load)
 
 
-def counterbalance_effect(torque_factor_at_test: float, balance: Counterbalance, test_angle: float = math.pi / 2) -> float:
-    """Counterbalance effect CBE [N]: the polished-rod load the counterbalance holds at the test angle.
+def counterbalance_effect(test: Motion, balance: CounterbalanceModel) -> float:
+    """Counterbalance effect CBE [N]: the polished-rod load the structure and counterbalance hold
+    at the test position.
 
-    From T = 0 at theta_t: CBE = B + M sin(theta_t - tau) / TF(theta_t). The usual test
-    position is the crank horizontal on the upstroke, theta_t = 90 deg ([Rowlan2004]).
+    From T = TF W + T_s + T_c = 0 there: CBE = -(T_s + T_c) / TF, T_s and T_c the structure's
+    and counterbalance's gearbox torques; for crank counterweights CBE = B + M sin(theta_t -
+    tau) / TF(theta_t). The usual test position is the crank horizontal on the upstroke,
+    theta_t = 90 deg ([Rowlan2004]).
 
     Parameters
     ----------
-    torque_factor_at_test : float
-        TF(theta_t) [m]; must not vanish.
-    balance : Counterbalance
-        B [N], M [N·m], tau [rad].
-    test_angle : float
-        theta_t [rad].
+    test : Motion
+        The mechanism's motion at the one test crank angle theta_t; TF(theta_t) must not vanish.
+    balance : CounterbalanceModel
+        The structure and counterbalance.
 
     Returns
     -------
@@ -169,16 +234,20 @@ def counterbalance_effect(torque_factor_at_test: float, balance: Counterbalance,
 
     Examples
     --------
-    B = 1000 N, M = 50 kN·m, tau = 0, TF(90 deg) = 1.25 m: CBE = 1000 + 50 000/1.25 = 41 000 N.
+    B = 1000 N, M = 50 kN·m, tau = 0 on SK8-3,5-4000 at 90 deg, where TF = 1.3471 m:
+    CBE = 1000 + 50 000 / TF = 38 115.7 N.
 
-    >>> counterbalance_effect(1.25, Counterbalance(1000.0, 50e3, 0.0))
-    41000.0
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> test = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0).motion(np.array([math.pi / 2]))
+    >>> round(float(test.torque_factor[0]), 4), round(counterbalance_effect(test, Counterbalance(1000.0, 50e3)), 1)
+    (1.3471, 38115.7)
     """
-    if not abs(torque_factor_at_test) > 0 or not math.isfinite(torque_factor_at_test):
+    tf = float(test.torque_factor[0])
+    if not abs(tf) > 0 or not math.isfinite(tf):
         raise TorqueError(f"counterbalance effect: the torque factor at the test angle "
-                          f"{math.degrees(test_angle):.4g} deg is {torque_factor_at_test:.4g} m; "
+                          f"{math.degrees(float(test.crank_angle[0])):.4g} deg is {tf:.4g} m; "
                           f"choose a test angle away from the dead positions")
-    return balance.structural_unbalance + balance.moment * math.sin(test_angle - balance.offset) / torque_factor_at_test
+    return -float(balance.structural_torque(test)[0] + balance.counterbalance_torque(test)[0]) / tf
 
 
 # --- realising a moment with counterweight blocks ----------------------------------

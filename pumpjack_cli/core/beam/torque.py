@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import TorqueError
-from .counterbalance import Counterbalance, counterbalance_from_masses
+from .counterbalance import Counterbalance, CounterbalanceModel, counterbalance_from_masses
 from . import kinetostatics
 from .kinetostatics import rational_mechanism
 from ..mechanism import Mechanism
@@ -142,7 +142,7 @@ def crank_group_inertia(masses: MassModel) -> float:
         masses.counterweight_mass * masses.counterweight_radius**2
 
 
-def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray, balance: Counterbalance, *,
+def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray, balance: CounterbalanceModel, *,
                       beam_inertia: float = 0.0, rotary_inertia: float = 0.0,
                       crank_speed: np.ndarray | float = 0.0, crank_acceleration: np.ndarray | float = 0.0) -> TorqueComponents:
     """The gearbox torque terms of [Takacs2016] at each crank angle, as arrays.
@@ -155,8 +155,8 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
         theta [rad].
     rod_load : ndarray
         W [N] at those angles.
-    balance : Counterbalance
-        B [N], M [N·m], tau [rad].
+    balance : CounterbalanceModel
+        The structure and counterbalance (crank counterweights: B [N], M [N·m], tau [rad]).
     beam_inertia : float
         I_b [kg·m²] about the saddle bearing (:func:`beam_group_inertia`).
     rotary_inertia : float
@@ -185,32 +185,31 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
     return TorqueComponents(
         crank_angle=theta,
         rod_load=tf * w,
-        structural=-tf * balance.structural_unbalance,
-        counterbalance=-balance.moment * np.sin(theta - balance.offset),
+        structural=balance.structural_torque(m),
+        counterbalance=balance.counterbalance_torque(m),
         articulating_inertia=m.beam_rate * beam_inertia * beam_acceleration,
         rotary_inertia=rotary_inertia * crank_acceleration,
     )
 
 
-def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance: Counterbalance,
+def permissible_load(torque_factor: np.ndarray, counter_torque: np.ndarray,
                      torque_rating: float) -> tuple[np.ndarray, np.ndarray]:
     """Permissible load diagram: the polished-rod loads W_min, W_max [N] that keep |T| <= T_r.
 
-    From |TF (W - B) - M sin(theta - tau)| <= T_r: for TF > 0,
-    B + (M sin(theta - tau) - T_r)/TF <= W <= B + (M sin(theta - tau) + T_r)/TF, and the
-    bounds swap where TF < 0 ([GaultSWPSC], from the definition). Where TF = 0 the load does
-    not reach the gearbox: every W is allowed (W_min = -inf, W_max = +inf) if the
-    counterbalance alone keeps |M sin(theta - tau)| <= T_r, and none (W_min = +inf,
-    W_max = -inf) otherwise. Near TF = 0 the finite bounds grow without limit.
+    With T = TF W + T_c, T_c the gearbox torque of the structure and the counterbalance
+    (crank counterweights: T_c = -TF B - M sin(theta - tau)), |T| <= T_r gives for TF > 0
+    (-T_r - T_c)/TF <= W <= (T_r - T_c)/TF, and the bounds swap where TF < 0
+    ([GaultSWPSC], from the definition). Where TF = 0 the load does not reach the gearbox:
+    every W is allowed (W_min = -inf, W_max = +inf) if the counterbalance alone keeps
+    |T_c| <= T_r, and none (W_min = +inf, W_max = -inf) otherwise. Near TF = 0 the finite
+    bounds grow without limit.
 
     Parameters
     ----------
-    crank_angle : ndarray
-        theta [rad].
     torque_factor : ndarray
         TF [m].
-    balance : Counterbalance
-        B [N], M [N·m], tau [rad].
+    counter_torque : ndarray
+        T_c [N·m] at the same crank angles.
     torque_rating : float
         T_r [N·m], > 0: the gearbox rating.
 
@@ -225,21 +224,21 @@ def permissible_load(crank_angle: np.ndarray, torque_factor: np.ndarray, balance
 
     Examples
     --------
-    TF = 2 m, B = 1 kN, M = 30 kN·m at 90 deg, T_r = 50 kN·m: 1000 + (30 000 -+ 50 000)/2.
+    TF = 2 m, B = 1 kN, M = 30 kN·m at 90 deg (T_c = -2000 - 30 000 N·m), T_r = 50 kN·m:
+    1000 + (30 000 -+ 50 000)/2.
 
-    >>> permissible_load(np.array([np.pi / 2]), np.array([2.0]), Counterbalance(1e3, 30e3, 0.0), 50e3)
+    >>> permissible_load(np.array([2.0]), np.array([-32e3]), 50e3)
     (array([-9000.]), array([41000.]))
     """
-    theta = np.asarray(crank_angle, dtype=float)
     tf = np.asarray(torque_factor, dtype=float)
-    _finite("permissible load", theta, tf)
+    counter = np.asarray(counter_torque, dtype=float)
+    _finite("permissible load", tf, counter)
     if not (np.isfinite(torque_rating) and torque_rating > 0):
         raise TorqueError(f"permissible load: the gearbox rating is {torque_rating!r} N·m; it must be positive")
-    counter = balance.moment * np.sin(theta - balance.offset)
     zero = tf == 0.0
     safe = np.where(zero, 1.0, tf)
-    first = balance.structural_unbalance + (counter - torque_rating) / safe
-    second = balance.structural_unbalance + (counter + torque_rating) / safe
+    first = (-torque_rating - counter) / safe
+    second = (torque_rating - counter) / safe
     low, high = np.where(tf > 0, first, second), np.where(tf > 0, second, first)
     free = np.abs(counter) <= torque_rating
     low = np.where(zero, np.where(free, -np.inf, np.inf), low)
