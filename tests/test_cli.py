@@ -25,7 +25,8 @@ from pumpjack_cli.config import load_unit, read_unit_file
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.errors import PumpjackError
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 SK8 = "sk8-3.5-4000"
 SEED_OMEGA1 = 1.1422  # 1/s, [SK8Rotation2013] (printed to 4 decimals)
 SEED_SPM = 10.9  # 1/min, [SK8Rotation2013] (printed to 1 decimal)
@@ -224,8 +225,8 @@ def test_field_units_json_summary(run_cli):
 
 def test_gost_and_api_files_give_identical_csv(run_cli):
     args = ("--spm", "10", "-f", "csv")
-    code_a, gost, err_a = run_cli("kinematics", ROOT / "configs" / "sk8-3.5-4000.toml", *args)
-    code_b, api, err_b = run_cli("kinematics", ROOT / "samples" / "sk8-3.5-4000-api.yaml", *args)
+    code_a, gost, err_a = run_cli("kinematics", REPO_ROOT / "configs" / "sk8-3.5-4000.toml", *args)
+    code_b, api, err_b = run_cli("kinematics", REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml", *args)
     assert (code_a, code_b, err_a, err_b) == (0, 0, "", "")
     assert gost.startswith("crank_angle_deg,")
     assert gost == api
@@ -334,7 +335,7 @@ ERROR_CASES = [
     ("unknown-option", lambda tmp: ["kinematics", SK8, "--bogus"], ["--bogus"]),
     ("unknown-command", lambda tmp: ["no-such-command", SK8], ["no-such-command"]),
     ("missing-argument", lambda tmp: ["kinematics"], ["Missing argument", "unit"]),
-    ("no-drive-no-spm", lambda tmp: ["kinematics", ROOT / "samples" / "sk8-3.5-4000-api.yaml"],
+    ("no-drive-no-spm", lambda tmp: ["kinematics", REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"],
      ["[drive]", "--spm"]),
 ]
 
@@ -401,7 +402,7 @@ def test_units_lists_every_bundled_unit(run_cli):
     code, out, err = run_cli("units", "-f", "csv")
     assert (code, err) == (0, "")
     rows = list(csv.DictReader(io.StringIO(out)))
-    stems = sorted(p.stem for p in (ROOT / "configs").glob("*.toml"))
+    stems = sorted(p.stem for p in (REPO_ROOT / "configs").glob("*.toml"))
     assert [row["name"] for row in rows] == stems
     by_name = {row["name"]: row for row in rows}
     assert by_name["sk8-3.5-4000"]["designation"] == "SK8-3,5-4000"
@@ -411,7 +412,7 @@ def test_units_lists_every_bundled_unit(run_cli):
     assert abs(float(by_name["7sk12-2.5-5600"]["stroke_m"]) - 2.5) < 1.5e-4
 
 
-@pytest.mark.parametrize("name", sorted(p.stem for p in (ROOT / "configs").glob("*.toml")
+@pytest.mark.parametrize("name", sorted(p.stem for p in (REPO_ROOT / "configs").glob("*.toml")
                                          if read_unit_file(p).kind == "beam-pump"))
 def test_units_stroke_equals_kinematics_stroke(run_cli, name):
     # The listing and the kinematics summary must agree on the exact stroke

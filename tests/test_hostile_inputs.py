@@ -20,10 +20,11 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-SK8 = ROOT / "configs" / "sk8-3.5-4000.toml"
-SK8_CARD = ROOT / "samples" / "sk8-3.5-4000-card.csv"
-UNB = ROOT / "configs" / "unb-600a.toml"
+from helpers import REPO_ROOT
+
+SK8 = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
+SK8_CARD = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
+UNB = REPO_ROOT / "configs" / "unb-600a.toml"
 
 #: Every beam-unit command, as a function of the unit argument.
 COMMANDS = {
@@ -311,7 +312,7 @@ def _script_path() -> str:
 
 
 def _script(argv, **kwargs):
-    return subprocess.run([_script_path(), *map(str, argv)], cwd=ROOT, timeout=120, **kwargs)
+    return subprocess.run([_script_path(), *map(str, argv)], cwd=REPO_ROOT, timeout=120, **kwargs)
 
 
 @pytest.mark.parametrize("fmt", ["csv", "json", "table"])
@@ -326,7 +327,7 @@ def test_full_stdout_is_one_line(fmt):
 def test_closed_stdout_is_one_line(fmt):
     script = _script_path()
     done = subprocess.run(f"{script} kinematics sk8-3.5-4000 --steps 20 -f {fmt} >&-", shell=True,
-                          capture_output=False, stderr=subprocess.PIPE, cwd=ROOT, timeout=120)
+                          capture_output=False, stderr=subprocess.PIPE, cwd=REPO_ROOT, timeout=120)
     err = done.stderr.decode()
     assert done.returncode == 2 and err == "pumpjack: error: standard output is closed: give --output FILE\n", err
 
@@ -335,7 +336,7 @@ def test_closed_stdout_is_one_line(fmt):
 def test_broken_pipe_is_quiet(fmt):
     """The reader takes 10 bytes and closes the pipe: exit code 1, nothing on stderr."""
     process = subprocess.Popen([_script_path(), "kinematics", "sk8-3.5-4000", "--steps", "20000", "-f", fmt],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=REPO_ROOT)
     process.stdout.read(10)
     process.stdout.close()
     err = process.stderr.read()

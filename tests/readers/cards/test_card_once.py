@@ -9,7 +9,6 @@ process) run on a time-stamped card.
 from __future__ import annotations
 
 from collections import Counter
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,8 +18,9 @@ from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers import cards
 from pumpjack_cli.readers.cards import RawCard, read_card
 
-ROOT = Path(__file__).resolve().parents[1]
-SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
+from helpers import REPO_ROOT
+
+SAMPLE = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 #: The sample's columns, read with numpy (independently of the reader): time [s], position [m], load [kN].
 TIME, POSITION, LOAD_KN = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True)
 

@@ -24,14 +24,15 @@ import pytest
 from pumpjack_cli.config import bundled_units, load_unit, parse_unit, read_unit_file
 from pumpjack_cli.errors import ConfigError, PumpjackError
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 CONFIG_SUFFIXES = (".toml", ".yaml", ".yml", ".json")
 SHIPPED_FILES = sorted(
-    p for folder in ("configs", "samples") for p in (ROOT / folder).iterdir() if p.suffix in CONFIG_SUFFIXES
+    p for folder in ("configs", "samples") for p in (REPO_ROOT / folder).iterdir() if p.suffix in CONFIG_SUFFIXES
 )
-BUNDLED_FILES = sorted(p for p in (ROOT / "configs").iterdir() if p.suffix in CONFIG_SUFFIXES)
-SK8 = ROOT / "configs" / "sk8-3.5-4000.toml"
-SK8_API = ROOT / "samples" / "sk8-3.5-4000-api.yaml"
+BUNDLED_FILES = sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.suffix in CONFIG_SUFFIXES)
+SK8 = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
+SK8_API = REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"
 RPM = 2 * math.pi / 60
 
 # Tolerance for values given with a unit ("3500 mm" -> 3500 * 1e-3): the conversion
@@ -49,11 +50,11 @@ def _sk8_data() -> dict:
 
 def test_shipped_files_are_discovered():
     # Guard for the parametrized test below: an empty glob would silently test nothing.
-    names = {p.relative_to(ROOT).as_posix() for p in SHIPPED_FILES}
+    names = {p.relative_to(REPO_ROOT).as_posix() for p in SHIPPED_FILES}
     assert {"configs/sk8-3.5-4000.toml", "samples/sk8-3.5-4000-api.yaml"} <= names
 
 
-@pytest.mark.parametrize("path", SHIPPED_FILES, ids=lambda p: p.relative_to(ROOT).as_posix())
+@pytest.mark.parametrize("path", SHIPPED_FILES, ids=lambda p: p.relative_to(REPO_ROOT).as_posix())
 def test_shipped_file_validates(path):
     config = read_unit_file(path)
     assert config.name
@@ -72,7 +73,7 @@ def test_bundled_units_lists_every_config_file():
     for name, path in units.items():
         assert Path(path).is_file()
         assert Path(path).stem == name
-        assert Path(path).read_bytes() == (ROOT / "configs" / Path(path).name).read_bytes()
+        assert Path(path).read_bytes() == (REPO_ROOT / "configs" / Path(path).name).read_bytes()
 
 
 @pytest.mark.parametrize("spec", ["sk8-3.5-4000", "SK8-3.5-4000", "Sk8-3.5-4000", "SK8-3,5-4000", "sk8-3,5-4000"])
@@ -83,7 +84,7 @@ def test_load_unit_by_bundled_name(spec):
 def test_load_unit_by_path(monkeypatch):
     expected = read_unit_file(SK8)
     assert load_unit(str(SK8)) == expected
-    monkeypatch.chdir(ROOT)
+    monkeypatch.chdir(REPO_ROOT)
     assert load_unit("configs/sk8-3.5-4000.toml") == expected
     assert load_unit("samples/sk8-3.5-4000-api.yaml").name == "SK8-3,5-4000 (API letters)"
 

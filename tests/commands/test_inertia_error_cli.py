@@ -25,7 +25,8 @@ from pumpjack_cli.core.slider_crank.mechanism import slider_inertia_laws
 from pumpjack_cli.core.slider_crank.support_friction import redundant_support_friction
 from pumpjack_cli.quantities import parse_quantity
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 UNB = "unb-600a"
 R, L2 = 0.2, 1.19  # m, [InertiaUNB600A]
 LAMBDA = R / L2
@@ -161,7 +162,7 @@ def test_help(run_cli):
 
 
 def _unb_variant(tmp_path: Path, old: str, new: str) -> Path:
-    text = (ROOT / "configs" / "unb-600a.toml").read_text(encoding="utf-8")
+    text = (REPO_ROOT / "configs" / "unb-600a.toml").read_text(encoding="utf-8")
     assert old in text
     path = tmp_path / "unit.toml"
     path.write_text(text.replace(old, new), encoding="utf-8")
@@ -200,7 +201,7 @@ def test_bad_options_exit_2_with_one_line(run_cli, args, message):
 
 
 def test_support_friction_needs_a_stepped_slider(run_cli, tmp_path):
-    text = (ROOT / "configs" / "unb-600a.toml").read_text(encoding="utf-8")
+    text = (REPO_ROOT / "configs" / "unb-600a.toml").read_text(encoding="utf-8")
     path = tmp_path / "plain.toml"
     path.write_text(text[: text.index("\n[stepped_slider]")] + "\n", encoding="utf-8")
     code, _, err = run_cli("inertia-error", path, "--support-friction")

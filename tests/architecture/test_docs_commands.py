@@ -18,8 +18,9 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-DOCUMENTS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+from helpers import REPO_ROOT
+
+DOCUMENTS = [REPO_ROOT / "README.md", *sorted((REPO_ROOT / "docs").glob("*.md"))]
 #: Options whose value is a file the command writes.
 OUTPUTS = ("--plot", "-o", "--output")
 PLACEHOLDER = re.compile(r"^(?:[A-Z][A-Z_]*|\[.*|.*\|.*)$")
@@ -54,7 +55,7 @@ def _stages(text: str) -> list[list[str]] | None:
                 continue
             if PLACEHOLDER.match(word) or word.startswith("tcp://"):
                 return None
-            if re.search(r"\.(csv|toml|yaml|yml|json|sqlite)$", word) and not (ROOT / word).exists():
+            if re.search(r"\.(csv|toml|yaml|yml|json|sqlite)$", word) and not (REPO_ROOT / word).exists():
                 return None
         stages.append(words)
     return stages or None
@@ -70,7 +71,7 @@ def test_the_documents_show_commands_that_run_here():
 
 @pytest.mark.parametrize(("name", "text", "stages"), RUNNABLE, ids=[f"{n}: {t[:60]}" for n, t, _ in RUNNABLE])
 def test_a_documented_command_runs(run_cli, tmp_path, monkeypatch, name, text, stages):
-    monkeypatch.chdir(ROOT)
+    monkeypatch.chdir(REPO_ROOT)
     out = None
     for words in stages:
         argv = [str(tmp_path / Path(word).name) if i and words[i - 1] in OUTPUTS else word
@@ -109,7 +110,7 @@ SHOWN = _shown_outputs()
 @pytest.mark.parametrize(("name", "command", "words", "shown"), SHOWN, ids=[f"{n}: {c[:60]}" for n, c, _, _ in SHOWN])
 def test_the_numbers_a_document_shows_are_printed(run_cli, tmp_path, monkeypatch, name, command, words, shown):
     """Each summary value a document shows (name, value, unit) is what the command prints."""
-    monkeypatch.chdir(ROOT)
+    monkeypatch.chdir(REPO_ROOT)
     argv = [str(tmp_path / Path(word).name) if i and words[i - 1] in OUTPUTS else word for i, word in enumerate(words)]
     code, out, err = run_cli(*argv, "-f", "table")
     assert code == 0, err

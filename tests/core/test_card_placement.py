@@ -17,7 +17,8 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers.cards import read_card
 
-ROOT = Path(__file__).resolve().parent.parent
+from helpers import REPO_ROOT
+
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 INCH, LBF = 0.0254, 4.4482216152605
 
@@ -167,11 +168,11 @@ def test_missing_card_file(tmp_path):
 
 def test_sample_cards_are_what_the_script_makes():
     """samples/make_cards.py documents how the sample cards were made: rerun it in memory."""
-    spec = importlib.util.spec_from_file_location("make_cards", ROOT / "samples" / "make_cards.py")
+    spec = importlib.util.spec_from_file_location("make_cards", REPO_ROOT / "samples" / "make_cards.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     for name in module.CARDS:
-        assert (ROOT / "samples" / f"{name}-card.csv").read_text(encoding="utf-8") == module.write(name), name
+        assert (REPO_ROOT / "samples" / f"{name}-card.csv").read_text(encoding="utf-8") == module.write(name), name
 
 
 @pytest.mark.parametrize("name", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])
@@ -180,6 +181,6 @@ def test_sample_cards_fit_their_units(name):
     peak stays below the unit's rated polished-rod load (80, 120 kN; 13 300 lbf)."""
     rated = {"sk8-3.5-4000": 80e3, "7sk12-2.5-5600": 120e3, "c-114d-133-54": 13300 * LBF}
     linkage = load_unit(name).geometry.mechanism()
-    reading = read(ROOT / "samples" / f"{name}-card.csv", linkage)
+    reading = read(REPO_ROOT / "samples" / f"{name}-card.csv", linkage)
     assert reading.warnings == ()
     assert 0 < reading.card.load.min() < reading.card.load.max() < rated[name]

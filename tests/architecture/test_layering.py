@@ -19,13 +19,14 @@ import pytest
 
 from pumpjack_cli.cli import COMMANDS, command_function
 
-ROOT = Path(__file__).resolve().parents[1]
-PACKAGE = ROOT / "pumpjack_cli"
+from helpers import REPO_ROOT
+
+PACKAGE = REPO_ROOT / "pumpjack_cli"
 
 
 def _imports(path: Path) -> set[str]:
     """Absolute module names a file imports (relative imports resolved against its package)."""
-    package = path.relative_to(ROOT).with_suffix("").parts[:-1]
+    package = path.relative_to(REPO_ROOT).with_suffix("").parts[:-1]
     found = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.Import):
@@ -62,7 +63,7 @@ FORBIDDEN = {
                          ids=lambda x: x if isinstance(x, str) else x.name)
 def test_layers_import_only_downwards(layer, path):
     bad = {name for name in _imports(path) if name.startswith(FORBIDDEN[layer])}
-    assert not bad, f"{path.relative_to(ROOT)} imports {sorted(bad)}"
+    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
 
 
 #: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other.
@@ -73,10 +74,11 @@ READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cl
 def test_readers_import_only_errors_quantities_and_text_input(path):
     bad = {name for name in _imports(path) if name.startswith(("pumpjack_cli", "pydantic", "typer", "rich"))
            and not name.startswith(READERS_IMPORT)}
-    assert not bad, f"{path.relative_to(ROOT)} imports {sorted(bad)}"
+    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
 
 
-@pytest.mark.parametrize("path", sorted((ROOT / "tests").glob("test_*.py")), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", sorted((REPO_ROOT / "tests").rglob("test_*.py")),
+                         ids=lambda p: p.relative_to(REPO_ROOT / "tests").as_posix())
 def test_tests_do_not_import_command_modules(path):
     assert not {name for name in _imports(path) if name.startswith("pumpjack_cli.commands")}
 
@@ -104,8 +106,8 @@ def test_command_summary_is_the_docstring_first_line(name):
 
 
 def test_every_package_is_listed_for_installation():
-    listed = set(tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
-    found = {".".join(p.parent.relative_to(ROOT).parts) for p in PACKAGE.rglob("__init__.py")}
+    listed = set(tomllib.loads((REPO_ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
+    found = {".".join(p.parent.relative_to(REPO_ROOT).parts) for p in PACKAGE.rglob("__init__.py")}
     found.add("pumpjack_cli.configs")
     assert listed == found
 
@@ -142,11 +144,11 @@ def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor(path
     read = sorted({f"{node.attr} (line {node.lineno})" for node in ast.walk(tree)  # a section's own field is not one
                    if isinstance(node, ast.Attribute) and node.attr in CLASS_I_ATTRIBUTES
                    and not (isinstance(node.value, ast.Name) and node.value.id == "self")})
-    assert not read, f"{path.relative_to(ROOT)} reads class-I dimensions: {read}; use the Mechanism protocol"
+    assert not read, f"{path.relative_to(REPO_ROOT)} reads class-I dimensions: {read}; use the Mechanism protocol"
     products = [node.lineno for node in ast.walk(tree) if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult)
                 and ({"beam_rate", "beam_rate2"} & _names(node.left) and ARMS & _names(node.right)
                      or {"beam_rate", "beam_rate2"} & _names(node.right) and ARMS & _names(node.left))]
-    assert not products, f"{path.relative_to(ROOT)} computes a torque factor at lines {products}; ask the mechanism"
+    assert not products, f"{path.relative_to(REPO_ROOT)} computes a torque factor at lines {products}; ask the mechanism"
 
 
 def test_the_seam_test_sees_a_torque_factor(tmp_path):
@@ -161,6 +163,6 @@ def test_the_core_type_checks(tmp_path):
     """mypy over the numerical core: 0 errors (settings in pyproject.toml's [tool.mypy])."""
     pytest.importorskip("mypy")
     done = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "cache"),
-                           "--config-file", str(ROOT / "pyproject.toml"), str(PACKAGE / "core")],
+                           "--config-file", str(REPO_ROOT / "pyproject.toml"), str(PACKAGE / "core")],
                           capture_output=True, text=True, cwd=tmp_path)
     assert done.returncode == 0, done.stdout + done.stderr

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import dataclasses
 import tomllib
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,6 +21,8 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY
 from pumpjack_cli.core.beam.linkage import motion
 from pumpjack_cli.core.beam.spatial import SpatialLinkage, spatial_motion
 from pumpjack_cli.errors import ConfigError
+
+from helpers import REPO_ROOT
 
 BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
 
@@ -248,7 +249,7 @@ def test_leaning_pitmans_bour_formula():
 
 
 def test_geometry_rejects_pitman_shorter_than_its_lean():
-    data = tomllib.loads((Path(__file__).parent.parent / "configs" / "sk8-3.5-4000.toml").read_text())
+    data = tomllib.loads((REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_text())
     data["geometry"]["crank_half_spacing"] = "4 m"
     with pytest.raises(ConfigError, match=r"geometry: pitman .* shorter than the offset"):
         parse_unit(data, "x.toml")

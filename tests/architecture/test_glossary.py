@@ -19,7 +19,9 @@ import pytest
 from pumpjack_cli.names import SECTIONS, catalogue, glossary_sections, lookup
 from pumpjack_cli.quantities import OUTPUT_QUANTITIES
 
-GLOSSARY = Path(__file__).resolve().parents[1] / "docs" / "glossary.md"
+from helpers import REPO_ROOT
+
+GLOSSARY = REPO_ROOT / "docs" / "glossary.md"
 SK8_CARD = "samples/sk8-3.5-4000-card.csv"
 
 RUNS = [

@@ -22,7 +22,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48")
 
 
@@ -33,7 +34,7 @@ def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple
     rows = []
     for k in range(start, start + count):
         unit = UNITS[k % len(UNITS)]
-        lines = (ROOT / "samples" / f"{unit}-card.csv").read_text(encoding="utf-8").splitlines()
+        lines = (REPO_ROOT / "samples" / f"{unit}-card.csv").read_text(encoding="utf-8").splitlines()
         body = [line for line in lines if not line.startswith("#")]
         data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
         mean = data[:, 2].mean()
@@ -326,7 +327,7 @@ def test_a_unit_named_with_the_gost_comma_is_keyed_by_the_bundled_files_content(
 
     rows = field(tmp_path, 1)
     jobs = read_manifest(manifest(tmp_path, [("well-g", '"SK8-3,5-4000"', rows[0][2], "")]))
-    expected = hashlib.sha256((ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes()).hexdigest()
+    expected = hashlib.sha256((REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes()).hexdigest()
     assert [unit_digest(job.unit) for job in jobs] == [expected]
 
 
@@ -339,7 +340,7 @@ def test_a_changed_unit_file_is_analysed_again(run_cli, tmp_path, monkeypatch):
 
     copy = tmp_path / "units" / "sk8-3.5-4000.toml"
     copy.parent.mkdir()
-    copy.write_bytes((ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes())
+    copy.write_bytes((REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes())
     monkeypatch.setattr(unit_files, "bundled_units", lambda: {"sk8-3.5-4000": copy})
     monkeypatch.setattr(per_card, "_UNITS", {})
     rows = field(tmp_path, 1)

@@ -9,7 +9,6 @@ fine grid (not Simpson's rule) and differentiated numerically; compatibility
 from __future__ import annotations
 
 import dataclasses
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,7 +25,8 @@ from pumpjack_cli.core.beam.redundancy import PinTilts, real_mechanism
 from pumpjack_cli.core.beam.spatial import spatial_motion
 from pumpjack_cli.readers.cards import read_card
 
-ROOT = Path(__file__).resolve().parent.parent
+from helpers import REPO_ROOT
+
 UNIT = "7sk12-2.5-5600"
 OMEGA = 8 * np.pi / 30
 
@@ -36,7 +36,7 @@ def setup():
     config = load_unit(UNIT)
     ideal = config.geometry.spatial()
     theta = crank_grid(72)
-    card = place(read_card(ROOT / "samples" / f"{UNIT}-card.csv"), ideal.planar).card
+    card = place(read_card(REPO_ROOT / "samples" / f"{UNIT}-card.csv"), ideal.planar).card
     return config, ideal, config.masses.model(), config.pitman_section.model(), theta, card_load(card, theta)
 
 
@@ -206,7 +206,7 @@ def test_config_deviations_and_bounds():
 
 # --- the command ---------------------------------------------------------------------
 
-CARD = ROOT / "samples" / f"{UNIT}-card.csv"
+CARD = REPO_ROOT / "samples" / f"{UNIT}-card.csv"
 
 
 def compare(run_cli, *extra):
@@ -287,7 +287,7 @@ def test_negative_stiffness_is_rejected(field):
     from pumpjack_cli.config import parse_unit
     from pumpjack_cli.errors import ConfigError
 
-    data = tomllib.loads((ROOT / "configs" / f"{UNIT}.toml").read_text())
+    data = tomllib.loads((REPO_ROOT / "configs" / f"{UNIT}.toml").read_text())
     data["pitman_section"][field] = -1.0
     with pytest.raises(ConfigError, match=rf"x.toml: pitman_section.{field}: Input should be greater than 0"):
         parse_unit(data, "x.toml")

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import io
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -23,8 +22,9 @@ from pumpjack_cli.core.cards import PlacedCard
 from pumpjack_cli.quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
 from pumpjack_cli.readers.cards import parse_card_columns, read_card
 
-ROOT = Path(__file__).resolve().parent.parent
-SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
+from helpers import REPO_ROOT
+
+SAMPLE = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 
 #: The sample's columns in SI, read with numpy (independently of the reader).

@@ -10,7 +10,6 @@ from __future__ import annotations
 import dataclasses
 import io
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,8 +25,9 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers.cards import read_card
 
-ROOT = Path(__file__).resolve().parent.parent
-SAMPLE = ROOT / "samples" / "sk8-3.5-4000-card.csv"
+from helpers import REPO_ROOT
+
+SAMPLE = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 CCW = dataclasses.replace(SK8, rotation=-SK8.rotation)
 TIME, POSITION, LOAD_KN = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True)
@@ -269,7 +269,7 @@ def test_loop_work_is_the_enclosed_area():
 def test_sample_cards_do_positive_work():
     """The sample cards lift the fluid on the upstroke, so the rods take work from the unit."""
     for name in ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"):
-        reading = read(ROOT / "samples" / f"{name}-card.csv", load_unit(name).geometry.mechanism())
+        reading = read(REPO_ROOT / "samples" / f"{name}-card.csv", load_unit(name).geometry.mechanism())
         assert not reading.reversed and loop_work(reading.position, reading.load) > 0
 
 

@@ -15,14 +15,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 KGF = 9.80665  # N, [BIPM2019]
 LBF = 4.4482216152605  # N, [NIST811]
 INCH = 0.0254  # m
 
 
 def card(unit: str) -> Path:
-    return ROOT / "samples" / f"{unit}-card.csv"
+    return REPO_ROOT / "samples" / f"{unit}-card.csv"
 
 
 def run(run_cli, unit, *extra, card_file=None):
@@ -34,7 +35,7 @@ def run(run_cli, unit, *extra, card_file=None):
 def massless_sk8(tmp_path: Path) -> Path:
     """SK8-3,5-4000 with every link mass and moment of inertia zero (crank arms and pitmans
     at 1e-9 kg, the schema's positive floor): B = M = 0 and no inertia."""
-    text = (ROOT / "configs" / "sk8-3.5-4000.toml").read_text(encoding="utf-8")
+    text = (REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_text(encoding="utf-8")
     text = re.sub(r'(?m)^mass = "[^"]*"', 'mass = "1e-9 kg"', text)
     text = re.sub(r'(?m)^(transverse_)?inertia = "[^"]*"', r'\1inertia = "0 kg*m2"', text)
     path = tmp_path / "massless.toml"
@@ -144,7 +145,7 @@ def test_recommended_counterbalance_by_a_scan_of_m(run_cli, criterion):
 
 
 def test_mark_ii_is_refused_by_name(run_cli, tmp_path):
-    text = (ROOT / "configs" / "c-80d-133-48.toml").read_text(encoding="utf-8")
+    text = (REPO_ROOT / "configs" / "c-80d-133-48.toml").read_text(encoding="utf-8")
     unit = tmp_path / "mark.toml"
     unit.write_text(text.replace('designation = "C-80D-133-48"', 'designation = "M-912D-427-192"'), encoding="utf-8")
     code, out, err = run_cli("torque", unit, "--card", card("c-80d-133-48"))

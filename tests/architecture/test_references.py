@@ -30,8 +30,9 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parent.parent
-REFERENCES = ROOT / "docs" / "references.md"
+from helpers import REPO_ROOT
+
+REFERENCES = REPO_ROOT / "docs" / "references.md"
 
 KEY = re.compile(r"(?<![\w\[\]])\[([A-Z][A-Za-z0-9-]{3,})\](?!\()")
 ENTRY = re.compile(r"^\*\*\[([^\]]+)\]\*\*", re.MULTILINE)
@@ -61,10 +62,10 @@ def python_prose(path: Path) -> str:
 
 def documents() -> list[Path]:
     """Every file whose text may cite a source: docs, configs, samples, package and tests."""
-    files = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
-    files += sorted(p for p in (ROOT / "configs").iterdir() if p.suffix in (".toml", ".yaml", ".yml", ".json"))
-    files += sorted(p for p in (ROOT / "samples").iterdir() if p.suffix in (".yaml", ".yml", ".py", ".csv"))
-    files += sorted((ROOT / "pumpjack_cli").rglob("*.py")) + sorted((ROOT / "tests").glob("*.py"))
+    files = [REPO_ROOT / "README.md", *sorted((REPO_ROOT / "docs").glob("*.md"))]
+    files += sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.suffix in (".toml", ".yaml", ".yml", ".json"))
+    files += sorted(p for p in (REPO_ROOT / "samples").iterdir() if p.suffix in (".yaml", ".yml", ".py", ".csv"))
+    files += sorted((REPO_ROOT / "pumpjack_cli").rglob("*.py")) + sorted((REPO_ROOT / "tests").rglob("*.py"))
     return [p for p in files if p != Path(__file__).resolve()]  # this file's examples are not citations
 
 
@@ -77,7 +78,7 @@ def bibliography() -> set[str]:
 
 
 def rel(path: Path) -> str:
-    return path.relative_to(ROOT).as_posix()
+    return path.relative_to(REPO_ROOT).as_posix()
 
 
 # --- the key pattern itself ------------------------------------------------------------
@@ -140,10 +141,10 @@ def test_the_citations_are_found_at_all():
 
 
 def seed_documents() -> list[Path]:
-    files = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
-    files += sorted((ROOT / "pumpjack_cli").rglob("*.py"))
-    files += sorted(p for p in (ROOT / "configs").iterdir() if p.is_file() and p.suffix != ".pyc")
-    files += sorted(p for p in (ROOT / "samples").iterdir() if p.is_file())
+    files = [REPO_ROOT / "README.md", *sorted((REPO_ROOT / "docs").glob("*.md"))]
+    files += sorted((REPO_ROOT / "pumpjack_cli").rglob("*.py"))
+    files += sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.is_file() and p.suffix != ".pyc")
+    files += sorted(p for p in (REPO_ROOT / "samples").iterdir() if p.is_file())
     return [p for p in files if p != REFERENCES]
 
 

@@ -24,9 +24,10 @@ from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers import cards
 from pumpjack_cli.readers.cards import delimited, parse_card_columns
 
-ROOT = Path(__file__).resolve().parent.parent
+from helpers import REPO_ROOT
+
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
-LINES = (ROOT / "samples" / "sk8-3.5-4000-card.csv").read_text(encoding="utf-8").splitlines()
+LINES = (REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv").read_text(encoding="utf-8").splitlines()
 COMMENTS, HEADER, ROWS = LINES[:3], LINES[3], LINES[4:]
 KINDS = ("time", "position", "load")
 PICKS = (0, 89, len(ROWS) - 1)

@@ -24,7 +24,8 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY, STEEL_DENSITY
 from pumpjack_cli.core.rods.downhole import pump_card
 from pumpjack_cli.core.rods.string import RodString
 
-ROOT = Path(__file__).resolve().parents[1]
+from helpers import REPO_ROOT
+
 UNITS = ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48"]
 INCH, FOOT, POUND = 0.0254, 0.3048, 0.45359237
 #: RP 11L Table 4.1 ([API11L]): rod weight with couplings [lb/ft] and elastic constant
@@ -34,7 +35,7 @@ PSI = 6894.757293168361  # Pa, [NIST811]
 
 
 def card(unit: str) -> Path:
-    return ROOT / "samples" / f"{unit}-card.csv"
+    return REPO_ROOT / "samples" / f"{unit}-card.csv"
 
 
 def run(run_cli, unit, *extra, card_file=None):
