@@ -31,6 +31,11 @@ RPM = 2 * math.pi / 60
 RP11L_TABLE_4_1 = {0.625: (1.135, 1.270), 0.750: (1.634, 0.883), 0.875: (2.224, 0.649),
                    1.000: (2.904, 0.497), 1.125: (3.676, 0.393)}
 
+#: The bundled beam units with link masses (the spatial kinetostatics needs them).
+BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
+#: The bundled beam units with a sample card and a [well].
+CARD_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48")
+
 #: The bundled SK8-3,5-4000 of [SK8Rotation2013].
 SK8 = "sk8-3.5-4000"
 #: Its linkage as the paper prints it: k1, k, r, l, l1, l2 = A, C, R, P, I, H - G [m], clockwise.
@@ -39,6 +44,9 @@ SK8_LINKAGE = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
 SK8_CRANK_SPEED = 1.1422
 #: Its well: pump depth [m] and produced-fluid density [kg/m³].
 SK8_PUMP_DEPTH, SK8_FLUID_DENSITY = 1530.0, 820.0
+
+#: The UNB-600A drill pump of [InertiaUNB600A]: crank radius r and connecting rod l2 [m].
+UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH = 0.2, 1.19
 
 
 def sample_card(unit: str) -> Path:

@@ -22,9 +22,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from helpers import REPO_ROOT
+from helpers import CARD_UNITS, REPO_ROOT
 
-UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48")
 
 
 def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
@@ -33,7 +32,7 @@ def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple
     rng = np.random.default_rng(seed)
     rows = []
     for k in range(start, start + count):
-        unit = UNITS[k % len(UNITS)]
+        unit = CARD_UNITS[k % len(CARD_UNITS)]
         lines = (REPO_ROOT / "samples" / f"{unit}-card.csv").read_text(encoding="utf-8").splitlines()
         body = [line for line in lines if not line.startswith("#")]
         data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])

@@ -24,9 +24,8 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY, STEEL_DENSITY
 from pumpjack_cli.core.rods.downhole import pump_card
 from pumpjack_cli.core.rods.string import RodString
 
-from helpers import REPO_ROOT
+from helpers import CARD_UNITS, REPO_ROOT
 
-UNITS = ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48"]
 INCH, FOOT, POUND = 0.0254, 0.3048, 0.45359237
 #: RP 11L Table 4.1 ([API11L]): rod weight with couplings [lb/ft] and elastic constant
 #: E_r [in/(lb ft)] of the 1, 7/8 and 3/4 in rods (the 25, 22 and 19 mm rods of SK8).
@@ -156,7 +155,7 @@ def test_goodman_loading_and_displacement_by_hand(sk8):
                                                       rel=1e-9)
 
 
-@pytest.mark.parametrize("unit", UNITS)
+@pytest.mark.parametrize("unit", CARD_UNITS)
 def test_gibbs_and_everitt_jennings_agree_on_the_bundled_wells(run_cli_module, unit):
     """Issue 12: gross pump stroke within 1 mm, pump loads within 2 % of the card's load range."""
     gibbs = run_cli_module(unit, "--damping", "0.1")

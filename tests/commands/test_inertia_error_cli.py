@@ -1,9 +1,8 @@
 """`pumpjack inertia-error` as a user runs it: formats, library equality, errors, help.
 
-Closed-form reference numbers for UNB-600A ([InertiaUNB600A]: r = 0.2 m, l2 = 1.19 m) at the
-maximum (w t = 0): lambda = r/l2, delta_sin = 1 - 1/(1 + lambda) = 14.3885 %,
-delta_1 = 0; Phi_max = m w^2 (r + r^2/l2) ([InertiaUNB600A] eq. 2). Library values for the
-"JSON equals library" checks come from pumpjack_cli.core, called directly.
+Library values for the "JSON equals library" checks come from pumpjack_cli.core, called
+directly. The summary of UNB-600A against the closed forms of [InertiaUNB600A] eqs. 2-4 is
+checked in tests/validation/test_inertia_unb600a.py.
 """
 
 from __future__ import annotations
@@ -25,41 +24,17 @@ from pumpjack_cli.core.slider_crank.mechanism import slider_inertia_laws
 from pumpjack_cli.core.slider_crank.support_friction import redundant_support_friction
 from pumpjack_cli.quantities import parse_quantity
 
-from helpers import REPO_ROOT
+from helpers import BEAM_UNITS, POUND_FORCE, REPO_ROOT, RPM, UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH
 
 UNB = "unb-600a"
-R, L2 = 0.2, 1.19  # m, [InertiaUNB600A]
-LAMBDA = R / L2
-MASS = 240.0  # kg, the bundled file's (estimated) value
-OMEGA = 65 * 2 * math.pi / 60  # 1/s, the bundled file's 65 rpm
-BEAM_UNITS = ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"]
+R, L2 = UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH
+OMEGA = 65 * RPM  # 1/s, the bundled file's 65 rpm
 
 
 def _json(run_cli, *args):
     code, out, err = run_cli("inertia-error", *args, "-f", "json")
     assert (code, err) == (0, "")
     return json.loads(out)
-
-
-def test_bundled_unb600a_is_the_seed_mechanism():
-    config = load_any_unit(UNB)
-    assert config.kind == "slider-crank"
-    assert (config.geometry.crank_radius, config.geometry.rod_length, config.geometry.offset) == (R, L2, 0.0)
-    assert config.stroke() == pytest.approx(2 * R, rel=1e-15)
-    assert config.reciprocating.crank_speed == pytest.approx(OMEGA, rel=1e-15)
-    assert any("ESTIMATED" in source for source in config.sources)
-
-
-def test_slider_summary_reproduces_seed_equations(run_cli):
-    summary = _json(run_cli, UNB, "--steps", "12")["summary"]
-    assert summary["crank_to_rod_ratio"] == pytest.approx(LAMBDA, rel=1e-15)
-    assert summary["stroke_m"] == pytest.approx(2 * R, rel=1e-14)
-    assert summary["peak_inertia_force_n"] == pytest.approx(MASS * OMEGA**2 * (R + R**2 / L2), rel=1e-13)
-    assert summary["harmonic_peak_inertia_force_n"] == pytest.approx(MASS * R * OMEGA**2, rel=1e-13)
-    assert summary["two_term_peak_inertia_force_n"] == pytest.approx(MASS * R * OMEGA**2 * (1 + LAMBDA), rel=1e-13)
-    assert summary["harmonic_peak_error_percent"] == pytest.approx(100 * LAMBDA / (1 + LAMBDA), rel=1e-12)
-    assert summary["harmonic_peak_error_of_law_percent"] == pytest.approx(100 * LAMBDA, rel=1e-12)
-    assert summary["two_term_peak_error_percent"] == pytest.approx(0.0, abs=1e-12)
 
 
 def test_slider_json_equals_library(run_cli):
@@ -94,8 +69,7 @@ def test_csv_parses_back_and_table_renders(run_cli):
 def test_field_units(run_cli):
     si = _json(run_cli, UNB, "--steps", "4")["summary"]
     field = _json(run_cli, UNB, "--steps", "4", "--units", "field")["summary"]
-    lbf = 4.4482216152605  # N, NIST SP 811 [NIST811]
-    assert field["peak_inertia_force_lbf"] == pytest.approx(si["peak_inertia_force_n"] / lbf, rel=1e-14)
+    assert field["peak_inertia_force_lbf"] == pytest.approx(si["peak_inertia_force_n"] / POUND_FORCE, rel=1e-14)
     assert field["harmonic_peak_error_percent"] == si["harmonic_peak_error_percent"]
 
 

@@ -1,13 +1,8 @@
-"""Unit files: every shipped file validates, [SK8Rotation2013] data, name spellings, rejections.
+"""Unit files (of pumping units): every shipped file validates, bundled names, GOST names and
+API letters, one invalid field at a time, file-level errors.
 
-Reference data: [SK8Rotation2013] (Rozvidka ta rozrobka naftovykh i hazovykh rodovyshch 2013,
-no. 4(49)), the passport data of SK8-3,5-4000 it prints: k1 = 3500 mm, k = 2500 mm,
-r = 1010 mm, l = 3000 mm, l1 = 2195 mm, l2 = 3000 mm; crank arm 1373 kg, pitman 130 kg,
-counterweight 650 kg (5200 kg in all at 0.83 m), beam 1220 kg, horsehead 490 kg,
-equalizer 495 kg; motor 4AR180M4U3 30 kW, 1500/1460 rpm, M_start/M_n = 2.0,
-M_max/M_n = 2.2, rotor 0.232 kg·m²; gearbox Ts2NSh-750B u_r = 37.18; sheaves 250 and
-900 mm; well 1530 m, plunger 38 mm, rods 19/22/25 mm (51/26/23 %), 820 kg/m³,
-3e-6 m²/s, tubing 62 mm; omega1 = pi·1460/(30·37.18·900/250) = 1.1422 1/s.
+That the bundled SK8-3,5-4000 holds the data of [SK8Rotation2013] is checked in
+tests/validation/test_sk8rotation2013.py.
 """
 
 from __future__ import annotations
@@ -33,11 +28,6 @@ SHIPPED_FILES = sorted(
 BUNDLED_FILES = sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.suffix in CONFIG_SUFFIXES)
 SK8 = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
 SK8_API = REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"
-RPM = 2 * math.pi / 60
-
-# Tolerance for values given with a unit ("3500 mm" -> 3500 * 1e-3): the conversion
-# factor 1e-3 is not exact in binary, so the result may be one ulp from the decimal.
-REL_UNIT = 1e-12
 
 
 def _sk8_data() -> dict:
@@ -108,79 +98,6 @@ def test_load_unit_missing_file(tmp_path):
 def test_config_error_is_a_user_error():
     # The CLI turns PumpjackError into one line and exit 2; ConfigError must be one.
     assert issubclass(ConfigError, PumpjackError)
-
-
-# --- SK8-3,5-4000 equals [SK8Rotation2013] --------------------------------------------------
-
-
-@pytest.fixture(scope="module")
-def sk8():
-    return load_unit("SK8-3,5-4000")
-
-
-def test_sk8_identification(sk8):
-    assert sk8.name == "SK8-3,5-4000"
-
-
-def test_sk8_geometry_seed_004(sk8):
-    g = sk8.geometry
-    expected = {"front_arm": 3.5, "rear_arm": 2.5, "crank_radius": 1.01, "pitman": 3.0,
-                "horizontal_offset": 2.195, "vertical_offset": 3.0}
-    for field, value in expected.items():
-        assert getattr(g, field) == pytest.approx(value, rel=REL_UNIT), field
-    assert g.rotation == "clockwise"
-
-
-def test_sk8_masses_seed_004(sk8):
-    m = sk8.masses
-    assert m is not None
-    expected = {"crank_arm": 1373.0, "pitman": 130.0, "counterweights": 650.0,
-                "beam": 1220.0, "horsehead": 490.0, "equalizer": 495.0}
-    for field, value in expected.items():
-        assert getattr(m, field).mass == pytest.approx(value, rel=REL_UNIT), field
-    assert m.counterweights.radius == pytest.approx(0.83, rel=REL_UNIT)
-    assert m.counterweights.count == 8
-    # [SK8Rotation2013]: counterweights of 5200 kg in all.
-    assert m.counterweights.mass * m.counterweights.count == pytest.approx(5200.0, rel=REL_UNIT)
-
-
-def test_sk8_drive_seed_004(sk8):
-    d = sk8.drive
-    assert d is not None
-    assert d.motor.model == "4AR180M4U3"
-    assert d.motor.rated_power == pytest.approx(30e3, rel=REL_UNIT)
-    assert d.motor.synchronous_speed == pytest.approx(1500 * RPM, rel=REL_UNIT)
-    assert d.motor.rated_speed == pytest.approx(1460 * RPM, rel=REL_UNIT)
-    assert d.motor.starting_torque_ratio == 2.0
-    assert d.motor.breakdown_torque_ratio == 2.2
-    assert d.motor.rotor_inertia == pytest.approx(0.232, rel=REL_UNIT)
-    assert d.gearbox == "Ts2NSh-750B"
-    assert d.gearbox_ratio == 37.18
-    assert d.motor_sheave_diameter == pytest.approx(0.250, rel=REL_UNIT)
-    assert d.gearbox_sheave_diameter == pytest.approx(0.900, rel=REL_UNIT)
-    assert d.belt_ratio == pytest.approx(3.6, rel=REL_UNIT)
-
-
-def test_sk8_rated_crank_speed_seed_004(sk8):
-    omega = sk8.drive.rated_crank_speed
-    # [SK8Rotation2013]'s formula with its data; only rounding separates the two (rel 1e-12).
-    assert omega == pytest.approx(math.pi * 1460 / (30 * 37.18 * 900 / 250), rel=1e-12)
-    # The number [SK8Rotation2013] prints, 1.1422 1/s: agreement to its last printed digit.
-    assert abs(omega - 1.1422) < 1e-4
-
-
-def test_sk8_well_seed_004(sk8):
-    w = sk8.well
-    assert w is not None
-    assert w.pump_depth == pytest.approx(1530.0, rel=REL_UNIT)
-    assert w.plunger_diameter == pytest.approx(0.038, rel=REL_UNIT)
-    # [SK8Rotation2013] lists the taper 19 mm (51 %), 22 mm (26 %), 25 mm (23 %); the file
-    # gives it from the top down, as the rod string hangs: thickest rods at the top
-    assert [s.diameter for s in w.rod_string] == pytest.approx([0.025, 0.022, 0.019], rel=REL_UNIT)
-    assert [s.fraction for s in w.rod_string] == pytest.approx([0.23, 0.26, 0.51], rel=REL_UNIT)
-    assert w.fluid_density == pytest.approx(820.0, rel=REL_UNIT)
-    assert w.fluid_kinematic_viscosity == pytest.approx(3e-6, rel=REL_UNIT)
-    assert w.tubing_inner_diameter == pytest.approx(0.062, rel=REL_UNIT)
 
 
 # --- GOST names vs API letters -----------------------------------------------------

@@ -1,10 +1,12 @@
-"""Input units: parse_quantity against the exact definitions of the units.
+"""Units of measure (pumpjack_cli.quantities): parse_quantity and the output units.
 
-Expected values are built here from the definitions (NIST SP 811 (2008), Appendix B [NIST811];
-the SI prefixes; rpm = 2 pi / 60 rad/s), never from the package's own constants.
-Tolerance: each expected value is a product of a few decimal definitions, computed
-in a possibly different order than the package does, so the two may differ by a few
-units in the last place; rel = 1e-14 (about 45 ulp) allows that and nothing more.
+Expected values are built here from the conversion factors of the units they combine (the
+package's in, ft, lb, lbf, kgf and hp, whose values are checked against their published
+definitions in tests/validation/test_nist811.py; the SI prefixes; rpm = 2 pi / 60 rad/s), so
+each case checks that its text maps to the right unit and the right combination of factors.
+Tolerance: each expected value is a product of a few factors, computed in a possibly
+different order than the package does, so the two may differ by a few units in the last
+place; rel = 1e-14 (about 45 ulp) allows that and nothing more.
 """
 
 from __future__ import annotations
@@ -13,25 +15,12 @@ import math
 
 import pytest
 
+from pumpjack_cli.core.constants import STANDARD_GRAVITY
 from pumpjack_cli.quantities import output_unit, parse_quantity
 
-# Exact definitions (NIST SP 811, Appendix B).
-IN = 0.0254  # m
-FT = 0.3048  # m
-LB = 0.45359237  # kg
-G_N = 9.80665  # m/s², standard gravity: kgf = 9.80665 N
-LBF = 4.4482216152605  # N = LB * G_N exactly
-HP = 550 * FT * LB * G_N  # 1 hp = 550 ft·lbf/s = 745.69987158227022 W
-RPM = 2 * math.pi / 60  # rad/s
+from helpers import FOOT, HORSEPOWER, INCH, KILOGRAM_FORCE, POUND_FORCE, POUND_MASS, RPM
 
 REL = 1e-14  # see the module docstring
-
-
-def test_definitions_used_here_are_consistent():
-    # lbf and hp are themselves defined from lb, g_n and ft; check the constants above
-    # against each other so a typo in one of them cannot go unnoticed.
-    assert LB * G_N == pytest.approx(LBF, rel=1e-15)
-    assert HP == pytest.approx(745.69987158227022, rel=1e-15)
 
 
 CASES = [
@@ -40,38 +29,38 @@ CASES = [
     ("350 cm", "length", 3.5),
     ("2 m", "length", 2.0),
     ("1.53 km", "length", 1530.0),
-    ("137.5 in", "length", 137.5 * IN),
-    ("1 in", "length", IN),
-    ("1 ft", "length", FT),
-    ("10 ft", "length", 10 * FT),
+    ("137.5 in", "length", 137.5 * INCH),
+    ("1 in", "length", INCH),
+    ("1 ft", "length", FOOT),
+    ("10 ft", "length", 10 * FOOT),
     # mass
-    ("1 lb", "mass", LB),
-    ("3 lbm", "mass", 3 * LB),
+    ("1 lb", "mass", POUND_MASS),
+    ("3 lbm", "mass", 3 * POUND_MASS),
     ("1373 kg", "mass", 1373.0),
     ("2 t", "mass", 2000.0),
     ("500 g", "mass", 0.5),
     # force
-    ("1 lbf", "force", LBF),
-    ("1 lbf", "force", LB * G_N),
-    ("13.3 klbf", "force", 13300 * LBF),
-    ("1 kgf", "force", G_N),
-    ("2 tf", "force", 2000 * G_N),
+    ("1 lbf", "force", POUND_FORCE),
+    ("1 lbf", "force", POUND_MASS * STANDARD_GRAVITY),
+    ("13.3 klbf", "force", 13300 * POUND_FORCE),
+    ("1 kgf", "force", STANDARD_GRAVITY),
+    ("2 tf", "force", 2000 * KILOGRAM_FORCE),
     ("80 kN", "force", 80000.0),
     ("5 N", "force", 5.0),
     # torque
     ("1 N·m", "torque", 1.0),
     ("7 N*m", "torque", 7.0),
     ("56 kN·m", "torque", 56000.0),
-    ("5600 kgf·m", "torque", 5600 * G_N),
-    ("114000 lbf·in", "torque", 114000 * LBF * IN),
-    ("12 in·lbf", "torque", LBF * FT),  # 12 in = 1 ft
-    ("1 ft·lbf", "torque", LBF * FT),
-    ("1 lbf*ft", "torque", LBF * FT),
+    ("5600 kgf·m", "torque", 5600 * KILOGRAM_FORCE),
+    ("114000 lbf·in", "torque", 114000 * POUND_FORCE * INCH),
+    ("12 in·lbf", "torque", POUND_FORCE * FOOT),  # 12 in = 1 ft
+    ("1 ft·lbf", "torque", POUND_FORCE * FOOT),
+    ("1 lbf*ft", "torque", POUND_FORCE * FOOT),
     # moment of inertia
     ("0.232 kg*m2", "moment_of_inertia", 0.232),
     ("0.232 kg·m²", "moment_of_inertia", 0.232),
-    ("1 lb·ft²", "moment_of_inertia", LB * FT**2),
-    ("1 lb*in2", "moment_of_inertia", LB * IN**2),
+    ("1 lb·ft²", "moment_of_inertia", POUND_MASS * FOOT**2),
+    ("1 lb*in2", "moment_of_inertia", POUND_MASS * INCH**2),
     # rotational speed
     ("1460 rpm", "rotational_speed", 1460 * RPM),
     ("1460 RPM", "rotational_speed", 1460 * RPM),
@@ -84,15 +73,14 @@ CASES = [
     ("90°", "angle", math.pi / 2),
     ("0.5 rad", "angle", 0.5),
     # power
-    ("1 hp", "power", HP),
-    ("1 hp", "power", 745.69987158227022),
+    ("1 hp", "power", HORSEPOWER),
     ("30 kW", "power", 30000.0),
     ("750 W", "power", 750.0),
     # density
     ("820 kg/m3", "density", 820.0),
     ("820 kg/m³", "density", 820.0),
     ("1 g/cm3", "density", 1000.0),
-    ("62.4 lb/ft3", "density", 62.4 * LB / FT**3),
+    ("62.4 lb/ft3", "density", 62.4 * POUND_MASS / FOOT**3),
     # kinematic viscosity
     ("1 cSt", "kinematic_viscosity", 1e-6),
     ("3 cSt", "kinematic_viscosity", 3e-6),
@@ -182,11 +170,11 @@ def test_unknown_unit_message_lists_the_accepted_units():
 @pytest.mark.parametrize(
     ("quantity", "si_value", "field_value", "suffix"),
     [
-        ("length", IN, 1.0, "in"),
-        ("velocity", FT, 1.0, "ft_s"),
-        ("acceleration", FT, 1.0, "ft_s2"),
-        ("force", LBF, 1.0, "lbf"),
-        ("torque", LBF * IN, 1.0, "lbf_in"),
+        ("length", INCH, 1.0, "in"),
+        ("velocity", FOOT, 1.0, "ft_s"),
+        ("acceleration", FOOT, 1.0, "ft_s2"),
+        ("force", POUND_FORCE, 1.0, "lbf"),
+        ("torque", POUND_FORCE * INCH, 1.0, "lbf_in"),
         ("angle", math.pi, 180.0, "deg"),
         ("stroke_rate", 2 * math.pi / 60, 1.0, "spm"),
     ],

@@ -22,7 +22,7 @@ from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage, dead_positions
 from pumpjack_cli.core.beam.linkage import motion
 
-INCH = 0.0254  # m, exact by definition (1959 international yard and pound agreement)
+from helpers import INCH
 
 # (designation, A, C, I, P, H, G, R1, TF) -- Guo, Lyons & Ghalambor 2007, Table 12.1, p. 12/167
 TABLE_12_1 = [
@@ -118,7 +118,7 @@ def test_stroke_close_to_nominal():
 
 def test_bundled_config_matches_table():
     """configs/c-114d-133-54.toml holds the table's inches, converted to metres
-    (1 in = 0.0254 m exactly; 1e-12 relative covers the float conversion)."""
+    (1e-12 relative covers the float conversion)."""
     unit = load_unit("c-114d-133-54")
     geo = unit.geometry
     _, a, c, i, p, h, g, r, tf = TABLE_12_1[0]

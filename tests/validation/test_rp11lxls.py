@@ -36,25 +36,24 @@ from pumpjack_cli.core.rods.predict import predict
 from pumpjack_cli.core.rods.pump import Pump, pump_pressures
 from pumpjack_cli.core.rods.string import RodString
 
-FT, INCH, LBF = 0.3048, 0.0254, 4.4482216152605  # NIST SP 811
-LB_PER_FT = 0.45359237 / 0.3048
-ELASTIC_CONSTANT = INCH / (LBF * FT)  # m/(N m) per in/(lb ft)
+from helpers import FOOT, INCH, LB_PER_FT, POUND_FORCE, RP11L_TABLE_4_1, polished_rod_position
+
+ELASTIC_CONSTANT = INCH / (POUND_FORCE * FOOT)  # m/(N m) per in/(lb ft)
 WATER = 999.0  # kg/m^3, specific gravity 1.0 (62.4 lb/ft^3)
-DEPTH, STROKE, SPM = 7000 * FT, 86 * INCH, 9.54
+DEPTH, STROKE, SPM = 7000 * FOOT, 86 * INCH, 9.54
 
 
 def _case():
     area = np.pi * (np.array([0.875, 0.75]) * INCH) ** 2 / 4
-    stiffness = 1.0 / (np.array([0.649e-6, 0.883e-6]) * ELASTIC_CONSTANT)  # E A [N]
-    rods = RodString(DEPTH * np.array([0.306, 0.694]), area, stiffness / area, np.array([2.224, 1.634]) * LB_PER_FT)
+    weight, elastic_constant = np.array([RP11L_TABLE_4_1[0.875], RP11L_TABLE_4_1[0.75]]).T
+    stiffness = 1.0 / (elastic_constant * 1e-6 * ELASTIC_CONSTANT)  # E A [N]
+    rods = RodString(DEPTH * np.array([0.306, 0.694]), area, stiffness / area, weight * LB_PER_FT)
     pd, pi = pump_pressures(DEPTH, WATER, submergence=0.0)
     pump = Pump(np.pi * (1.25 * INCH) ** 2 / 4, pd, pi)
     a, c, i, p, h_g, r = 72.0, 64.0, 64.0, 74.5, 116.0 - 41.0, 24.0  # C-114D-133-54, in
     scale = STROKE / (Linkage(a, c, r, p, i, h_g).stroke * INCH)
     linkage = Linkage(*(scale * INCH * np.array([a, c, r, p, i, h_g])))
-    theta = np.arange(512) * 2 * np.pi / 512
-    m = linkage.motion(theta)
-    position = linkage.front_arm * (m.beam_angle - linkage.dead_positions().beam_angle_bottom)
+    position = polished_rod_position(linkage, np.arange(512) * 2 * np.pi / 512)
     return rods, pump, position
 
 
@@ -78,6 +77,6 @@ def test_rp11l_dimensionless_groups_of_the_example():
 def test_rp11l_example_loads_and_plunger_stroke_within_its_accuracy(damping):
     rods, pump, position = _case()
     s = predict(rods, pump, position, 60.0 / SPM, damping=damping, fluid_density=WATER).summary
-    assert s.peak_polished_rod_load.value / LBF == pytest.approx(17558, rel=0.10)
-    assert s.minimum_polished_rod_load.value / LBF == pytest.approx(8460, rel=0.10)
+    assert s.peak_polished_rod_load.value / POUND_FORCE == pytest.approx(17558, rel=0.10)
+    assert s.minimum_polished_rod_load.value / POUND_FORCE == pytest.approx(8460, rel=0.10)
     assert s.net_plunger_stroke / INCH == pytest.approx(74.64, rel=0.10)

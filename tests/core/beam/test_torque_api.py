@@ -25,7 +25,8 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import TorqueError
 
-BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
+from helpers import BEAM_UNITS
+
 ZERO = MassModel(*[0.0] * 18)
 THETA = crank_grid(720)
 

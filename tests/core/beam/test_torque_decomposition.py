@@ -19,7 +19,8 @@ from pumpjack_cli.core.beam.torque import (api_net_torque, beam_group_inertia, c
                                            torque_components)
 from pumpjack_cli.core.sampling import crank_grid
 
-BEAM_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54")
+from helpers import BEAM_UNITS
+
 THETA = crank_grid(720)
 
 

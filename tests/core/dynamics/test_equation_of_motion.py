@@ -1,8 +1,8 @@
-"""The equation of motion (pumpjack_cli.core.dynamics): invariants, hand values and [SK8Rotation2013].
+"""The equation of motion (pumpjack_cli.core.dynamics): invariants and hand values on SK8-3,5-4000.
 
-Independent references used here:
-* [SK8Rotation2013] eqs. 25-26 and its printed numbers (motor 4AR180M4U3: 30 kW, 1500/1460 rpm;
-  u = 37.18 x 900/250; omega1 = pi 1460 / (30 u) = 1.1422 1/s), evaluated by hand;
+The numbers [SK8Rotation2013] prints (motor line, rated crank speed, constant inertia) are
+checked in tests/validation/test_sk8rotation2013.py. Independent references used here:
+* the drive reduction by hand;
 * the rational-mechanism kinetostatics of issue 3 (pumpjack_cli.core.beam.kinetostatics),
   a separate spatial d'Alembert solution: by virtual work its balancing torque equals
   the gravity torque dV/dtheta (weights only) and I epsilon + 1/2 I' omega^2 (inertia only);
@@ -20,7 +20,6 @@ import math
 import numpy as np
 import pytest
 
-from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import Card
 from pumpjack_cli.core.dynamics.coefficients import CardLoad, coefficients
 from pumpjack_cli.core.dynamics.drive import drive_inertia, motor_characteristic
@@ -31,22 +30,13 @@ from pumpjack_cli.core.beam.geometry import dead_positions
 from pumpjack_cli.core.beam.linkage import crank_pin, motion
 from pumpjack_cli.errors import DynamicsError
 
-RPM = math.pi / 30
+from helpers import RPM
 
-
-@pytest.fixture(scope="module")
-def sk8():
-    return load_unit("sk8-3.5-4000")
 
 
 @pytest.fixture(scope="module")
-def machine(sk8):
-    return sk8.machine()
-
-
-@pytest.fixture(scope="module")
-def solution(machine):
-    return steady_state(machine, crank_grid(720))
+def solution(sk8_machine):
+    return steady_state(sk8_machine, crank_grid(720))
 
 
 def _stroke(linkage) -> float:
@@ -54,29 +44,7 @@ def _stroke(linkage) -> float:
     return linkage.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom)
 
 
-# --- [SK8Rotation2013] by hand ----------------------------------------------------------------
-
-
-def test_motor_characteristic_is_seed_004_eqs_25_26():
-    # M_n = P / omega_n; a = M_n n_s / (n_s - n_n); b = -30 M_n / (pi (n_s - n_n)), n in rpm.
-    m_n = 30_000 / (1460 * math.pi / 30)
-    a = m_n * 1500 / (1500 - 1460)
-    b = -30 * m_n / (math.pi * (1500 - 1460))
-    m = motor_characteristic(30e3, 1500 * RPM, 1460 * RPM, 2.0, 2.2)
-    assert m.rated_torque == pytest.approx(m_n, rel=1e-14)
-    assert m.a == pytest.approx(a, rel=1e-13) and m.b == pytest.approx(b, rel=1e-13)
-    assert (round(m_n, 2), round(a, 1), round(b, 3)) == (196.22, 7358.2, -46.844)
-    # The line passes through (rated speed, rated torque) and (synchronous speed, 0).
-    assert m.torque(1460 * RPM) == pytest.approx(m_n, rel=1e-12)
-    assert m.torque(1500 * RPM) == pytest.approx(0.0, abs=1e-9)
-    assert (m.starting_torque, m.breakdown_torque) == pytest.approx((2.0 * m_n, 2.2 * m_n))
-
-
-def test_rated_crank_speed_is_seed_004s_1_1422(machine):
-    omega1 = math.pi * 1460 / (30 * 37.18 * 900 / 250)
-    assert omega1 == pytest.approx(1.1422, abs=1e-4)  # 1.14227...; [SK8Rotation2013] prints 1.1422
-    assert machine.rated_crank_speed == pytest.approx(omega1, rel=1e-12)
-    assert machine.drive_ratio == pytest.approx(37.18 * 3.6, rel=1e-14)
+# --- the drive by hand -----------------------------------------------------------------------
 
 
 def test_drive_reduction_counts_each_inertia_by_its_speed_ratio_squared():
@@ -87,46 +55,36 @@ def test_drive_reduction_counts_each_inertia_by_its_speed_ratio_squared():
     assert drive_inertia(0.232, 0.0, 0.0, 3.6, 37.18) == pytest.approx(4156.35, abs=0.01)
 
 
-def test_constant_part_of_the_reduced_inertia_is_the_seeds(machine):
-    # [SK8Rotation2013]: "the constant part of the reduced inertia 66 798.5 kg m^2"; the bundled
-    # unit's ESTIMATED sheave and gearbox inertias are chosen to reproduce it
-    # (docs/dynamics.md): drive + 2 (J_arm + m_arm r_arm^2) + m_cw r_cw^2.
-    crank = 2 * (257 + 1373 * 0.45**2) + 5200 * 0.83**2
-    drive = (0.232 + 0.1) * (37.18 * 3.6) ** 2 + (40.154 + 0.5) * 37.18**2
-    assert machine.constant_inertia == pytest.approx(crank + drive, rel=1e-12)
-    assert machine.constant_inertia == pytest.approx(66_798.5, abs=0.2)
-
-
 # --- the coefficients against the independent spatial kinetostatics -------------------
 
 
-def test_gravity_torque_equals_the_kinetostatic_net_torque_of_the_weights(sk8, machine):
+def test_gravity_torque_equals_the_kinetostatic_net_torque_of_the_weights(sk8_unit, sk8_machine):
     theta = crank_grid(72)
-    r = coefficients(machine, theta, np.zeros(theta.size, bool))
-    _, reactions = rational_mechanism(sk8.geometry.spatial(), machine.masses, theta, 1.0, 0.0,
+    r = coefficients(sk8_machine, theta, np.zeros(theta.size, bool))
+    _, reactions = rational_mechanism(sk8_unit.geometry.spatial(), sk8_machine.masses, theta, 1.0, 0.0,
                                       np.zeros(theta.size), weights=True, inertia=False)
     scale = np.max(np.abs(r.gravity_torque))
     np.testing.assert_allclose(r.gravity_torque, reactions.net_torque, rtol=0, atol=1e-12 * scale)
 
 
-def test_link_inertia_torque_equals_the_kinetostatic_net_torque_of_the_inertia_forces(sk8, machine):
+def test_link_inertia_torque_equals_the_kinetostatic_net_torque_of_the_inertia_forces(sk8_unit, sk8_machine):
     # Virtual work: with weights and rod load off, the torque that keeps the links moving
     # is d/dt(dT/d omega) - dT/d theta = I eps + 1/2 I' omega^2 over the links alone
     # (no drive, no rods: the kinetostatics has neither).
     theta = crank_grid(72)
     omega, eps = 1.0 + 0.1 * np.sin(theta), 0.3 * np.cos(theta)
-    links = dataclasses.replace(machine, drive_inertia=0.0, rod_load=CardLoad(Card(np.array([0.0, 1.0]), np.zeros(2))))
+    links = dataclasses.replace(sk8_machine, drive_inertia=0.0, rod_load=CardLoad(Card(np.array([0.0, 1.0]), np.zeros(2))))
     r = coefficients(links, theta, np.zeros(theta.size, bool))
-    _, reactions = rational_mechanism(sk8.geometry.spatial(), machine.masses, theta, omega, eps,
+    _, reactions = rational_mechanism(sk8_unit.geometry.spatial(), sk8_machine.masses, theta, omega, eps,
                                       np.zeros(theta.size), weights=False, inertia=True)
     mine = r.inertia * eps + 0.5 * r.inertia_rate * omega**2
     np.testing.assert_allclose(mine, reactions.net_torque, rtol=0, atol=1e-12 * np.max(np.abs(mine)))
 
 
-def test_reduced_inertia_is_twice_the_kinetic_energy_at_unit_speed(machine):
+def test_reduced_inertia_is_twice_the_kinetic_energy_at_unit_speed(sk8_machine):
     # Finite differences of the link positions (not the transfer functions): pitman
     # centres S = A + f (B - A), beam group turning with psi, rods moving A psi.
-    linkage, masses = machine.linkage, machine.masses
+    linkage, masses = sk8_machine.linkage, sk8_machine.masses
     theta = crank_grid(36)
     h = 1e-6
 
@@ -143,46 +101,46 @@ def test_reduced_inertia_is_twice_the_kinetic_energy_at_unit_speed(machine):
     beam = (masses.beam_inertia + masses.beam_mass * masses.beam_cg**2 + masses.horsehead_inertia
             + masses.horsehead_mass * masses.horsehead_cg**2 + masses.equalizer_inertia
             + masses.equalizer_mass * linkage.rear_arm**2)
-    rods = machine.rod_load.mass_downstroke
-    two_t = (machine.constant_inertia + 2 * (masses.pitman_mass * np.sum(v_s**2, axis=0) + masses.pitman_inertia * chi_rate**2)
+    rods = sk8_machine.rod_load.mass_downstroke
+    two_t = (sk8_machine.constant_inertia + 2 * (masses.pitman_mass * np.sum(v_s**2, axis=0) + masses.pitman_inertia * chi_rate**2)
              + beam * psi_rate**2 + rods * (linkage.front_arm * psi_rate) ** 2)
-    r = coefficients(machine, theta, np.zeros(theta.size, bool))
+    r = coefficients(sk8_machine, theta, np.zeros(theta.size, bool))
     np.testing.assert_allclose(r.inertia, two_t, rtol=1e-8)
-    i_p = coefficients(machine, theta + h, np.zeros(theta.size, bool)).inertia
-    i_m = coefficients(machine, theta - h, np.zeros(theta.size, bool)).inertia
+    i_p = coefficients(sk8_machine, theta + h, np.zeros(theta.size, bool)).inertia
+    i_m = coefficients(sk8_machine, theta - h, np.zeros(theta.size, bool)).inertia
     np.testing.assert_allclose(r.inertia_rate, (i_p - i_m) / (2 * h), rtol=0, atol=1e-5 * np.max(r.inertia))
 
 
-def test_fluid_mass_counts_only_on_the_upstroke(machine):
+def test_fluid_mass_counts_only_on_the_upstroke(sk8_machine):
     theta = np.radians([60.0])
-    up = coefficients(machine, theta, np.array([True]))
-    down = coefficients(machine, theta, np.array([False]))
-    fluid = machine.rod_load.fluid_mass
+    up = coefficients(sk8_machine, theta, np.array([True]))
+    down = coefficients(sk8_machine, theta, np.array([False]))
+    fluid = sk8_machine.rod_load.fluid_mass
     assert fluid > 0
     assert up.inertia[0] - down.inertia[0] == pytest.approx(fluid * up.torque_factor[0] ** 2, rel=1e-10)
-    assert up.rod_load[0] - down.rod_load[0] == pytest.approx(machine.rod_load.upstroke - machine.rod_load.downstroke)
+    assert up.rod_load[0] - down.rod_load[0] == pytest.approx(sk8_machine.rod_load.upstroke - sk8_machine.rod_load.downstroke)
 
 
 # --- the periodic solution ------------------------------------------------------------
 
 
-def test_periodic_solution_ends_at_its_start_speed(machine, solution):
-    dead = dead_positions(machine.linkage)
+def test_periodic_solution_ends_at_its_start_speed(sk8_machine, solution):
+    dead = dead_positions(sk8_machine.linkage)
     # Just after the bottom dead position the upstroke starts at omega_0; just before
     # it, the downstroke ends: both must agree to 1e-9 (plus the tiny slope over 1e-9 rad).
-    ends = steady_state(machine, np.array([dead.crank_angle_bottom, dead.crank_angle_bottom - 1e-9]))
+    ends = steady_state(sk8_machine, np.array([dead.crank_angle_bottom, dead.crank_angle_bottom - 1e-9]))
     assert ends.crank_speed[0] == pytest.approx(solution.summary.start_speed, rel=1e-12)
     assert ends.crank_speed[1] == pytest.approx(ends.crank_speed[0], rel=1e-9)
     assert solution.summary.convergence.periodicity_error <= 1e-9
 
 
-def test_energy_closure_motor_energy_equals_friction_plus_work_on_the_fluid(machine, solution):
+def test_energy_closure_motor_energy_equals_friction_plus_work_on_the_fluid(sk8_machine, solution):
     # Over one periodic cycle T and V return, so int M_drive dtheta = cycle integral of P ds.
     # P is P_up on the way up and P_down on the way down: S (P_up - P_down), and
     # P_up - P_down = P_fluid + 2 F_plunger + F_tubing + F_rods (rod weight cancels):
     # work on the fluid plus energy dissipated by friction.
-    w = machine.rod_load
-    stroke = _stroke(machine.linkage)
+    w = sk8_machine.rod_load
+    stroke = _stroke(sk8_machine.linkage)
     dissipated = stroke * (2 * w.plunger_friction + w.tubing_friction + w.rod_friction)
     lifted = stroke * w.fluid_load
     energy = solution.summary.energy_per_cycle
@@ -191,23 +149,23 @@ def test_energy_closure_motor_energy_equals_friction_plus_work_on_the_fluid(mach
     assert 0 < dissipated < lifted
 
 
-def test_angle_mean_speed_follows_from_the_energy_balance(machine):
+def test_angle_mean_speed_follows_from_the_energy_balance(sk8_machine):
     # (1/2pi) int (a u + b u^2 omega) dtheta = E / 2pi  =>  <omega>_theta = (E/2pi - a u) / (b u^2).
     theta = crank_grid(4096)
-    r = steady_state(machine, theta)
-    u, motor = machine.drive_ratio, machine.motor
+    r = steady_state(sk8_machine, theta)
+    u, motor = sk8_machine.drive_ratio, sk8_machine.motor
     expected = (r.summary.energy_per_cycle / (2 * math.pi) - motor.a * u) / (motor.b * u**2)
     assert np.mean(r.crank_speed) == pytest.approx(expected, rel=1e-7)
 
 
-def test_epsilon_is_the_time_derivative_of_omega_and_time_integrates_dtheta_over_omega(machine):
+def test_epsilon_is_the_time_derivative_of_omega_and_time_integrates_dtheta_over_omega(sk8_machine):
     theta = crank_grid(7200)
-    r = steady_state(machine, theta)
+    r = steady_state(sk8_machine, theta)
     h = theta[1] - theta[0]
     domega = (np.roll(r.crank_speed, -1) - np.roll(r.crank_speed, 1)) / (2 * h)
     # epsilon has a kink at the dead positions (the load changes there), where central
     # differences are only first order: leave those neighbourhoods out.
-    dead = dead_positions(machine.linkage)
+    dead = dead_positions(sk8_machine.linkage)
     far = np.ones(theta.size, bool)
     for angle in (dead.crank_angle_bottom, dead.crank_angle_top):
         far &= np.abs((theta - angle + math.pi) % (2 * math.pi) - math.pi) > 3 * h
@@ -218,12 +176,12 @@ def test_epsilon_is_the_time_derivative_of_omega_and_time_integrates_dtheta_over
     assert r.time[0] == 0.0 and np.all(np.diff(r.time) > 0)
 
 
-def test_results_converge_as_the_tolerance_tightens(machine):
+def test_results_converge_as_the_tolerance_tightens(sk8_machine):
     theta = crank_grid(36)
-    reference = steady_state(machine, theta, rtol=1e-12)
+    reference = steady_state(sk8_machine, theta, rtol=1e-12)
     errors = []
     for rtol in (1e-5, 1e-7, 1e-9):
-        r = steady_state(machine, theta, rtol=rtol)
+        r = steady_state(sk8_machine, theta, rtol=rtol)
         error = np.max(np.abs(r.crank_speed - reference.crank_speed)) / np.max(reference.crank_speed)
         errors.append(error)
         assert error <= 100 * rtol
@@ -231,100 +189,100 @@ def test_results_converge_as_the_tolerance_tightens(machine):
     assert errors[0] > errors[1] > errors[2]
 
 
-def test_huge_drive_inertia_makes_the_rotation_uniform(machine):
+def test_huge_drive_inertia_makes_the_rotation_uniform(sk8_machine):
     # With I -> infinity the crank turns at its mean speed and the polished rod moves as
     # with uniform rotation at that speed; the fluctuation falls like 1 / I.
     fluctuations = []
     for inertia in (1e7, 1e8, 1e9):
-        r = steady_state(dataclasses.replace(machine, drive_inertia=inertia), crank_grid(90))
+        r = steady_state(dataclasses.replace(sk8_machine, drive_inertia=inertia), crank_grid(90))
         fluctuations.append(r.summary.speed_fluctuation)
-        uniform = machine.linkage.front_arm * motion(machine.linkage, r.crank_angle).beam_rate * r.summary.mean_speed
+        uniform = sk8_machine.linkage.front_arm * motion(sk8_machine.linkage, r.crank_angle).beam_rate * r.summary.mean_speed
         assert np.max(np.abs(r.rod.velocity - uniform)) <= 2 * r.summary.speed_fluctuation * np.max(np.abs(uniform))
     assert fluctuations[2] < 2e-4
     assert fluctuations[0] / fluctuations[1] == pytest.approx(10, rel=0.1)
     assert fluctuations[1] / fluctuations[2] == pytest.approx(10, rel=0.1)
 
 
-def test_uniform_columns_are_the_kinematics_at_the_rated_speed(machine, solution):
-    m = motion(machine.linkage, solution.crank_angle)
+def test_uniform_columns_are_the_kinematics_at_the_rated_speed(sk8_machine, solution):
+    m = motion(sk8_machine.linkage, solution.crank_angle)
     np.testing.assert_allclose(solution.rod_uniform.velocity,
-                               machine.linkage.front_arm * m.beam_rate * machine.rated_crank_speed, rtol=1e-14)
+                               sk8_machine.linkage.front_arm * m.beam_rate * sk8_machine.rated_crank_speed, rtol=1e-14)
 
 
-def test_motor_columns_and_inertia_torque_are_consistent(machine, solution):
-    u = machine.drive_ratio
+def test_motor_columns_and_inertia_torque_are_consistent(sk8_machine, solution):
+    u = sk8_machine.drive_ratio
     np.testing.assert_allclose(solution.motor_speed, u * solution.crank_speed, rtol=1e-15)
     np.testing.assert_allclose(solution.power, solution.motor_torque * solution.motor_speed, rtol=1e-15)
     # Crank-shaft balance at every angle: drive torque = load + gravity + inertia torque.
     balance = solution.motor_torque * u - solution.rod_load_torque - solution.gravity_torque - solution.inertia_torque
     assert np.max(np.abs(balance)) <= 1e-9 * np.max(np.abs(solution.rod_load_torque))
-    np.testing.assert_allclose(solution.constant_inertia_torque, machine.constant_inertia * solution.crank_acceleration)
+    np.testing.assert_allclose(solution.constant_inertia_torque, sk8_machine.constant_inertia * solution.crank_acceleration)
 
 
 # --- dynamometer cards ----------------------------------------------------------------
 
 
-def _card(loads: np.ndarray, machine) -> Card:
+def _card(loads: np.ndarray, sk8_machine) -> Card:
     theta = crank_grid(loads.size)
     return Card(crank_angle=theta, load=loads)
 
 
-def test_card_energy_closure(machine):
+def test_card_energy_closure(sk8_machine):
     # A smooth card: its cycle work int P TF dtheta evaluated independently by a dense sum.
     theta = crank_grid(72)
     card = Card(theta, 45_000 + 8_000 * np.sin(theta) + 2_000 * np.cos(2 * theta))
-    driven = dataclasses.replace(machine, rod_load=CardLoad(card))
+    driven = dataclasses.replace(sk8_machine, rod_load=CardLoad(card))
     r = steady_state(driven, crank_grid(36))
     dense = crank_grid(400_000)
     work = np.sum(np.interp(dense, theta, card.load, period=2 * math.pi)
-                  * machine.linkage.front_arm * motion(machine.linkage, dense).beam_rate) * (dense[1] - dense[0])
+                  * sk8_machine.linkage.front_arm * motion(sk8_machine.linkage, dense).beam_rate) * (dense[1] - dense[0])
     # The card's kinks (linear interpolation) cost the integrator many steps, each within
     # rtol: the global error of the energy is then about 1e-8 here, not 1e-10.
     assert r.summary.energy_per_cycle == pytest.approx(work, rel=1e-6)
     assert r.summary.energy_per_cycle == pytest.approx(r.summary.rod_work_per_cycle, rel=1e-6)
 
 
-def test_card_that_returns_energy_does_not_fit(machine):
+def test_card_that_returns_energy_does_not_fit(sk8_machine):
     # Loads of the downstroke on the upstroke and vice versa: the card would drive the motor.
     theta = crank_grid(180)
-    upstroke = motion(machine.linkage, theta).beam_rate > 0
+    upstroke = motion(sk8_machine.linkage, theta).beam_rate > 0
     card = Card(theta, np.where(upstroke, 37_000.0, 51_000.0))
     with pytest.raises(DynamicsError, match="does not fit this unit"):
-        steady_state(dataclasses.replace(machine, rod_load=CardLoad(card)))
+        steady_state(dataclasses.replace(sk8_machine, rod_load=CardLoad(card)))
 
 
 # --- bad input --------------------------------------------------------------------------
 
 
-def _massless(machine):
-    zero = {f.name: 0.0 for f in dataclasses.fields(machine.masses)}
-    return dataclasses.replace(machine, masses=dataclasses.replace(machine.masses, **zero))
+def _massless(sk8_machine):
+    zero = {f.name: 0.0 for f in dataclasses.fields(sk8_machine.masses)}
+    return dataclasses.replace(sk8_machine, masses=dataclasses.replace(sk8_machine.masses, **zero))
 
 
 @pytest.mark.parametrize("inertia", [0.0, -1e5])
-def test_zero_or_negative_inertia_is_refused(machine, inertia):
+def test_zero_or_negative_inertia_is_refused(sk8_machine, inertia):
     with pytest.raises(DynamicsError, match="reduced moment of inertia"):
-        steady_state(dataclasses.replace(_massless(machine), drive_inertia=inertia))
+        steady_state(dataclasses.replace(_massless(sk8_machine), drive_inertia=inertia))
 
 
-def test_motor_too_weak_for_the_load_names_the_torques(machine):
+def test_motor_too_weak_for_the_load_names_the_torques(sk8_machine):
     weak = motor_characteristic(5e3, 1500 * RPM, 1460 * RPM, 2.0, 2.2)
     with pytest.raises(DynamicsError, match=r"motor is too weak: the load needs [0-9.]+ N·m .* pull-out torque 71\.9 N·m"):
-        steady_state(dataclasses.replace(machine, motor=weak))
+        steady_state(dataclasses.replace(sk8_machine, motor=weak))
 
 
-def test_motor_that_cannot_turn_the_unit_stalls_with_a_message(machine):
+def test_motor_that_cannot_turn_the_unit_stalls_with_a_message(sk8_machine):
     tiny = motor_characteristic(300.0, 1500 * RPM, 1460 * RPM, 2.0, 2.2)
     with pytest.raises(DynamicsError, match="stalls"):
-        steady_state(dataclasses.replace(machine, motor=tiny))
+        steady_state(dataclasses.replace(sk8_machine, motor=tiny))
 
 
-def test_non_converging_shooting_reports_what_it_tried(machine):
+def test_non_converging_shooting_reports_what_it_tried(sk8_machine):
     with pytest.raises(DynamicsError, match=r"did not converge in 1 secant iterations.*last start speeds 1\.16"):
-        steady_state(machine, max_iterations=1)
+        steady_state(sk8_machine, max_iterations=1)
 
 
 @pytest.mark.parametrize("rtol", [0.0, 1e-2])
-def test_tolerance_out_of_range(machine, rtol):
+def test_tolerance_out_of_range(sk8_machine, rtol):
     with pytest.raises(DynamicsError, match="rtol"):
-        steady_state(machine, rtol=rtol)
+        steady_state(sk8_machine, rtol=rtol)
