@@ -11,8 +11,8 @@ from the modal velocities along the whole string.
 
 The machine's energy closure (motor work = polished-rod work) is in test_predict_coupled.py.
 
-Rod data: API rods with couplings, RP 11L Table 4.1 weights 1 in 2.904, 7/8 in 2.224,
-3/4 in 1.634 lb/ft; E = 30.5e6 psi. The SK8-3,5-4000 unit from configs/ (seed 004).
+The SK8 well's rods and pump are the shared fixtures of tests/conftest.py (API rods with
+couplings, RP 11L Table 4.1 weights, E = 30.5e6 psi).
 """
 
 from __future__ import annotations
@@ -22,41 +22,22 @@ import dataclasses
 import numpy as np
 import pytest
 
-from pumpjack_cli.core.beam.geometry import Linkage
 from pumpjack_cli.core.rods.predict import predict
-from pumpjack_cli.core.rods.pump import Pump, pump_pressures, tubing_stiffness
-from pumpjack_cli.core.rods.string import RodString
+from pumpjack_cli.core.rods.pump import tubing_stiffness
 
-LB_PER_FT = 0.45359237 / 0.3048
-E_STEEL = 30.5e6 * 6894.757293168
-DEPTH, DENSITY = 1530.0, 820.0
-PERIOD = 2 * np.pi / 1.1422
+from helpers import SK8_CRANK_SPEED, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, sk8_rod_position
 
+PERIOD = 2 * np.pi / SK8_CRANK_SPEED
 
-def _rods() -> RodString:
-    d = np.array([25.0, 22.0, 19.0]) * 1e-3
-    return RodString(DEPTH * np.array([0.23, 0.26, 0.51]), np.pi * d**2 / 4, np.full(3, E_STEEL),
-                     np.array([2.904, 2.224, 1.634]) * LB_PER_FT)
-
-
-def _pump(**changes) -> Pump:
-    pd, pi = pump_pressures(DEPTH, DENSITY, submergence=100.0)
-    return dataclasses.replace(Pump(np.pi * 0.038**2 / 4, pd, pi), **changes)
-
-
-def _position(samples: int) -> np.ndarray:
-    linkage = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    m = linkage.motion(np.arange(samples) * 2 * np.pi / samples)
-    return linkage.front_arm * (m.beam_angle - linkage.dead_positions().beam_angle_bottom)
 
 
 @pytest.mark.parametrize("anchored", [True, False])
-def test_surface_work_is_fluid_load_times_net_stroke_plus_damping(anchored):
+def test_surface_work_is_fluid_load_times_net_stroke_plus_damping(sk8_rods, sk8_pump, anchored):
     # Full pump: work on the fluid = F_o x net plunger stroke (liquid discharged / A_p).
     # Measured closure 2.5e-6 (anchored) and 3e-6 (unanchored) at 1024 samples; asserted 1e-4.
-    stiffness = np.inf if anchored else tubing_stiffness("2-7/8", DEPTH)
-    pump = _pump(tubing_stiffness=stiffness)
-    s = predict(_rods(), pump, _position(1024), PERIOD, damping=0.1, fluid_density=DENSITY).summary
+    stiffness = np.inf if anchored else tubing_stiffness("2-7/8", SK8_PUMP_DEPTH)
+    pump = dataclasses.replace(sk8_pump, tubing_stiffness=stiffness)
+    s = predict(sk8_rods, pump, sk8_rod_position(1024), PERIOD, damping=0.1, fluid_density=SK8_FLUID_DENSITY).summary
     fluid_work = pump.fluid_load * s.net_plunger_stroke
     assert s.surface_card_work == pytest.approx(fluid_work + s.damping_dissipation, rel=1e-4)
     assert s.pump_card_work == pytest.approx(fluid_work, rel=1e-4)
@@ -67,16 +48,17 @@ def test_surface_work_is_fluid_load_times_net_stroke_plus_damping(anchored):
 
 
 @pytest.mark.parametrize("samples, changes", [
-    (1024, dict(fillage=0.5, tubing_stiffness=tubing_stiffness("2-7/8", DEPTH))),
+    (1024, dict(fillage=0.5, tubing_stiffness=tubing_stiffness("2-7/8", SK8_PUMP_DEPTH))),
     (1024, dict(fillage=0.6, gas_exponent=1.2)),
     # The plunger hits the liquid within a time step: first order there, 1.2e-4 at 1024
     # samples and 6.6e-5 at 2048 (measured), so this one runs at 2048.
     (2048, dict(fillage=0.6)),
 ])
-def test_surface_work_is_pump_card_work_plus_damping(samples, changes):
+def test_surface_work_is_pump_card_work_plus_damping(sk8_rods, sk8_pump, samples, changes):
     # Fluid pound, gas, unanchored tubing: the pump card's area (the p-V loop of the chamber)
     # replaces F_o S_p. With gas it exceeds F_o S_p by the gas compression work.
-    s = predict(_rods(), _pump(**changes), _position(samples), PERIOD, damping=0.1, fluid_density=DENSITY).summary
+    s = predict(sk8_rods, dataclasses.replace(sk8_pump, **changes), sk8_rod_position(samples), PERIOD, damping=0.1,
+                fluid_density=SK8_FLUID_DENSITY).summary
     assert s.surface_card_work == pytest.approx(s.pump_card_work + s.damping_dissipation, rel=1e-4)
     if "gas_exponent" in changes:
         assert s.pump_card_work > 1.1 * s.fluid_load * s.net_plunger_stroke

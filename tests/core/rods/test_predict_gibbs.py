@@ -16,8 +16,8 @@ marched in time) must agree with it:
 * round trip: the downhole card computed from the predicted surface card by the chain
   (what a diagnostic program does, [Gibbs1963]) against the predicted pump card.
 
-Rod data: API rods with couplings, RP 11L Table 4.1 weights 1 in 2.904, 7/8 in 2.224,
-3/4 in 1.634 lb/ft; E = 30.5e6 psi.
+The SK8 well's rods and pump are the shared fixtures of tests/conftest.py (API rods with
+couplings, RP 11L Table 4.1 weights, E = 30.5e6 psi).
 """
 
 from __future__ import annotations
@@ -27,18 +27,11 @@ import pytest
 
 from pumpjack_cli.core.rods.predict import predict, well_model
 from pumpjack_cli.core.rods.predict_modes import damping_coefficient
-from pumpjack_cli.core.rods.pump import Pump, pump_pressures
+from pumpjack_cli.core.rods.pump import Pump
 from pumpjack_cli.core.rods.string import RodString
 
-LB_PER_FT = 0.45359237 / 0.3048  # kg/m per lb/ft (NIST SP 811)
-E_STEEL = 30.5e6 * 6894.757293168  # Pa
+from helpers import SK8_CRANK_SPEED, SK8_FLUID_DENSITY, sk8_rod_position
 
-
-def _rods() -> RodString:
-    """1530 m, 25/22/19 mm tapers 23/26/51 % from the top (the SK8 well of seed 004)."""
-    d = np.array([25.0, 22.0, 19.0]) * 1e-3
-    return RodString(1530.0 * np.array([0.23, 0.26, 0.51]), np.pi * d**2 / 4, np.full(3, E_STEEL),
-                     np.array([2.904, 2.224, 1.634]) * LB_PER_FT)
 
 
 def _chain(rods: RodString, omega: np.ndarray, c: float):
@@ -55,27 +48,18 @@ def _chain(rods: RodString, omega: np.ndarray, c: float):
     return a_, b_, c_, d_
 
 
-def _sk8_motion(samples: int):
-    from pumpjack_cli.core.beam.geometry import Linkage
-
-    linkage = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
-    theta = np.arange(samples) * 2 * np.pi / samples
-    m = linkage.motion(theta)
-    return linkage.front_arm * (m.beam_angle - linkage.dead_positions().beam_angle_bottom)
-
-
-def test_open_pump_load_is_gibbs_harmonic_solution():
+def test_open_pump_load_is_gibbs_harmonic_solution(sk8_rods):
     # No fluid load (p_d = p_i): the pump end is free, F_L = 0. Polished rod moving with
     # two harmonics; the dynamic polished-rod load must be F_0 = (C/D) S per harmonic
     # (S up, U_0 = -S). Tolerance 1e-4 of the load range: modal truncation at twice
     # the Nyquist frequency and the linear interpolation of the top acceleration, both
     # O((omega h)^2); measured 1.6e-5.
-    rods, samples, period = _rods(), 512, 5.5
+    rods, samples, period = sk8_rods, 512, 5.5
     t = np.arange(samples) * period / samples
     w = 2 * np.pi / period
     s = 1.2 * (1 - np.cos(w * t)) + 0.2 * np.sin(2 * w * t)
     pump = Pump(1e-3, 1e6, 1e6)
-    result = predict(rods, pump, s, period, damping=0.15, fluid_density=820.0)
+    result = predict(rods, pump, s, period, damping=0.15, fluid_density=SK8_FLUID_DENSITY)
     c = damping_coefficient(rods, 0.15)
     spectrum = np.fft.rfft(s)
     _, _, c_, d_ = _chain(rods, w * np.arange(spectrum.size), c)
@@ -85,14 +69,14 @@ def test_open_pump_load_is_gibbs_harmonic_solution():
     assert np.all(result.pump_load == 0.0)
 
 
-def test_bottom_compliance_of_the_modes_is_gibbs_b_over_d():
+def test_bottom_compliance_of_the_modes_is_gibbs_b_over_d(sk8_rods):
     # Dynamic compliance of the rod end to a harmonic pump force, top held: modal sum
     # sum b_k^2 / (omega_k^2 - w^2 + i c w) + C_rem against the chain's B / D. The
     # residual is quasi-static, so the error grows as (w / omega_cut)^2: 1e-10 at 0.3 rad/s,
     # 1.1e-4 at 60 rad/s (measured).
-    rods = _rods()
+    rods = sk8_rods
     model = well_model(rods, Pump(1e-3, 2e7, 1e6), damping=0.1, step=5.5 / 1024, samples=8,
-                       fluid_density=820.0)
+                       fluid_density=SK8_FLUID_DENSITY)
     m = model.modes
     w = np.array([0.3, 2.0, 7.0, 20.0, 60.0])
     modal = np.sum(m.bottom[:, None]**2 / (m.frequency[:, None]**2 - w**2 + 1j * m.damping * w), axis=0)
@@ -102,7 +86,7 @@ def test_bottom_compliance_of_the_modes_is_gibbs_b_over_d():
     assert m.static_compliance == pytest.approx(float(np.sum(rods.length / (rods.youngs_modulus * rods.area))))
 
 
-def test_round_trip_gibbs_diagnostic_recovers_the_pump_card():
+def test_round_trip_gibbs_diagnostic_recovers_the_pump_card(sk8_rods, sk8_pump):
     # Predict the SK8 well's cards (full pump), then compute the downhole card from the
     # surface card alone with the chain: U_L = A U_0 + B F_0, F_L = C U_0 + D F_0.
     # The diagnostic reads the sampled surface card as a trigonometric polynomial, the
@@ -110,12 +94,10 @@ def test_round_trip_gibbs_diagnostic_recovers_the_pump_card():
     # Nyquist frequency: they differ only near the sharp load transfers. Measured: pump
     # load RMS 2.8e-4 F_o (largest 2.2e-3 F_o), plunger 9 um, card work 4e-6; asserted
     # with a margin of about 3.
-    rods, samples = _rods(), 1024
-    period = 2 * np.pi / 1.1422
-    pd, pi = pump_pressures(1530.0, 820.0, submergence=100.0)
-    pump = Pump(np.pi * 0.038**2 / 4, pd, pi)
-    s = _sk8_motion(samples)
-    result = predict(rods, pump, s, period, damping=0.1, fluid_density=820.0)
+    rods, pump, samples = sk8_rods, sk8_pump, 1024
+    period = 2 * np.pi / SK8_CRANK_SPEED
+    s = sk8_rod_position(samples)
+    result = predict(rods, pump, s, period, damping=0.1, fluid_density=SK8_FLUID_DENSITY)
     c = damping_coefficient(rods, 0.1)
     w = 2 * np.pi / period * np.arange(samples // 2 + 1)
     a_, b_, c_, d_ = _chain(rods, w, c)
