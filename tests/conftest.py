@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from helpers import LB_PER_FT, PSI, REPO_ROOT, RP11L_TABLE_4_1, SK8, SK8_CARD, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH
+from helpers import (LB_PER_FT, PSI, REPO_ROOT, RP11L_TABLE_4_1, SK8, SK8_API_YAML, SK8_CARD, SK8_FLUID_DENSITY,
+                     SK8_PUMP_DEPTH, SK8_TOML, sample_card)
 
 
 @pytest.fixture(scope="session")
@@ -29,9 +30,9 @@ def repo_root() -> Path:
 
 
 @pytest.fixture(scope="session")
-def sk8_toml(repo_root) -> Path:
+def sk8_toml() -> Path:
     """The bundled SK8-3,5-4000 unit (GOST names, every datum of [SK8Rotation2013])."""
-    return repo_root / "configs" / "sk8-3.5-4000.toml"
+    return SK8_TOML
 
 
 @pytest.fixture(scope="session")
@@ -41,9 +42,9 @@ def sk8_card() -> Path:
 
 
 @pytest.fixture(scope="session")
-def sk8_api_yaml(repo_root) -> Path:
+def sk8_api_yaml() -> Path:
     """The same SK8-3,5-4000 geometry written with API 11E letters, without [drive]."""
-    return repo_root / "samples" / "sk8-3.5-4000-api.yaml"
+    return SK8_API_YAML
 
 
 @pytest.fixture(scope="session")
@@ -81,6 +82,17 @@ def sk8_pump():
 
     discharge, intake = pump_pressures(SK8_PUMP_DEPTH, SK8_FLUID_DENSITY, submergence=100.0)
     return Pump(np.pi * 0.038**2 / 4, discharge, intake)
+
+
+@pytest.fixture(scope="module")
+def run_card_json(run_json):
+    """``run_json(command, unit, "--card", CARD, ...)``, CARD the unit's sample card unless
+    ``card_file`` is given."""
+
+    def run(command: str, unit, *extra, card_file=None) -> dict:
+        return run_json(command, unit, "--card", card_file or sample_card(unit), *extra)
+
+    return run
 
 
 @pytest.fixture(scope="module")

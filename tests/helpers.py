@@ -38,6 +38,9 @@ CARD_UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48")
 
 #: The bundled SK8-3,5-4000 of [SK8Rotation2013].
 SK8 = "sk8-3.5-4000"
+#: Its unit file (GOST names, every datum of the paper) and the same geometry in API letters, without [drive].
+SK8_TOML = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
+SK8_API_YAML = REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"
 #: Its linkage as the paper prints it: k1, k, r, l, l1, l2 = A, C, R, P, I, H - G [m], clockwise.
 SK8_LINKAGE = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
 #: Its crank speed at the motor's rated 1460 rpm as the paper prints it, pi 1460 / (30 37.18 900/250) [1/s].
@@ -55,6 +58,11 @@ def sample_card(unit: str) -> Path:
 
 
 SK8_CARD = sample_card(SK8)
+
+
+def series(doc: dict, name: str) -> np.ndarray:
+    """A column of a command's JSON document as an array."""
+    return np.array(doc["series"][name])
 
 
 def polished_rod_position(linkage, theta: np.ndarray) -> np.ndarray:

@@ -15,12 +15,8 @@ from pumpjack_cli.core.dynamics.periodic import steady_state
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.readers.cards import read_card
 
-SK8 = "sk8-3.5-4000"
+from helpers import FOOT, HORSEPOWER, SK8
 
-
-@pytest.fixture
-def sk8_card(repo_root):
-    return repo_root / "samples" / "sk8-3.5-4000-card.csv"
 
 
 @pytest.fixture
@@ -63,9 +59,8 @@ def test_csv_in_field_units(run_cli):
     rows = list(csv.DictReader(io.StringIO(out)))
     assert len(rows) == 12
     r = steady_state(load_unit(SK8).machine(), crank_grid(12))
-    hp, ft = 745.69987158227022, 0.3048
-    assert float(rows[3]["motor_power_hp"]) == pytest.approx(r.power[3] / hp, rel=1e-12)
-    assert float(rows[3]["velocity_ft_s"]) == pytest.approx(r.rod.velocity[3] / ft, rel=1e-12)
+    assert float(rows[3]["motor_power_hp"]) == pytest.approx(r.power[3] / HORSEPOWER, rel=1e-12)
+    assert float(rows[3]["velocity_ft_s"]) == pytest.approx(r.rod.velocity[3] / FOOT, rel=1e-12)
     assert float(rows[3]["crank_angle_deg"]) == 90.0
 
 

@@ -9,54 +9,29 @@ kinetostatics against the equation of motion's gearbox torque ([SK8Rotation2013]
 
 from __future__ import annotations
 
-import io
-import json
 import math
-from contextlib import redirect_stderr, redirect_stdout
 
 import numpy as np
 import pytest
 
 from pumpjack_cli.core.constants import STANDARD_GRAVITY
 
-INCH = 0.0254
+from helpers import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, PSI, SK8, series
 
-
-@pytest.fixture(scope="module")
-def run():
-    """A command run in-process once per argument list; returns the JSON document."""
-    from pumpjack_cli.cli import main
-
-    cache = {}
-
-    def call(*argv):
-        if argv not in cache:
-            out, err = io.StringIO(), io.StringIO()
-            with redirect_stdout(out), redirect_stderr(err):
-                code = main([str(a) for a in argv] + ["-f", "json"])
-            assert code == 0, err.getvalue()
-            cache[argv] = json.loads(out.getvalue())
-        return cache[argv]
-
-    return call
-
-
-def series(doc, name):
-    return np.array(doc["series"][name])
 
 
 C114 = ("predict", "c-114d-133-54", "--spm", "10", "--damping", "0.1")
 SK8_COUPLED = ("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--damping", "0.1", "--samples", "256")
 
 
-def test_predicted_surface_card_gives_back_the_pump_card(run, tmp_path):
+def test_predicted_surface_card_gives_back_the_pump_card(run_json, tmp_path):
     """Issue 13 round trip: the predicted surface card through `pumpjack downhole` with the same
     rods and damping: pump loads within 1 % of the load range, gross stroke within 1 mm."""
-    predicted = run(*C114)
+    predicted = run_json(*C114)
     card = tmp_path / "predicted.csv"
     rows = zip(series(predicted, "time_s"), series(predicted, "position_m"), series(predicted, "rod_load_n"))
     card.write_text("time_s,position_m,rod_load_n\n" + "".join(f"{t},{s},{w}\n" for t, s, w in rows))
-    back = run("downhole", "c-114d-133-54", "--card", card, "--damping", "0.1", "--samples", "360")
+    back = run_json("downhole", "c-114d-133-54", "--card", card, "--damping", "0.1", "--samples", "360")
     angle, other = series(predicted, "crank_angle_deg"), series(back, "crank_angle_deg")
     recovered = np.interp(angle, other, series(back, "pump_load_n"), period=360.0)
     load_range = np.ptp(series(predicted, "rod_load_n"))
@@ -64,10 +39,10 @@ def test_predicted_surface_card_gives_back_the_pump_card(run, tmp_path):
     assert abs(back["summary"]["gross_pump_stroke_m"] - predicted["summary"]["gross_pump_stroke_m"]) < 1e-3
 
 
-def test_energy_per_cycle_closes(run):
+def test_energy_per_cycle_closes(run_json):
     """Polished-rod work = work on the fluid + damping dissipation (1e-4), and the printed card's
     loop area (trapezoids over the printed samples) is the polished-rod work."""
-    doc = run(*C114)
+    doc = run_json(*C114)
     s = doc["summary"]
     assert abs(s["rod_energy_residual"]) < 1e-4
     assert s["surface_card_work_j"] == pytest.approx(s["pump_card_work_j"] + s["damping_dissipation_j"], rel=1e-4)
@@ -77,12 +52,12 @@ def test_energy_per_cycle_closes(run):
     assert s["polished_rod_power_w"] == pytest.approx(s["surface_card_work_j"] * 10.0 / 60.0, rel=1e-9)
 
 
-def test_fluid_load_and_pump_work_of_a_full_pump_by_hand(run):
+def test_fluid_load_and_pump_work_of_a_full_pump_by_hand(run_json):
     """F_o = rho g (L - h) A_p (C-114D: 4000 ft, 300 ft of fluid above the pump, 900 kg/m^3,
     1.5 in plunger) and the pump card's work is F_o times the net stroke."""
-    s = run(*C114)["summary"]
+    s = run_json(*C114)["summary"]
     area = math.pi * (1.5 * INCH) ** 2 / 4.0
-    fluid_load = 900.0 * STANDARD_GRAVITY * (4000.0 - 300.0) * 0.3048 * area
+    fluid_load = 900.0 * STANDARD_GRAVITY * (4000.0 - 300.0) * FOOT * area
     assert s["fluid_load_n"] == pytest.approx(fluid_load, rel=1e-12)
     assert s["pump_card_work_j"] == pytest.approx(fluid_load * s["net_pump_stroke_m"], rel=1e-3)
     # API RP 11L's design counterbalance effect from the same W_rf and F_o
@@ -90,67 +65,66 @@ def test_fluid_load_and_pump_work_of_a_full_pump_by_hand(run):
                                                                rel=1e-12)
 
 
-def test_options_override_the_well(run):
+def test_options_override_the_well(run_json):
     """A lower fluid level raises the fluid load by rho g dh A_p; an empty barrel carries none."""
-    base = run(*C114)["summary"]
-    deeper = run(*C114, "--submergence", "100 ft")["summary"]
+    base = run_json(*C114)["summary"]
+    deeper = run_json(*C114, "--submergence", "100 ft")["summary"]
     area = math.pi * (1.5 * INCH) ** 2 / 4.0
     assert deeper["fluid_load_n"] - base["fluid_load_n"] == pytest.approx(
-        900.0 * STANDARD_GRAVITY * 200.0 * 0.3048 * area, rel=1e-9)
-    empty = run(*C114, "--fillage", "0 %")["summary"]
+        900.0 * STANDARD_GRAVITY * 200.0 * FOOT * area, rel=1e-9)
+    empty = run_json(*C114, "--fillage", "0 %")["summary"]
     assert abs(empty["pump_card_work_j"]) < 1e-6 * base["pump_card_work_j"]
     assert empty["net_pump_stroke_m"] == pytest.approx(0.0, abs=1e-9)
 
 
-def test_very_slow_full_pump_is_the_static_card(run):
+def test_very_slow_full_pump_is_the_static_card(run_json):
     """At 0.1 strokes/min the dynamics vanish: PPRL = W_rf + F_o, MPRL = W_rf (0.5 %; what is
     left is the force wave Z dv = m a dv the plunger's start sends up the rods, proportional to
     the speed), and the plunger loses the static stretch of the stroke (1 mm)."""
-    s = run("predict", "c-114d-133-54", "--spm", "0.1", "--damping", "0.1")["summary"]
+    s = run_json("predict", "c-114d-133-54", "--spm", "0.1", "--damping", "0.1")["summary"]
     assert s["max_rod_load_n"] == pytest.approx(s["buoyant_rod_weight_n"] + s["fluid_load_n"], rel=0.005)
     assert s["min_rod_load_n"] == pytest.approx(s["buoyant_rod_weight_n"], rel=0.005)
     assert s["gross_pump_stroke_m"] == pytest.approx(s["stroke_m"] - s["static_stretch_m"], abs=1e-3)
 
 
-def test_coupled_gearbox_torque_is_the_kinetostatic_net_torque(run):
+def test_coupled_gearbox_torque_is_the_kinetostatic_net_torque(run_json):
     """Two models of the same crank: the equation of motion's net gearbox torque M_drive - I_drive eps
     (`dynamics --well-model wave`) and the spatial kinetostatics' net torque under the predicted load
     with the coupled omega, eps (`predict --crank-motion dynamic`)."""
-    gearbox = series(run("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0.1", "--samples",
+    gearbox = series(run_json("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0.1", "--samples",
                          "256"), "net_torque_n_m")
-    net = series(run(*SK8_COUPLED), "net_torque_n_m")
+    net = series(run_json(*SK8_COUPLED), "net_torque_n_m")
     assert np.max(np.abs(gearbox - net)) < 1e-5 * np.max(np.abs(gearbox))
 
 
-def test_coupled_energy_closure_and_comparisons(run):
-    s = run(*SK8_COUPLED)["summary"]
+def test_coupled_energy_closure_and_comparisons(run_json):
+    s = run_json(*SK8_COUPLED)["summary"]
     assert abs(s["machine_energy_residual"]) < 1e-4
     assert abs(s["rod_energy_residual"]) < 1e-4
     assert s["energy_per_cycle_j"] == pytest.approx(s["rod_work_per_cycle_j"], rel=1e-4)
     speed = s["mean_crank_speed_rad_s"]
     assert s["speed_fluctuation_percent"] == pytest.approx(
         100.0 * (s["max_crank_speed_rad_s"] - s["min_crank_speed_rad_s"]) / speed, rel=1e-9)
-    rigid = run("dynamics", "sk8-3.5-4000", "--steps", "3600")["summary"]
+    rigid = run_json("dynamics", "sk8-3.5-4000", "--steps", "3600")["summary"]
     assert s["rigid_rod_speed_fluctuation_percent"] == pytest.approx(rigid["speed_fluctuation_percent"], rel=1e-9)
     assert s["rigid_rod_max_motor_torque_n_m"] == pytest.approx(rigid["max_motor_torque_n_m"], rel=1e-6)
     for name in ("uniform_max_rod_load_n", "uniform_min_rod_load_n", "uniform_peak_net_torque_n_m"):
         assert math.isfinite(s[name])
 
 
-def test_wave_dynamics_is_the_coupled_prediction(run):
-    wave = run("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0.1", "--samples", "256")
-    coupled = run(*SK8_COUPLED)
+def test_wave_dynamics_is_the_coupled_prediction(run_json):
+    wave = run_json("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--damping", "0.1", "--samples", "256")
+    coupled = run_json(*SK8_COUPLED)
     for name in ("crank_speed_rad_s", "motor_torque_n_m", "rod_load_n"):
         assert np.array_equal(series(wave, name), series(coupled, name))
     assert wave["summary"]["speed_fluctuation_percent"] == coupled["summary"]["speed_fluctuation_percent"]
 
 
-def test_field_units(run):
-    si, field = run(*C114), run(*C114, "--units", "field")
-    lbf = 0.45359237 * STANDARD_GRAVITY
-    assert field["summary"]["max_rod_load_lbf"] * lbf == pytest.approx(si["summary"]["max_rod_load_n"], rel=1e-9)
-    psi = lbf / INCH**2
-    assert np.allclose(series(field, "chamber_pressure_psi") * psi, series(si, "chamber_pressure_pa"), rtol=1e-9)
+def test_field_units(run_json):
+    si, field = run_json(*C114), run_json(*C114, "--units", "field")
+    assert field["summary"]["max_rod_load_lbf"] * POUND_FORCE == pytest.approx(si["summary"]["max_rod_load_n"],
+                                                                               rel=1e-9)
+    assert np.allclose(series(field, "chamber_pressure_psi") * PSI, series(si, "chamber_pressure_pa"), rtol=1e-9)
 
 
 @pytest.mark.parametrize("argv, fragment", [
@@ -186,6 +160,7 @@ def test_the_net_torque_plot_shows_the_gearbox_rating():
     from pumpjack_cli.analysis.predict import WellOverrides, predict
     from pumpjack_cli.config import load_unit
 
-    result = predict(load_unit("sk8-3.5-4000"), None, "uniform", 256, 0.1, WellOverrides(), 1.0)
+    result = predict(load_unit(SK8), None, "uniform", 256, 0.1, WellOverrides(), 1.0)
     (panel,) = [panel for panel in result.panels if panel.title == "net torque"]
-    assert panel.levels == (("gearbox rating", pytest.approx(4000 * 9.80665)), ("", pytest.approx(-4000 * 9.80665)))
+    assert panel.levels == (("gearbox rating", pytest.approx(4000 * KILOGRAM_FORCE)),
+                            ("", pytest.approx(-4000 * KILOGRAM_FORCE)))

@@ -18,12 +18,8 @@ from pumpjack_cli.core.beam.kinetostatics import rational_mechanism
 from pumpjack_cli.core.constants import STANDARD_GRAVITY
 from pumpjack_cli.readers.cards import read_card
 
-SK8 = "sk8-3.5-4000"
+from helpers import INCH, POUND_FORCE, SK8
 
-
-@pytest.fixture
-def sk8_card(repo_root):
-    return repo_root / "samples" / "sk8-3.5-4000-card.csv"
 
 
 def library(card, steps=360):
@@ -64,9 +60,8 @@ def test_csv_and_field_units(run_cli, sk8_card):
     rows = list(csv.DictReader(io.StringIO(out)))
     assert len(rows) == 24
     theta, load, r = library(sk8_card, 24)
-    lbf, lbf_in = 4.4482216152605, 4.4482216152605 * 0.0254
-    assert float(rows[5]["r45_y_lbf"]) == pytest.approx(r.r45[5, 1] / lbf, rel=1e-12)
-    assert float(rows[5]["net_torque_lbf_in"]) == pytest.approx(r.net_torque[5] / lbf_in, rel=1e-12)
+    assert float(rows[5]["r45_y_lbf"]) == pytest.approx(r.r45[5, 1] / POUND_FORCE, rel=1e-12)
+    assert float(rows[5]["net_torque_lbf_in"]) == pytest.approx(r.net_torque[5] / (POUND_FORCE * INCH), rel=1e-12)
 
 
 def test_counterweight_options_change_only_the_counterweight_torque(run_cli, sk8_card):
@@ -115,8 +110,8 @@ def test_bad_options(run_cli, sk8_card, args, fragment):
     assert len(err.splitlines()) == 1 and err.startswith("pumpjack: error:") and fragment in err
 
 
-def test_unit_without_masses(run_cli, repo_root, sk8_card):
-    code, _, err = run_cli("reactions", repo_root / "samples" / "sk8-3.5-4000-api.yaml", "--card", sk8_card, "--spm", "10")
+def test_unit_without_masses(run_cli, sk8_api_yaml, sk8_card):
+    code, _, err = run_cli("reactions", sk8_api_yaml, "--card", sk8_card, "--spm", "10")
     assert code == 2 and "no [masses] section" in err
 
 

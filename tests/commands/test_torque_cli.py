@@ -7,7 +7,7 @@ and the definitions of the designations ([API11E], [GOST5866]).
 
 from __future__ import annotations
 
-import json
+import functools
 import math
 import re
 from pathlib import Path
@@ -15,27 +15,20 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from helpers import REPO_ROOT
-
-KGF = 9.80665  # N, [BIPM2019]
-LBF = 4.4482216152605  # N, [NIST811]
-INCH = 0.0254  # m
+from helpers import FOOT, HORSEPOWER, KILOGRAM_FORCE, POUND_FORCE, REPO_ROOT, SK8_CARD, SK8_TOML, sample_card, series
 
 
-def card(unit: str) -> Path:
-    return REPO_ROOT / "samples" / f"{unit}-card.csv"
 
-
-def run(run_cli, unit, *extra, card_file=None):
-    code, out, err = run_cli("torque", unit, "--card", card_file or card(unit), "-f", "json", *extra)
-    assert code == 0, err
-    return json.loads(out)
+@pytest.fixture(scope="module")
+def torque(run_card_json):
+    """`pumpjack torque UNIT --card CARD ...` run once per argument list."""
+    return functools.partial(run_card_json, "torque")
 
 
 def massless_sk8(tmp_path: Path) -> Path:
     """SK8-3,5-4000 with every link mass and moment of inertia zero (crank arms and pitmans
     at 1e-9 kg, the schema's positive floor): B = M = 0 and no inertia."""
-    text = (REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_text(encoding="utf-8")
+    text = SK8_TOML.read_text(encoding="utf-8")
     text = re.sub(r'(?m)^mass = "[^"]*"', 'mass = "1e-9 kg"', text)
     text = re.sub(r'(?m)^(transverse_)?inertia = "[^"]*"', r'\1inertia = "0 kg*m2"', text)
     path = tmp_path / "massless.toml"
@@ -43,36 +36,34 @@ def massless_sk8(tmp_path: Path) -> Path:
     return path
 
 
-def test_massless_exact_equals_api(run_cli, tmp_path):
+def test_massless_exact_equals_api(torque, tmp_path):
     unit = massless_sk8(tmp_path)
-    doc = run(run_cli, unit, "--crank-motion", "uniform", "--method", "exact", card_file=card("sk8-3.5-4000"))
+    doc = torque(unit, "--crank-motion", "uniform", "--method", "exact", card_file=SK8_CARD)
     api = np.array(doc["series"]["api_net_torque_n_m"])
     exact = np.array(doc["series"]["exact_net_torque_n_m"])
     assert np.max(np.abs(exact - api)) < 1e-9 * np.max(np.abs(api))
 
 
 @pytest.mark.parametrize("unit", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])
-def test_exact_method_equals_the_reactions_net_torque(run_cli, unit):
-    doc = run(run_cli, unit, "--crank-motion", "uniform", "--method", "exact", "--steps", "72")
-    code, out, err = run_cli("reactions", unit, "--card", card(unit), "--steps", "72", "-f", "json")
-    assert code == 0, err
-    reactions = np.array(json.loads(out)["series"]["net_torque_n_m"])
+def test_exact_method_equals_the_reactions_net_torque(torque, run_card_json, unit):
+    doc = torque(unit, "--crank-motion", "uniform", "--method", "exact", "--steps", "72")
+    reactions = series(run_card_json("reactions", unit, "--steps", "72"), "net_torque_n_m")
     exact = np.array(doc["series"]["net_torque_n_m"])
     assert np.max(np.abs(exact - reactions)) < 1e-9 * np.max(np.abs(reactions))
 
 
 @pytest.mark.parametrize("unit,kgf_m", [("sk8-3.5-4000", 4000), ("7sk12-2.5-5600", 5600)])
 @pytest.mark.parametrize("method", ["api", "exact"])
-def test_gost_units_load_their_gearbox_against_the_designation(run_cli, unit, kgf_m, method):
-    summary = run(run_cli, unit, "--method", method)["summary"]
-    assert summary["gearbox_rating_n_m"] == pytest.approx(kgf_m * KGF, rel=1e-12)
+def test_gost_units_load_their_gearbox_against_the_designation(torque, unit, kgf_m, method):
+    summary = torque(unit, "--method", method)["summary"]
+    assert summary["gearbox_rating_n_m"] == pytest.approx(kgf_m * KILOGRAM_FORCE, rel=1e-12)
     assert summary["gearbox_loading_percent"] == pytest.approx(
         100 * summary["peak_net_torque_n_m"] / summary["gearbox_rating_n_m"], rel=1e-12)
 
 
-def test_api_unit_without_masses_and_its_ratings(run_cli):
+def test_api_unit_without_masses_and_its_ratings(torque):
     """C-80D-133-48: 80 000 lbf·in, 13 300 lbf, 48 in ([API11E] designation), no [masses]."""
-    doc = run(run_cli, "c-80d-133-48", "--units", "field")
+    doc = torque("c-80d-133-48", "--units", "field")
     s = doc["summary"]
     assert s["gearbox_rating_lbf_in"] == pytest.approx(80_000, rel=1e-12)
     assert s["structure_rating_lbf"] == pytest.approx(13_300, rel=1e-12)
@@ -84,15 +75,14 @@ def test_api_unit_without_masses_and_its_ratings(run_cli):
     assert s["structure_loading_percent"] <= 100 * 1.01 * max(loads) / 13_300
     assert s["gearbox_loading_percent"] == pytest.approx(100 * s["peak_net_torque_lbf_in"] / 80_000, rel=1e-12)
     # polished-rod power = card work x strokes per second
-    hp = 550 * 0.3048 * LBF  # W, [NIST811]
-    assert s["polished_rod_power_hp"] * hp == pytest.approx(
-        s["card_work_ft_lbf"] * 0.3048 * LBF * s["strokes_per_minute_spm"] / 60, rel=1e-9)
+    assert s["polished_rod_power_hp"] * HORSEPOWER == pytest.approx(
+        s["card_work_ft_lbf"] * FOOT * POUND_FORCE * s["strokes_per_minute_spm"] / 60, rel=1e-9)
 
 
-def test_permissible_loads_by_hand(run_cli):
+def test_permissible_loads_by_hand(torque):
     """W_max = B + (M sin(theta) + T_r)/TF and W_min = B + (M sin(theta) - T_r)/TF where TF > 0
     ([GaultSWPSC]), with B = 440 lbf and M = 130 000 lbf·in from the unit file."""
-    doc = run(run_cli, "c-80d-133-48", "--units", "field", "--steps", "24")
+    doc = torque("c-80d-133-48", "--units", "field", "--steps", "24")
     series = doc["series"]
     b, m, rating = 440.0, 130_000.0, 80_000.0
     checked = 0
@@ -111,8 +101,8 @@ def test_permissible_loads_by_hand(run_cli):
     assert checked >= 15
 
 
-def test_net_torque_is_the_sum_of_its_components(run_cli):
-    series = run(run_cli, "sk8-3.5-4000", "--steps", "36")["series"]
+def test_net_torque_is_the_sum_of_its_components(torque):
+    series = torque("sk8-3.5-4000", "--steps", "36")["series"]
     parts = sum(np.array(series[name]) for name in ("rod_load_torque_n_m", "structural_torque_n_m",
                                                      "counterbalance_torque_n_m", "articulating_inertia_torque_n_m",
                                                      "rotary_inertia_torque_n_m"))
@@ -120,10 +110,10 @@ def test_net_torque_is_the_sum_of_its_components(run_cli):
 
 
 @pytest.mark.parametrize("criterion", ["equal-peaks", "min-rms", "min-peak"])
-def test_recommended_counterbalance_by_a_scan_of_m(run_cli, criterion):
+def test_recommended_counterbalance_by_a_scan_of_m(torque, criterion):
     """The recommended net torque is the present one shifted by (M - M_rec) sin(theta);
     a scan of M around the recommendation finds nothing better for the criterion."""
-    doc = run(run_cli, "c-80d-133-48", "--balance", criterion, "--steps", "3600")
+    doc = torque("c-80d-133-48", "--balance", criterion, "--steps", "3600")
     s, series = doc["summary"], doc["series"]
     theta = np.radians(series["crank_angle_deg"])
     present = np.array(series["net_torque_n_m"])
@@ -148,18 +138,18 @@ def test_mark_ii_is_refused_by_name(run_cli, tmp_path):
     text = (REPO_ROOT / "configs" / "c-80d-133-48.toml").read_text(encoding="utf-8")
     unit = tmp_path / "mark.toml"
     unit.write_text(text.replace('designation = "C-80D-133-48"', 'designation = "M-912D-427-192"'), encoding="utf-8")
-    code, out, err = run_cli("torque", unit, "--card", card("c-80d-133-48"))
+    code, out, err = run_cli("torque", unit, "--card", sample_card("c-80d-133-48"))
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "M-912D-427-192 is a Mark II unit; its class is not supported yet" in err
 
 
 def test_exact_method_needs_masses(run_cli):
-    code, out, err = run_cli("torque", "c-80d-133-48", "--card", card("c-80d-133-48"), "--method", "exact")
+    code, out, err = run_cli("torque", "c-80d-133-48", "--card", sample_card("c-80d-133-48"), "--method", "exact")
     assert code == 2 and "has no [masses] section; --method exact needs the link masses" in err
 
 
 def test_plot(run_cli, tmp_path):
     plot = tmp_path / "t.png"
-    code, _, err = run_cli("torque", "sk8-3.5-4000", "--card", card("sk8-3.5-4000"), "--plot", plot, "-o",
+    code, _, err = run_cli("torque", "sk8-3.5-4000", "--card", SK8_CARD, "--plot", plot, "-o",
                            tmp_path / "t.csv")
     assert (code, err) == (0, "") and plot.stat().st_size > 10_000
