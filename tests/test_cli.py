@@ -16,7 +16,7 @@ import pytest
 
 from pumpjack_cli.errors import PumpjackError
 
-from helpers import REPO_ROOT, SK8
+from helpers import SK8, SK8_API_YAML
 
 
 def test_default_format_is_csv_in_a_pipe(run_cli):
@@ -115,7 +115,7 @@ ERROR_CASES = [
     ("unknown-option", lambda tmp: ["kinematics", SK8, "--bogus"], ["--bogus"]),
     ("unknown-command", lambda tmp: ["no-such-command", SK8], ["no-such-command"]),
     ("missing-argument", lambda tmp: ["kinematics"], ["Missing argument", "unit"]),
-    ("no-drive-no-spm", lambda tmp: ["kinematics", REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"],
+    ("no-drive-no-spm", lambda tmp: ["kinematics", SK8_API_YAML],
      ["[drive]", "--spm"]),
 ]
 

@@ -20,10 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, SK8_CARD, SK8_TOML
 
-SK8 = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
-SK8_CARD = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 UNB = REPO_ROOT / "configs" / "unb-600a.toml"
 
 #: Every beam-unit command, as a function of the unit argument.
@@ -72,7 +70,7 @@ def _write(name: str, content: bytes):
     return make
 
 
-SK8_TEXT = SK8.read_text(encoding="utf-8")
+SK8_TEXT = SK8_TOML.read_text(encoding="utf-8")
 FILES = {
     "directory": (lambda tmp: tmp, "is a directory"),
     "fifo": (_fifo, "is a FIFO"),
@@ -279,7 +277,7 @@ def test_output_targets_checked_before_anything_is_written(run_cli, tmp_path, mo
     pre = tmp_path / "pre.csv"
     pre.write_text("precious\n")
     argv, fragment = TARGETS[case]
-    unit = str(UNB) if command == "inertia-error" else str(SK8)
+    unit = str(UNB) if command == "inertia-error" else str(SK8_TOML)
     code, out, err = run_cli(*COMMANDS[command](unit), *argv)
     one_line_error(code, out, err, fragment)
     assert pre.read_text() == "precious\n"
@@ -381,7 +379,7 @@ def test_an_output_onto_an_input_is_refused_and_the_input_kept(run_cli, tmp_path
     symbolic link) would replace that input: refused, the file left as it was."""
     card, unit = tmp_path / "card.csv", tmp_path / "unit.toml"
     card.write_bytes(SK8_CARD.read_bytes())
-    unit.write_bytes(SK8.read_bytes())
+    unit.write_bytes(SK8_TOML.read_bytes())
     (tmp_path / "link.csv").symlink_to(card)
     for target, kind in ((card, "card file"), (tmp_path / "link.csv", "card file"), (unit, "unit file")):
         named = target.with_suffix(".png") if option == "--plot" else target
@@ -389,7 +387,7 @@ def test_an_output_onto_an_input_is_refused_and_the_input_kept(run_cli, tmp_path
             named.symlink_to(target)
         code, out, err = run_cli("torque", unit, "--card", card, option, named, "-f", "csv")
         one_line_error(code, out, err, f"is the {kind} this run read")
-        assert card.read_bytes() == SK8_CARD.read_bytes() and unit.read_bytes() == SK8.read_bytes()
+        assert card.read_bytes() == SK8_CARD.read_bytes() and unit.read_bytes() == SK8_TOML.read_bytes()
         if option == "--plot":
             named.unlink()
     assert sorted(path.name for path in tmp_path.iterdir()) == ["card.csv", "link.csv", "unit.toml"]

@@ -19,23 +19,22 @@ import pytest
 from pumpjack_cli.names import SECTIONS, catalogue, glossary_sections, lookup
 from pumpjack_cli.quantities import OUTPUT_QUANTITIES
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, SK8_CARD, sample_card
 
 GLOSSARY = REPO_ROOT / "docs" / "glossary.md"
-SK8_CARD = "samples/sk8-3.5-4000-card.csv"
 
 RUNS = [
     ("units",),
     ("kinematics", "sk8-3.5-4000", "--steps", "8"),
     ("reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--steps", "8"),
-    ("compare-redundancy", "7sk12-2.5-5600", "--card", "samples/7sk12-2.5-5600-card.csv", "--spm", "8", "--steps", "8"),
+    ("compare-redundancy", "7sk12-2.5-5600", "--card", sample_card("7sk12-2.5-5600"), "--spm", "8", "--steps", "8"),
     ("dynamics", "sk8-3.5-4000", "--steps", "8"),
     ("dynamics", "sk8-3.5-4000", "--steps", "8", "--card", "DRIVABLE"),
     ("inertia-error", "unb-600a", "--steps", "8"),
     ("inertia-error", "unb-600a", "--steps", "8", "--support-friction"),
     ("inertia-error", "sk8-3.5-4000", "--steps", "8", "--mass", "100 kg"),
     ("torque", "sk8-3.5-4000", "--card", SK8_CARD, "--steps", "8"),
-    ("torque", "c-80d-133-48", "--card", "samples/c-80d-133-48-card.csv", "--steps", "8"),
+    ("torque", "c-80d-133-48", "--card", sample_card("c-80d-133-48"), "--steps", "8"),
     ("downhole", "sk8-3.5-4000", "--card", SK8_CARD, "--samples", "64"),
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1"),
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1", "--crank-motion", "dynamic"),

@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from helpers import CARD_UNITS, REPO_ROOT
+from helpers import CARD_UNITS, REPO_ROOT, sample_card
 
 
 
@@ -33,7 +33,7 @@ def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple
     rows = []
     for k in range(start, start + count):
         unit = CARD_UNITS[k % len(CARD_UNITS)]
-        lines = (REPO_ROOT / "samples" / f"{unit}-card.csv").read_text(encoding="utf-8").splitlines()
+        lines = sample_card(unit).read_text(encoding="utf-8").splitlines()
         body = [line for line in lines if not line.startswith("#")]
         data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
         mean = data[:, 2].mean()

@@ -19,19 +19,17 @@ import pytest
 from pumpjack_cli.config import bundled_units, load_unit, parse_unit, read_unit_file
 from pumpjack_cli.errors import ConfigError, PumpjackError
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, SK8_API_YAML, SK8_TOML
 
 CONFIG_SUFFIXES = (".toml", ".yaml", ".yml", ".json")
 SHIPPED_FILES = sorted(
     p for folder in ("configs", "samples") for p in (REPO_ROOT / folder).iterdir() if p.suffix in CONFIG_SUFFIXES
 )
 BUNDLED_FILES = sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.suffix in CONFIG_SUFFIXES)
-SK8 = REPO_ROOT / "configs" / "sk8-3.5-4000.toml"
-SK8_API = REPO_ROOT / "samples" / "sk8-3.5-4000-api.yaml"
 
 
 def _sk8_data() -> dict:
-    with SK8.open("rb") as f:
+    with SK8_TOML.open("rb") as f:
         return tomllib.load(f)
 
 
@@ -68,12 +66,12 @@ def test_bundled_units_lists_every_config_file():
 
 @pytest.mark.parametrize("spec", ["sk8-3.5-4000", "SK8-3.5-4000", "Sk8-3.5-4000", "SK8-3,5-4000", "sk8-3,5-4000"])
 def test_load_unit_by_bundled_name(spec):
-    assert load_unit(spec) == read_unit_file(SK8)
+    assert load_unit(spec) == read_unit_file(SK8_TOML)
 
 
 def test_load_unit_by_path(monkeypatch):
-    expected = read_unit_file(SK8)
-    assert load_unit(str(SK8)) == expected
+    expected = read_unit_file(SK8_TOML)
+    assert load_unit(str(SK8_TOML)) == expected
     monkeypatch.chdir(REPO_ROOT)
     assert load_unit("configs/sk8-3.5-4000.toml") == expected
     assert load_unit("samples/sk8-3.5-4000-api.yaml").name == "SK8-3,5-4000 (API letters)"
@@ -122,7 +120,7 @@ def _assert_same_linkage(a, b, rel=1e-15):
 def test_gost_and_api_files_give_the_same_linkage():
     # Same numbers in the same units, so the conversion is identical: 1e-15 relative
     # (H - G = 4.5 - 1.5 is exact in binary).
-    _assert_same_linkage(read_unit_file(SK8).geometry.mechanism(), read_unit_file(SK8_API).geometry.mechanism())
+    _assert_same_linkage(read_unit_file(SK8_TOML).geometry.mechanism(), read_unit_file(SK8_API_YAML).geometry.mechanism())
 
 
 def test_api_letters_inline_match_gost():
@@ -284,7 +282,7 @@ def test_default_kind_is_beam_pump():
     data = _sk8_data()
     assert "kind" not in data
     data["kind"] = "beam-pump"
-    assert parse_unit(data, "x.toml") == read_unit_file(SK8)
+    assert parse_unit(data, "x.toml") == read_unit_file(SK8_TOML)
 
 
 def test_several_problems_are_counted():
@@ -359,12 +357,12 @@ def test_same_data_in_every_format(tmp_path, suffix):
     # The TOML data written as JSON (YAML is a superset of JSON) gives the same config.
     path = tmp_path / f"sk8{suffix}"
     path.write_text(json.dumps(_sk8_data()), encoding="utf-8")
-    assert read_unit_file(path) == read_unit_file(SK8)
+    assert read_unit_file(path) == read_unit_file(SK8_TOML)
 
 
 def test_field_error_in_a_file_names_the_file(tmp_path):
-    text = SK8.read_text(encoding="utf-8").replace('r = "1010 mm"', 'r = "2 m"')
-    assert text != SK8.read_text(encoding="utf-8")
+    text = SK8_TOML.read_text(encoding="utf-8").replace('r = "1010 mm"', 'r = "2 m"')
+    assert text != SK8_TOML.read_text(encoding="utf-8")
     path = tmp_path / "bad-geometry.toml"
     path.write_text(text, encoding="utf-8")
     with pytest.raises(ConfigError, match="cannot assemble") as info:

@@ -17,10 +17,9 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers.cards import read_card
 
-from helpers import REPO_ROOT
+from helpers import INCH, POUND_FORCE, REPO_ROOT, sample_card
 
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
-INCH, LBF = 0.0254, 4.4482216152605
 
 
 def exact_run(steps: int = 360):
@@ -83,7 +82,7 @@ def test_layouts_and_units_give_the_same_card(tmp_path):
     time = run.time
     files = {
         "angle": "crank_angle_deg,load_kN\n" + "\n".join(f"{math.degrees(t)},{x / 1e3}" for t, x in zip(theta, w)),
-        "field": "position_in,load_lbf\n" + "\n".join(f"{p / INCH},{x / LBF}" for p, x in zip(s, w)),
+        "field": "position_in,load_lbf\n" + "\n".join(f"{p / INCH},{x / POUND_FORCE}" for p, x in zip(s, w)),
         "brackets": "Time (s),Position [mm],Load [kN]\n" + "\n".join(
             f"{t},{1e3 * p},{x / 1e3}" for t, p, x in zip(time, s, w)),
     }
@@ -96,7 +95,7 @@ def test_layouts_and_units_give_the_same_card(tmp_path):
 
 def test_default_units_for_bare_headers(tmp_path):
     run = exact_run()
-    text = "position,load\n" + "\n".join(f"{p / INCH},{x / LBF}" for p, x in zip(run.rod.position, load_of(run.crank_angle)))
+    text = "position,load\n" + "\n".join(f"{p / INCH},{x / POUND_FORCE}" for p, x in zip(run.rod.position, load_of(run.crank_angle)))
     path = write(tmp_path, text)
     field = read(path, units="field").card
     assert np.allclose(card_load(field, run.crank_angle), load_of(run.crank_angle), rtol=3e-3)
@@ -172,15 +171,15 @@ def test_sample_cards_are_what_the_script_makes():
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     for name in module.CARDS:
-        assert (REPO_ROOT / "samples" / f"{name}-card.csv").read_text(encoding="utf-8") == module.write(name), name
+        assert sample_card(name).read_text(encoding="utf-8") == module.write(name), name
 
 
 @pytest.mark.parametrize("name", ["sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"])
 def test_sample_cards_fit_their_units(name):
     """Each sample card reads without warnings; its stroke matches its unit, and its
     peak stays below the unit's rated polished-rod load (80, 120 kN; 13 300 lbf)."""
-    rated = {"sk8-3.5-4000": 80e3, "7sk12-2.5-5600": 120e3, "c-114d-133-54": 13300 * LBF}
+    rated = {"sk8-3.5-4000": 80e3, "7sk12-2.5-5600": 120e3, "c-114d-133-54": 13300 * POUND_FORCE}
     linkage = load_unit(name).geometry.mechanism()
-    reading = read(REPO_ROOT / "samples" / f"{name}-card.csv", linkage)
+    reading = read(sample_card(name), linkage)
     assert reading.warnings == ()
     assert 0 < reading.card.load.min() < reading.card.load.max() < rated[name]

@@ -25,12 +25,11 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers.cards import read_card
 
-from helpers import REPO_ROOT
+from helpers import SK8_CARD, sample_card
 
-SAMPLE = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 CCW = dataclasses.replace(SK8, rotation=-SK8.rotation)
-TIME, POSITION, LOAD_KN = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True)
+TIME, POSITION, LOAD_KN = np.loadtxt(SK8_CARD, delimiter=",", comments="#", skiprows=4, unpack=True)
 #: Seed 004's uniform crank speed: pi n_nom / (30 u_gearbox u_belt) = pi 1460 / (30 * 37.18 * 900/250) [1/s].
 SEED_OMEGA = math.pi * 1460 / (30 * 37.18 * 900 / 250)
 
@@ -67,7 +66,7 @@ def circular(a, b):
 def test_sample_card_runs_at_the_seed_speed():
     """The SK8 sample was made at the unit's rated speed, seed 004's 1.1422 1/s (10.91 strokes/min).
     Time stamps are rounded to 0.1 ms over a 5.5 s cycle (2e-5), positions to 10 um: 1e-4 covers both."""
-    reading = read(SAMPLE)
+    reading = read(SK8_CARD)
     assert reading.speed == pytest.approx(SEED_OMEGA, rel=1e-4)
     assert reading.strokes_per_minute == pytest.approx(30 * SEED_OMEGA / math.pi, rel=1e-4)
     assert reading.fit_rms < 1e-4 and reading.fit_rms_relative < 1e-4
@@ -88,7 +87,7 @@ def test_fitted_angles_are_those_the_sample_was_made_at():
     grid = uniform_kinematics(SK8, SEED_OMEGA, TIME.size)
     start = int(np.argmin(grid.rod.position))
     made_at = np.roll(grid.crank_angle, -start)
-    reading = read(SAMPLE)
+    reading = read(SK8_CARD)
     assert np.max(circular(reading.crank_angle, made_at)) < 2e-4
 
 
@@ -98,7 +97,7 @@ def test_time_fit_and_position_map_agree():
     bottom dead position, which moves that sample by sqrt(2 * 0.15 mm / s'') = 0.69 deg
     (s'' = A psi'' = 2.09 m/rad^2 there); 5 deg or more from the dead positions, where
     |ds/dtheta| >= 0.086 m/rad, the same 0.15 mm shift moves an angle by at most 0.1 deg."""
-    timed = read(SAMPLE)
+    timed = read(SK8_CARD)
     untimed = read_text(text_of("position_m,load_kN", POSITION, LOAD_KN))
     difference = circular(timed.crank_angle, untimed.crank_angle)
     dead = SK8.dead_positions()
@@ -226,9 +225,9 @@ def test_rotation_of_the_unit_is_told_by_the_time_stamps():
 
 
 def test_reversed_rows_keep_the_speed():
-    lines = SAMPLE.read_text(encoding="utf-8").splitlines()
+    lines = SK8_CARD.read_text(encoding="utf-8").splitlines()
     reading = read_text("\n".join(lines[:4] + lines[4:][::-1]))
-    assert reading.speed == read(SAMPLE).speed
+    assert reading.speed == read(SK8_CARD).speed
 
 
 def test_card_speed_wins_within_2_percent():
@@ -269,7 +268,7 @@ def test_loop_work_is_the_enclosed_area():
 def test_sample_cards_do_positive_work():
     """The sample cards lift the fluid on the upstroke, so the rods take work from the unit."""
     for name in ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54"):
-        reading = read(REPO_ROOT / "samples" / f"{name}-card.csv", load_unit(name).geometry.mechanism())
+        reading = read(sample_card(name), load_unit(name).geometry.mechanism())
         assert not reading.reversed and loop_work(reading.position, reading.load) > 0
 
 

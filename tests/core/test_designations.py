@@ -1,8 +1,8 @@
 """Unit designations: API Spec 11E and GOST 5866-76 parsed into SI ratings.
 
-Expected values are hand arithmetic with the exact conversion factors of NIST SP 811
-(2008), Appendix B: 1 lbf = 4.4482216152605 N, 1 in = 0.0254 m, so 1 lbf·in =
-0.112984829027617 N·m; 1 kgf = 9.80665 N (standard gravity, CGPM 1901).
+Expected values are hand arithmetic with the conversion factors lbf, in and kgf (checked
+against NIST SP 811 in tests/validation/test_nist811.py); the printed SI values (25 760.54 N·m,
+78 453.2 N, 39 226.6 N·m) are the products worked out by hand.
 """
 
 from __future__ import annotations
@@ -15,10 +15,9 @@ import pytest
 from pumpjack_cli.core.designations import API, GOST, Designation, parse_designation
 from pumpjack_cli.errors import DesignationError, PumpjackError
 
-LBF_IN = 0.112984829027617  # N·m per lbf·in = 4.4482216152605 * 0.0254
-LBF = 4.4482216152605
-INCH = 0.0254
-KGF = 9.80665
+from helpers import INCH, KILOGRAM_FORCE, POUND_FORCE
+
+LBF_IN = POUND_FORCE * INCH  # N·m per lbf·in
 
 
 def test_guo2007_example_c_228d_213_86():
@@ -30,7 +29,7 @@ def test_guo2007_example_c_228d_213_86():
     assert d.family == API and d.unit_class == "conventional" and d.reduction == "double"
     assert d.gearbox_torque == pytest.approx(228_000 * LBF_IN, rel=1e-12)
     assert d.gearbox_torque == pytest.approx(25_760.54, abs=0.01)
-    assert d.structure_load == pytest.approx(21_300 * LBF, rel=1e-12)
+    assert d.structure_load == pytest.approx(21_300 * POUND_FORCE, rel=1e-12)
     assert d.max_stroke == pytest.approx(86 * INCH, rel=1e-12)
     assert d.series is None and d.reducer_code == "228D"
 
@@ -46,7 +45,7 @@ def test_api_classes_and_ratings(text, cls, torque_kin, structure_100, stroke_in
     d = parse_designation(text)
     assert d.unit_class == cls
     assert d.gearbox_torque == pytest.approx(torque_kin * 1000 * LBF_IN, rel=1e-12)
-    assert d.structure_load == pytest.approx(structure_100 * 100 * LBF, rel=1e-12)
+    assert d.structure_load == pytest.approx(structure_100 * 100 * POUND_FORCE, rel=1e-12)
     assert d.max_stroke == pytest.approx(stroke_in * INCH, rel=1e-12)
 
 
@@ -61,7 +60,7 @@ def test_guo2007_table_12_1_prefixed_reducer_and_printed_dashes():
     p = parse_designation("C-P57D-76-54")
     assert p.reducer_code == "P57D" and p.gearbox_torque == pytest.approx(57_000 * LBF_IN, rel=1e-12)
     q = parse_designation("C---228D---200---74")
-    assert q.structure_load == pytest.approx(20_000 * LBF, rel=1e-12) and q.max_stroke == pytest.approx(74 * INCH)
+    assert q.structure_load == pytest.approx(20_000 * POUND_FORCE, rel=1e-12) and q.max_stroke == pytest.approx(74 * INCH)
     assert parse_designation(" c-228d-213-86 ").reduction == "double"
     assert parse_designation("C-228-213-86").reduction is None
 
@@ -73,7 +72,7 @@ def test_gost_sk8_3_5_4000(text):
     Latin, Cyrillic or mixed letters, decimal comma or point, any dash."""
     d = parse_designation(text)
     assert d.family == GOST and d.unit_class == "conventional" and d.series is None
-    assert d.structure_load == pytest.approx(8000 * KGF, rel=1e-12)
+    assert d.structure_load == pytest.approx(8000 * KILOGRAM_FORCE, rel=1e-12)
     assert d.structure_load == pytest.approx(78_453.2, abs=0.01)
     assert d.max_stroke == pytest.approx(3.5, rel=1e-12)
     assert d.gearbox_torque == pytest.approx(39_226.6, abs=1e-6)
@@ -84,9 +83,9 @@ def test_gost_7sk12_2_5_5600(text):
     """The unit of seed 000: 12 tf, 2.5 m, 5600 kgf·m; the leading 7 is kept as series."""
     d = parse_designation(text)
     assert d.series == 7
-    assert d.structure_load == pytest.approx(12_000 * KGF, rel=1e-12)
+    assert d.structure_load == pytest.approx(12_000 * KILOGRAM_FORCE, rel=1e-12)
     assert d.max_stroke == pytest.approx(2.5, rel=1e-12)
-    assert d.gearbox_torque == pytest.approx(5600 * KGF, rel=1e-12)
+    assert d.gearbox_torque == pytest.approx(5600 * KILOGRAM_FORCE, rel=1e-12)
 
 
 @pytest.mark.parametrize("text, fragment", [

@@ -15,8 +15,8 @@ import pytest
 
 from pumpjack_cli.core.well import annulus_drag_factor, buoyant_weight, darcy_friction_factor, fluid_kinetic_mass, fluid_load, plunger_friction, rod_friction, rod_string_mass, tubing_friction, well_load
 from pumpjack_cli.errors import DynamicsError, PumpjackError
+from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 
-G = 9.80665
 RODS = np.array([0.019, 0.022, 0.025])
 SHARES = np.array([0.51, 0.26, 0.23])
 SEED_WELL = dict(

@@ -20,12 +20,14 @@ from pumpjack_cli.render.delimited import write_json
 from pumpjack_cli.render.display import CSV_BLOCK
 from pumpjack_cli.results import STORED, Column, Result, Scalar
 
+from helpers import INCH
+
 ROWS = 2 * CSV_BLOCK + 17
 
 
 def _document(result: Result, system: str) -> str:
     """The expected text: json.dumps of the whole document built from the columns."""
-    unit, factor = {"si": ("m", 1.0), "field": ("in", 1.0 / 0.0254)}[system]
+    unit, factor = {"si": ("m", 1.0), "field": ("in", 1.0 / INCH)}[system]
     position, name, value = result.columns
     document = {
         "title": result.title,

@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import pytest
 
-SK8_CARD = "samples/sk8-3.5-4000-card.csv"
+from helpers import SK8_CARD, sample_card
+
 RUNS = [
     ("units",),
     ("kinematics", "sk8-3.5-4000"),
     ("reactions", "sk8-3.5-4000", "--card", SK8_CARD),
-    ("compare-redundancy", "7sk12-2.5-5600", "--card", "samples/7sk12-2.5-5600-card.csv", "--crank-phase", "0.1 deg"),
+    ("compare-redundancy", "7sk12-2.5-5600", "--card", sample_card("7sk12-2.5-5600"), "--crank-phase", "0.1 deg"),
     ("dynamics", "sk8-3.5-4000"),
     ("inertia-error", "unb-600a"),
     ("inertia-error", "unb-600a", "--support-friction"),

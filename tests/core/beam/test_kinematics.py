@@ -19,17 +19,16 @@ from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.core.beam.geometry import COUNTERCLOCKWISE, Linkage, dead_positions
 from pumpjack_cli.core.beam.linkage import motion
 
-INCH = 0.0254  # m, exact (1959 international yard and pound agreement)
+from helpers import INCH, SK8_CRANK_SPEED, SK8_LINKAGE
 
-# SK8-3,5-4000 ([SK8Rotation2013] / configs/sk8-3.5-4000.toml), m
-SK8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
 # C-114D-133-54, Guo, Lyons & Ghalambor 2007 [Guo2007], Table 12.1: A, C, R, P, I, H - G in inches
 C114_CCW = Linkage(72 * INCH, 64 * INCH, 24 * INCH, 74.5 * INCH, 64 * INCH, 75 * INCH, COUNTERCLOCKWISE)
 
-UNITS = {"SK8": SK8, "C114-ccw": C114_CCW}
-# 1.1422 1/s: crank speed of the SK8 example of [SK8Rotation2013] (about 10.9 strokes/min); any
+# SK8-3,5-4000 with the dimensions of [SK8Rotation2013].
+UNITS = {"SK8": SK8_LINKAGE, "C114-ccw": C114_CCW}
+# The crank speed of the SK8 example of [SK8Rotation2013] (about 10.9 strokes/min); any
 # positive value would do, the identities tested hold for every omega.
-OMEGA = 1.1422
+OMEGA = SK8_CRANK_SPEED
 
 
 def _exact(lk: Linkage, theta, omega, epsilon=0.0):
@@ -117,10 +116,10 @@ def test_rod_motion_chain_rule_nonuniform_rotation(name):
 
 def test_rod_motion_position_measured_from_bottom():
     """s = 0 at the bottom dead position and s = stroke at the top."""
-    dead = dead_positions(SK8)
-    rm = _exact(SK8, [dead.crank_angle_bottom, dead.crank_angle_top], OMEGA)
+    dead = dead_positions(SK8_LINKAGE)
+    rm = _exact(SK8_LINKAGE, [dead.crank_angle_bottom, dead.crank_angle_top], OMEGA)
     assert rm.position[0] == pytest.approx(0.0, abs=1e-12)
-    assert rm.position[1] == pytest.approx(SK8.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom), rel=1e-12)
+    assert rm.position[1] == pytest.approx(SK8_LINKAGE.front_arm * (dead.beam_angle_top - dead.beam_angle_bottom), rel=1e-12)
 
 
 # --- approximations -----------------------------------------------------------------
@@ -228,7 +227,7 @@ def test_summary_harmonic_error_matches_independent_grid():
     difference is only the sampling of smooth maxima: a sampled maximum is low by at most
     1/2 |f''/f| (h/2)^2 relative, ~1e-6 for h = 8.7e-4 rad and |f''/f| <= 10 (curves
     with up to the third harmonic of the crank angle), so 1e-5 is a safe bound."""
-    lk = SK8
+    lk = SK8_LINKAGE
     kin = uniform_kinematics(lk, OMEGA)
     dead = dead_positions(lk)
     theta = np.arange(9973) * 2 * np.pi / 9973
@@ -252,7 +251,7 @@ def test_summary_harmonic_error_matches_independent_grid():
 def test_approximations_in_result_use_crank_travel_from_bottom():
     """result.approximations are evaluated at phi = theta - theta_bottom with amplitude
     R A / C and lambda = R / P (module docstring)."""
-    lk = SK8
+    lk = SK8_LINKAGE
     kin = uniform_kinematics(lk, OMEGA, steps=180)
     dead = dead_positions(lk)
     amp = lk.crank_radius * lk.front_arm / lk.rear_arm
@@ -363,7 +362,7 @@ def test_summary_does_not_depend_on_steps(name):
 
 
 def test_result_arrays_follow_steps():
-    kin = uniform_kinematics(SK8, OMEGA, steps=50)
+    kin = uniform_kinematics(SK8_LINKAGE, OMEGA, steps=50)
     np.testing.assert_allclose(kin.crank_angle, np.arange(50) * 2 * np.pi / 50, rtol=0, atol=1e-15)
     np.testing.assert_array_equal(crank_grid(50), kin.crank_angle)
     for arr in (kin.rod.position, kin.rod.velocity, kin.rod.acceleration, kin.torque_factor, kin.beam_angle,
@@ -374,13 +373,13 @@ def test_result_arrays_follow_steps():
 @pytest.mark.parametrize("omega", [0.0, -1.0, -1e-12, float("nan")])
 def test_uniform_kinematics_rejects_nonpositive_omega(omega):
     with pytest.raises(ValueError, match="positive"):
-        uniform_kinematics(SK8, omega)
+        uniform_kinematics(SK8_LINKAGE, omega)
 
 
 def test_velocity_scales_with_omega():
     """v = A psi' omega is linear in omega and a = A psi'' omega^2 quadratic."""
-    k1 = uniform_kinematics(SK8, 1.0, steps=90)
-    k3 = uniform_kinematics(SK8, 3.0, steps=90)
+    k1 = uniform_kinematics(SK8_LINKAGE, 1.0, steps=90)
+    k3 = uniform_kinematics(SK8_LINKAGE, 3.0, steps=90)
     np.testing.assert_allclose(k3.rod.velocity, 3 * k1.rod.velocity, rtol=1e-14, atol=1e-14)
     np.testing.assert_allclose(k3.rod.acceleration, 9 * k1.rod.acceleration, rtol=1e-14, atol=1e-13)
     np.testing.assert_allclose(k3.rod.position, k1.rod.position, rtol=0, atol=0)

@@ -29,7 +29,7 @@ from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage
 from pumpjack_cli.core.beam.linkage import crank_pin, motion
 from pumpjack_cli.errors import GeometryError
 
-INCH = 0.0254  # m, exact by definition (international yard and pound agreement, 1959)
+from helpers import INCH
 
 # SK8-3,5-4000 geometry as given in the brief and in configs/sk8-3.5-4000.toml
 # ([SK8Rotation2013] data): A = 3.5, C = 2.5, R = 1.01, P = 3.0, I = 2.195, H - G = 3.0 m.

@@ -26,6 +26,8 @@ from pumpjack_cli.readers.cards import read_card
 
 from helpers import REPO_ROOT, sample_card
 
+from pumpjack_cli.core.constants import STANDARD_GRAVITY
+
 UNIT = "7sk12-2.5-5600"
 OMEGA = 8 * np.pi / 30
 
@@ -255,8 +257,7 @@ def test_whole_arm_phase_adds_the_turned_arms_gravity_torque(setup):
     arm = dataclasses.replace(pin, arm_phase_offset=phi)
     _, by_pin = rational_mechanism(pin, masses, theta, OMEGA, 0.0, load)
     _, by_arm = rational_mechanism(arm, masses, theta, OMEGA, 0.0, load)
-    g = 9.80665
-    expected = -g * (masses.crank_arm_mass * masses.crank_arm_cg * (np.sin(theta + phi) - np.sin(theta))
+    expected = -STANDARD_GRAVITY * (masses.crank_arm_mass * masses.crank_arm_cg * (np.sin(theta + phi) - np.sin(theta))
                      + 0.5 * masses.counterweight_mass * masses.counterweight_radius
                      * (np.sin(theta + phi + masses.counterweight_phase) - np.sin(theta + masses.counterweight_phase)))
     assert np.max(np.abs(by_arm.net_torque - by_pin.net_torque - expected)) < 1e-9 * np.max(

@@ -25,7 +25,7 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import TorqueError
 
-from helpers import BEAM_UNITS
+from helpers import BEAM_UNITS, KILOGRAM_FORCE
 
 ZERO = MassModel(*[0.0] * 18)
 THETA = crank_grid(720)
@@ -187,7 +187,7 @@ def test_permissible_load_by_hand():
     theta = np.radians([40.0, 90.0, 150.0, 230.0, 300.0])
     tf = lk.torque_factor(theta)
     bal = Counterbalance(700.0, 80e3, 0.0)
-    rating = 5600 * 9.80665
+    rating = 5600 * KILOGRAM_FORCE
     low, high = permissible_load(theta, tf, bal, rating)
     for k in range(theta.size):
         cb = 80e3 * math.sin(theta[k])

@@ -25,7 +25,7 @@ from pumpjack_cli.core.beam.torque import api_net_torque
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.readers.cards import read_card
 
-from helpers import REPO_ROOT
+from helpers import sample_card
 
 #: unit -> (card units, strokes per minute the card was made at: samples/make_cards.py;
 #: SK8 runs at the motor's rated speed, pi 1460 / (30 x 37.18 x 3.6) = 1.1422 1/s)
@@ -41,7 +41,7 @@ def bundled(name: str):
     """Linkage, masses and card of a bundled unit."""
     config = load_unit(name)
     linkage = config.geometry.mechanism()
-    reading = place(read_card(REPO_ROOT / "samples" / f"{name}-card.csv", units=CARDS[name][0]), linkage)
+    reading = place(read_card(sample_card(name), units=CARDS[name][0]), linkage)
     return linkage, config.masses.model(), reading.card
 
 
@@ -67,7 +67,7 @@ def balance_of(name: str):
     config = load_unit(name)
     linkage = config.geometry.mechanism()
     units = CARDS.get(name, ("field",))[0]
-    card = place(read_card(REPO_ROOT / "samples" / f"{name}-card.csv", units=units), linkage).card
+    card = place(read_card(sample_card(name), units=units), linkage).card
     if config.masses is not None:
         return linkage, counterbalance_from_masses(linkage, config.masses.model()), card
     given = config.counterbalance
@@ -125,7 +125,7 @@ def test_crank_speed_from_the_cards_time_stamps(name):
     harmonics, so the limits leave a factor of about 3 over the largest samples (the
     positions' rounding to 1e-5 m adds less)."""
     linkage, _, _ = bundled(name)
-    reading = place(read_card(REPO_ROOT / "samples" / f"{name}-card.csv", units=CARDS[name][0]), linkage)
+    reading = place(read_card(sample_card(name), units=CARDS[name][0]), linkage)
     uniform = 2 * math.pi * CARDS[name][1] / 60
     assert np.max(np.abs(reading.crank_speed / uniform - 1)) < 2e-4
     assert np.max(np.abs(reading.crank_acceleration)) < 1e-3 * uniform**2

@@ -21,6 +21,8 @@ from pumpjack_cli.core.rods.string import RodString
 from pumpjack_cli.core.well import fluid_load
 from pumpjack_cli.errors import PredictionError, PumpjackError
 
+from pumpjack_cli.core.constants import STANDARD_GRAVITY
+
 AREA = 1e-3
 P_D, P_I = 12e6, 1e6
 F_O = (P_D - P_I) * AREA
@@ -82,7 +84,7 @@ def test_fluid_load_from_the_pressures_is_the_seed_well_models():
     pd, pi = pump_pressures(1530.0, 820.0, submergence=100.0)
     assert Pump(np.pi * 0.038**2 / 4, pd, pi).fluid_load == pytest.approx(fluid_load(0.038, 1430.0, 820.0), rel=1e-12)
     pd2, pi2 = pump_pressures(1530.0, 820.0, intake_pressure=2e6, tubing_head_pressure=1e6)
-    assert (pd2, pi2) == (pytest.approx(1e6 + 820.0 * 9.80665 * 1530.0), 2e6)
+    assert (pd2, pi2) == (pytest.approx(1e6 + 820.0 * STANDARD_GRAVITY * 1530.0), 2e6)
 
 
 def _rods():

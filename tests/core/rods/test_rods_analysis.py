@@ -18,8 +18,8 @@ from pumpjack_cli.core.rods.downhole import pump_card, surface_card
 from pumpjack_cli.core.rods.string import RodString
 from pumpjack_cli.core.rods.tables import RodSection, rod_string, tensile_strength
 from pumpjack_cli.errors import DownholeError
+from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 
-G = 9.80665
 
 
 def rectangle_card(samples=400, stroke=2.0, fluid_load=10e3, unload_fraction=1.0, pickup=0.02):

@@ -25,9 +25,10 @@ from pumpjack_cli.core.rods.downhole import (
 from pumpjack_cli.core.rods.string import RodString
 from pumpjack_cli.core.rods.tables import RodSection, rod_string, steel_rod
 from pumpjack_cli.errors import DownholeError
+from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 
-FOOT = 0.3048
-G = 9.80665
+from helpers import FOOT, POUND_FORCE
+
 METHODS = ("gibbs", "everitt-jennings")
 
 
@@ -65,7 +66,7 @@ WELLS = {
     # seed 004: 10.9 strokes/min, 38 mm plunger, 820 kg/m^3 lifted 1530 m: rho g H A_p
     "sk8-1530m": (sk8_string, 60 / 10.9, 2.5, 820 * G * 1530 * np.pi * 0.038**2 / 4, 820.0),
     # 8 strokes/min, 1.75 in plunger, water: RP 11L F_o = 0.340 G D^2 H = 5206 lb
-    "5000ft-sinker": (four_taper_string, 60 / 8, 3.0, 0.340 * 1.75**2 * 5000 * 4.4482216152605, 1000.0),
+    "5000ft-sinker": (four_taper_string, 60 / 8, 3.0, 0.340 * 1.75**2 * 5000 * POUND_FORCE, 1000.0),
 }
 
 

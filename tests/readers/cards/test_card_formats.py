@@ -22,14 +22,13 @@ from pumpjack_cli.core.cards import PlacedCard
 from pumpjack_cli.quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE
 from pumpjack_cli.readers.cards import parse_card_columns, read_card
 
-from helpers import REPO_ROOT
+from helpers import SK8_CARD
 
-SAMPLE = REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv"
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
 
 #: The sample's columns in SI, read with numpy (independently of the reader).
-TIME, POSITION, LOAD = np.loadtxt(SAMPLE, delimiter=",", comments="#", skiprows=4, unpack=True) * [[1.0], [1.0], [1e3]]
-REFERENCE = place(read_card(SAMPLE), SK8)
+TIME, POSITION, LOAD = np.loadtxt(SK8_CARD, delimiter=",", comments="#", skiprows=4, unpack=True) * [[1.0], [1.0], [1e3]]
+REFERENCE = place(read_card(SK8_CARD), SK8)
 
 #: Unit spelling -> factor to SI, from the definitions of units.py ([NIST811]); lb is lbf for a force column.
 FORCE = {"N": 1.0, "kN": 1e3, "lbf": POUND_FORCE, "lb": POUND_FORCE, "lbs": POUND_FORCE, "klb": 1e3 * POUND_FORCE,
@@ -173,7 +172,7 @@ def test_file_and_stdin_agree(tmp_path):
 def test_reversed_sample_gives_exactly_the_same_card():
     """Rows reversed (as some exports store cards): time decreases, the reader turns the rows back
     and says so once; the crank-angle card (and so every torque computed from it) is identical."""
-    lines = SAMPLE.read_text(encoding="utf-8").splitlines()
+    lines = SK8_CARD.read_text(encoding="utf-8").splitlines()
     reversed_text = "\n".join(lines[:4] + lines[4:][::-1]) + "\n"
     reading = read_text(reversed_text)
     assert len(reading.warnings) == 1 and "reverse time order" in reading.warnings[0] and reading.reversed

@@ -24,10 +24,10 @@ from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers import cards
 from pumpjack_cli.readers.cards import delimited, parse_card_columns
 
-from helpers import REPO_ROOT
+from helpers import INCH, SK8_CARD
 
 SK8 = load_unit("sk8-3.5-4000").geometry.mechanism()
-LINES = (REPO_ROOT / "samples" / "sk8-3.5-4000-card.csv").read_text(encoding="utf-8").splitlines()
+LINES = SK8_CARD.read_text(encoding="utf-8").splitlines()
 COMMENTS, HEADER, ROWS = LINES[:3], LINES[3], LINES[4:]
 KINDS = ("time", "position", "load")
 PICKS = (0, 89, len(ROWS) - 1)
@@ -132,7 +132,7 @@ CASES += [
      "crank angles leave 180 deg of the crank's revolution without a sample"),
     ("rod-does-not-move", numeric_card("position_m,load_n", [np.full(20, 1.2), np.linspace(4e4, 5e4, 20)]),
      "the polished rod does not move (every position is 1.2 m)"),
-    ("stroke-10-percent-short", numeric_card("position_in,load_lbf", [0.9 * rod(np.linspace(0, 6.28, 90))[0] / 0.0254,
+    ("stroke-10-percent-short", numeric_card("position_in,load_lbf", [0.9 * rod(np.linspace(0, 6.28, 90))[0] / INCH,
                                                                       np.full(90, 9e3)]),
      "differs from the unit's exact stroke 114.7 in by -10.0 %"),
     ("reversed-against-time", numeric_card("time_s,position_m,load_kN", [np.arange(len(ROWS)) * 0.03,
