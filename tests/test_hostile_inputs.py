@@ -6,7 +6,7 @@ written wrongly, bad options, output targets that will fail, and standard output
 closed, full or cut. Each case checks the exit code, a single ``pumpjack: error:`` line
 on stderr that names the file, field or option, no traceback, empty stdout, and that a
 pre-existing output file is left untouched. (Card files have their own module,
-``tests/test_card_hostile.py``.)
+``tests/readers/cards/test_card_hostile.py``.)
 """
 
 from __future__ import annotations

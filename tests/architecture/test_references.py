@@ -41,7 +41,6 @@ ANCHOR = re.compile(r'^<a id="([^"]+)"></a>\s*\n\*\*\[([^\]]+)\]\*\*', re.MULTIL
 SEED_NUMBER = re.compile(r"\bseeds?[\s_-]*\d{3}\b", re.IGNORECASE)
 
 
-
 def is_key(candidate: str) -> bool:
     """A bracketed word is a citation key if it has a digit or two upper-case letters."""
     return any(c.isdigit() for c in candidate) or sum(c.isupper() for c in candidate) >= 2

@@ -25,7 +25,6 @@ import pytest
 from helpers import CARD_UNITS, REPO_ROOT, sample_card
 
 
-
 def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
     """``count`` cards of the bundled units (sample cards with scaled swing, noise and speed):
     (well, unit, card file name, timestamp) rows."""

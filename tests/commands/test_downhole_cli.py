@@ -22,7 +22,8 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY, STEEL_DENSITY
 from pumpjack_cli.core.rods.downhole import pump_card
 from pumpjack_cli.core.rods.string import RodString
 
-from helpers import BARREL, CARD_UNITS, INCH, LB_PER_FT, POUND_FORCE, PSI, RP11L_TABLE_4_1, SK8, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, sample_card, series
+from helpers import (BARREL, CARD_UNITS, INCH, LB_PER_FT, POUND_FORCE, PSI, RP11L_TABLE_4_1, SK8, SK8_FLUID_DENSITY,
+                     SK8_PUMP_DEPTH, sample_card, series)
 
 #: The 1, 7/8 and 3/4 in rods (the 25, 22 and 19 mm rods of SK8) of RP 11L Table 4.1 ([API11L]).
 SK8_ROD_SIZES = (1.0, 0.875, 0.75)

@@ -18,7 +18,6 @@ from pumpjack_cli.readers.cards import read_card
 from helpers import FOOT, HORSEPOWER, SK8
 
 
-
 @pytest.fixture
 def unit_file(tmp_path, sk8_toml):
     """Write a copy of the SK8 unit with one line replaced; returns its path."""

@@ -19,7 +19,6 @@ from pumpjack_cli.core.constants import STANDARD_GRAVITY
 from helpers import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, PSI, SK8, series
 
 
-
 C114 = ("predict", "c-114d-133-54", "--spm", "10", "--damping", "0.1")
 SK8_COUPLED = ("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--damping", "0.1", "--samples", "256")
 

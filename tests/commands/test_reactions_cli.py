@@ -21,7 +21,6 @@ from pumpjack_cli.readers.cards import read_card
 from helpers import INCH, POUND_FORCE, SK8
 
 
-
 def library(card, steps=360):
     """The rational mechanism on the card at the card's own speed (its time stamps take
     precedence over the drive's rated speed)."""

@@ -18,7 +18,6 @@ import pytest
 from helpers import FOOT, HORSEPOWER, KILOGRAM_FORCE, POUND_FORCE, REPO_ROOT, SK8_CARD, SK8_TOML, sample_card, series
 
 
-
 @pytest.fixture(scope="module")
 def torque(run_card_json):
     """`pumpjack torque UNIT --card CARD ...` run once per argument list."""

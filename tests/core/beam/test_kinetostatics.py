@@ -26,7 +26,6 @@ from pumpjack_cli.errors import ConfigError
 from helpers import BEAM_UNITS, REPO_ROOT
 
 
-
 def unit(name: str):
     config = load_unit(name)
     return config.geometry.spatial(name), config.masses.model()

@@ -205,7 +205,6 @@ def test_config_deviations_and_bounds():
         Deviations(pitman_length="80 cm")
 
 
-
 @pytest.mark.parametrize("field", ["youngs_modulus", "shear_modulus", "area", "inplane_inertia",
                                    "outofplane_inertia", "torsion_constant"])
 def test_negative_stiffness_is_rejected(field):

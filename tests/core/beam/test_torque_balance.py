@@ -1,7 +1,7 @@
 """Balance optimisers on small cases solved by hand, and the counterweight placement.
 
 The bundled units with their sample cards are checked against brute-force scans in
-tests/test_torque_units.py.
+tests/core/beam/test_torque_bundled_units.py.
 """
 
 from __future__ import annotations

@@ -111,7 +111,6 @@ def test_exact_torque_is_affine_in_load_speed_squared_and_acceleration(name):
         assert np.max(np.abs(basis.torque(w, omega, alpha) - direct)) < 1e-10 * np.max(np.abs(direct))
 
 
-
 def test_exact_torque_basis_in_blocks_is_the_whole_grid(monkeypatch):
     """A grid longer than a quarter of the kinetostatics' BLOCK is solved block by block
     (only the torques kept: bounded memory); the responses are those of one batch, to the bit."""

@@ -33,7 +33,6 @@ from pumpjack_cli.errors import DynamicsError
 from helpers import RPM
 
 
-
 @pytest.fixture(scope="module")
 def solution(sk8_machine):
     return steady_state(sk8_machine, crank_grid(720))

@@ -30,7 +30,6 @@ from helpers import SK8_CRANK_SPEED, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, sk8_rod_
 PERIOD = 2 * np.pi / SK8_CRANK_SPEED
 
 
-
 @pytest.mark.parametrize("anchored", [True, False])
 def test_surface_work_is_fluid_load_times_net_stroke_plus_damping(sk8_rods, sk8_pump, anchored):
     # Full pump: work on the fluid = F_o x net plunger stroke (liquid discharged / A_p).

@@ -33,7 +33,6 @@ from pumpjack_cli.core.rods.string import RodString
 from helpers import SK8_CRANK_SPEED, SK8_FLUID_DENSITY, sk8_rod_position
 
 
-
 def _chain(rods: RodString, omega: np.ndarray, c: float):
     """Gibbs' transfer matrix (A, B; C, D) of the whole string per angular frequency (arrays)."""
     a_, b_, c_, d_ = (np.ones_like(omega, dtype=complex), np.zeros_like(omega, dtype=complex),

@@ -31,7 +31,6 @@ from pumpjack_cli.core.well import WellLoad, buoyant_weight, fluid_load
 from helpers import SK8_CRANK_SPEED, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, sk8_rod_position
 
 
-
 @pytest.mark.parametrize("anchored", [True, False])
 def test_full_pump_at_very_low_speed_gives_the_static_card(sk8_rods, sk8_pump, anchored):
     # 0.0006 strokes/min, nu = 0.02: inertia and damping forces (c m v, v < 0.1 mm/s) are

@@ -21,7 +21,6 @@ from pumpjack_cli.errors import DownholeError
 from pumpjack_cli.core.constants import STANDARD_GRAVITY as G
 
 
-
 def rectangle_card(samples=400, stroke=2.0, fluid_load=10e3, unload_fraction=1.0, pickup=0.02):
     """Harmonic plunger p = S/2 (1 - cos theta); load F_o from theta = 2 pi pickup until the
     plunger has come down to `unload_fraction` of the stroke (fluid pound below 1)."""

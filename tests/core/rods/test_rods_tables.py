@@ -18,7 +18,6 @@ from pumpjack_cli.errors import DownholeError, PumpjackError
 from helpers import FOOT, INCH, POUND_FORCE, POUND_MASS
 
 
-
 def test_metric_designations_match_the_inch_sizes():
     for millimetres, name in ((16, "5/8 in"), (19, "3/4 in"), (22, "7/8 in"), (25, "1 in"), (29, "1-1/8 in")):
         assert steel_rod(millimetres * 1e-3).name == name

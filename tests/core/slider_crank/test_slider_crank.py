@@ -27,12 +27,12 @@ from pumpjack_cli.core.slider_crank.geometry import SliderCrank, check_slider_cr
 from pumpjack_cli.core.slider_crank.mechanism import approximate_acceleration, exact_motion, law_errors, law_methods, series_coefficients, slider_inertia_laws
 from pumpjack_cli.errors import GeometryError
 
-from helpers import UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH
+from helpers import RPM, UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH
 
 # The UNB-600A drill pump of [InertiaUNB600A]: realistic proportions.
 R_SEED, L2_SEED = UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH
 LAMBDA_SEED = R_SEED / L2_SEED
-OMEGA = 65 * 2 * math.pi / 60  # 1/s, 65 rpm (the speed cancels in every ratio below)
+OMEGA = 65 * RPM  # 1/s, 65 rpm (the speed cancels in every ratio below)
 
 
 def centric_acceleration(r: float, l: float, phi: np.ndarray, omega: float) -> np.ndarray:
