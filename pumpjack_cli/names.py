@@ -7,7 +7,7 @@ take their quantity and description from here by name, so one name has one meani
 every command. A family is written with placeholders in braces, each a key of
 :data:`VOCABULARY`: ``{extreme}_rod_load`` is ``max_rod_load`` ("largest polished-rod
 load") and ``min_rod_load``. The output-name sections of ``docs/glossary.md`` are
-generated from this catalogue (:func:`glossary_sections`; ``tests/test_glossary.py``
+generated from this catalogue (:func:`glossary_sections`; ``tests/architecture/test_glossary.py``
 compares them).
 
 Adding an output name is one entry here (``docs/architecture.md``). Pure Python: the

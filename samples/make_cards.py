@@ -1,7 +1,7 @@
 """Make the sample dynamometer cards in samples/ with the predictive wave model of `pumpjack predict`.
 
 Run from the repository root: ``python samples/make_cards.py`` rewrites
-``samples/<unit>-card.csv`` for every unit below; ``tests/test_cards.py`` checks that
+``samples/<unit>-card.csv`` for every unit below; ``tests/core/test_card_placement.py`` checks that
 the committed files are exactly what this script makes.
 
 Model (:func:`pumpjack_cli.core.rods.predict.predict_cards`, docs/predict.md): the

@@ -6,7 +6,7 @@ written wrongly, bad options, output targets that will fail, and standard output
 closed, full or cut. Each case checks the exit code, a single ``pumpjack: error:`` line
 on stderr that names the file, field or option, no traceback, empty stdout, and that a
 pre-existing output file is left untouched. (Card files have their own module,
-``tests/test_card_hostile.py``.)
+``tests/readers/cards/test_card_hostile.py``.)
 """
 
 from __future__ import annotations
@@ -20,10 +20,9 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-SK8 = ROOT / "configs" / "sk8-3.5-4000.toml"
-SK8_CARD = ROOT / "samples" / "sk8-3.5-4000-card.csv"
-UNB = ROOT / "configs" / "unb-600a.toml"
+from helpers import REPO_ROOT, SK8_CARD, SK8_TOML
+
+UNB = REPO_ROOT / "configs" / "unb-600a.toml"
 
 #: Every beam-unit command, as a function of the unit argument.
 COMMANDS = {
@@ -71,7 +70,7 @@ def _write(name: str, content: bytes):
     return make
 
 
-SK8_TEXT = SK8.read_text(encoding="utf-8")
+SK8_TEXT = SK8_TOML.read_text(encoding="utf-8")
 FILES = {
     "directory": (lambda tmp: tmp, "is a directory"),
     "fifo": (_fifo, "is a FIFO"),
@@ -278,7 +277,7 @@ def test_output_targets_checked_before_anything_is_written(run_cli, tmp_path, mo
     pre = tmp_path / "pre.csv"
     pre.write_text("precious\n")
     argv, fragment = TARGETS[case]
-    unit = str(UNB) if command == "inertia-error" else str(SK8)
+    unit = str(UNB) if command == "inertia-error" else str(SK8_TOML)
     code, out, err = run_cli(*COMMANDS[command](unit), *argv)
     one_line_error(code, out, err, fragment)
     assert pre.read_text() == "precious\n"
@@ -311,7 +310,7 @@ def _script_path() -> str:
 
 
 def _script(argv, **kwargs):
-    return subprocess.run([_script_path(), *map(str, argv)], cwd=ROOT, timeout=120, **kwargs)
+    return subprocess.run([_script_path(), *map(str, argv)], cwd=REPO_ROOT, timeout=120, **kwargs)
 
 
 @pytest.mark.parametrize("fmt", ["csv", "json", "table"])
@@ -326,7 +325,7 @@ def test_full_stdout_is_one_line(fmt):
 def test_closed_stdout_is_one_line(fmt):
     script = _script_path()
     done = subprocess.run(f"{script} kinematics sk8-3.5-4000 --steps 20 -f {fmt} >&-", shell=True,
-                          capture_output=False, stderr=subprocess.PIPE, cwd=ROOT, timeout=120)
+                          capture_output=False, stderr=subprocess.PIPE, cwd=REPO_ROOT, timeout=120)
     err = done.stderr.decode()
     assert done.returncode == 2 and err == "pumpjack: error: standard output is closed: give --output FILE\n", err
 
@@ -335,7 +334,7 @@ def test_closed_stdout_is_one_line(fmt):
 def test_broken_pipe_is_quiet(fmt):
     """The reader takes 10 bytes and closes the pipe: exit code 1, nothing on stderr."""
     process = subprocess.Popen([_script_path(), "kinematics", "sk8-3.5-4000", "--steps", "20000", "-f", fmt],
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=ROOT)
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=REPO_ROOT)
     process.stdout.read(10)
     process.stdout.close()
     err = process.stderr.read()
@@ -380,7 +379,7 @@ def test_an_output_onto_an_input_is_refused_and_the_input_kept(run_cli, tmp_path
     symbolic link) would replace that input: refused, the file left as it was."""
     card, unit = tmp_path / "card.csv", tmp_path / "unit.toml"
     card.write_bytes(SK8_CARD.read_bytes())
-    unit.write_bytes(SK8.read_bytes())
+    unit.write_bytes(SK8_TOML.read_bytes())
     (tmp_path / "link.csv").symlink_to(card)
     for target, kind in ((card, "card file"), (tmp_path / "link.csv", "card file"), (unit, "unit file")):
         named = target.with_suffix(".png") if option == "--plot" else target
@@ -388,7 +387,7 @@ def test_an_output_onto_an_input_is_refused_and_the_input_kept(run_cli, tmp_path
             named.symlink_to(target)
         code, out, err = run_cli("torque", unit, "--card", card, option, named, "-f", "csv")
         one_line_error(code, out, err, f"is the {kind} this run read")
-        assert card.read_bytes() == SK8_CARD.read_bytes() and unit.read_bytes() == SK8.read_bytes()
+        assert card.read_bytes() == SK8_CARD.read_bytes() and unit.read_bytes() == SK8_TOML.read_bytes()
         if option == "--plot":
             named.unlink()
     assert sorted(path.name for path in tmp_path.iterdir()) == ["card.csv", "link.csv", "unit.toml"]

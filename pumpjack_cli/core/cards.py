@@ -46,7 +46,7 @@ FIT_WARNING = 0.02
 #: (the rod string's stress waves) below 0.06 %: six leave 0.12 % RMS of omega, and a quarter
 #: of alpha's RMS (the 7th harmonic and the waves), unfitted. Few enough: Gaussian position
 #: noise sigma on a 180-sample card passes into omega as 5.5 sigma/S RMS and into alpha as
-#: 24 sigma/S omega^2 (S the stroke; the least-squares covariance, tests/test_card_time.py),
+#: 24 sigma/S omega^2 (S the stroke; the least-squares covariance, tests/core/test_card_time.py),
 #: against about 2.6 and 7.7 for four harmonics and 8.4 and 47 for eight: a dynamometer
 #: resolving 1e-4 S gives omega to 0.06 % and alpha to 0.24 % of omega^2.
 HARMONICS = 6

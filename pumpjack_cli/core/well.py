@@ -279,7 +279,7 @@ def annulus_drag_factor(diameter_ratio: np.ndarray | float) -> np.ndarray:
     Laminar drag per unit length of a rod moving at v along the axis of a tube, when
     the rod displaces its own volume through the annulus (closed lower end), is
     2 pi mu v K(m); derived in ``docs/dynamics.md`` (Couette-Poiseuille flow; checked
-    numerically by ``tests/test_well.py``).
+    numerically by ``tests/core/test_well.py``).
 
     Parameters
     ----------

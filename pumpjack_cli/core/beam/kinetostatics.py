@@ -283,7 +283,7 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
 
     The residual of all 24 equations is then evaluated link by link and reported:
     max(|sum F| / F_ref, |sum M| / (F_ref L_ref)) with F_ref the largest applied force
-    and L_ref = K + A the size of the unit. ``tests/test_kinetostatics.py`` assembles the
+    and L_ref = K + A the size of the unit. ``tests/core/beam/test_kinetostatics.py`` assembles the
     full 24 x 20 matrix independently, checks its rank (20) and this solution against it.
 
     References

@@ -1,0 +1,122 @@
+"""Every `pumpjack` command shown in the README and docs/ runs as written.
+
+The commands are taken from the documents' shell blocks (a `$ ` prompt and trailing
+comments dropped, continued lines joined); one whose arguments are placeholders
+(UNIT, FILE, NU, ...) or name files that are not in the repository (a field manifest, a
+cluster address) is skipped. Output and plot files go to a temporary folder, so the
+documents' own figures are left alone; a pipeline `pumpjack ... | pumpjack ...` feeds the
+first command's standard output to the second.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+import shlex
+import sys
+from pathlib import Path
+
+import pytest
+
+from helpers import REPO_ROOT
+
+DOCUMENTS = [REPO_ROOT / "README.md", *sorted((REPO_ROOT / "docs").glob("*.md"))]
+#: Options whose value is a file the command writes.
+OUTPUTS = ("--plot", "-o", "--output")
+PLACEHOLDER = re.compile(r"^(?:[A-Z][A-Z_]*|\[.*|.*\|.*)$")
+
+
+def _commands() -> list[tuple[str, str]]:
+    found = []
+    for path in DOCUMENTS:
+        for language, block in re.findall(r"```([\w-]*)\n(.*?)```", path.read_text(encoding="utf-8"), re.S):
+            if language not in ("", "sh", "bash", "console"):
+                continue
+            for line in block.replace("\\\n", " ").splitlines():
+                text = line.strip().removeprefix("$ ")
+                if text.startswith("pumpjack "):
+                    found.append((path.name, text))
+    return found
+
+
+def _stages(text: str) -> list[list[str]] | None:
+    """The pumpjack stages of a pipeline as argument lists, or None when it cannot run here."""
+    stages = []
+    for part in text.split(" #")[0].split("|"):
+        words = shlex.split(part)
+        if not words:
+            return None
+        if words[0] != "pumpjack":
+            continue  # a shell filter (cut, head) after the command
+        words = words[1:words.index(">")] if ">" in words else words[1:]
+        for i, word in enumerate(words):
+            previous = words[i - 1] if i else ""
+            if previous in OUTPUTS:
+                continue
+            if PLACEHOLDER.match(word) or word.startswith("tcp://"):
+                return None
+            if re.search(r"\.(csv|toml|yaml|yml|json|sqlite)$", word) and not (REPO_ROOT / word).exists():
+                return None
+        stages.append(words)
+    return stages or None
+
+
+CASES = [(name, text, _stages(text)) for name, text in _commands()]
+RUNNABLE = [(name, text, stages) for name, text, stages in CASES if stages]
+
+
+def test_the_documents_show_commands_that_run_here():
+    assert len(RUNNABLE) >= 12 and {name for name, _, _ in RUNNABLE} >= {"README.md", "torque.md", "downhole.md"}
+
+
+@pytest.mark.parametrize(("name", "text", "stages"), RUNNABLE, ids=[f"{n}: {t[:60]}" for n, t, _ in RUNNABLE])
+def test_a_documented_command_runs(run_cli, tmp_path, monkeypatch, name, text, stages):
+    monkeypatch.chdir(REPO_ROOT)
+    out = None
+    for words in stages:
+        argv = [str(tmp_path / Path(word).name) if i and words[i - 1] in OUTPUTS else word
+                for i, word in enumerate(words)]
+        if out is not None:
+            monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(out.encode("utf-8"))))
+        code, out, err = run_cli(*argv)
+        assert code == 0, f"{name}: {text}: {err}"
+        assert "error" not in err, err
+
+
+#: A summary line of the terminal table: name, value, unit.
+SUMMARY_LINE = re.compile(r"^([a-z][a-z0-9_]*)\s+(-?\d[\d.]*(?:e[+-]?\d+)?)\s+(\S+)(?:\s|$)")
+
+
+def _shown_outputs() -> list[tuple[str, str, list[str], dict[str, tuple[str, str]]]]:
+    """(document, command, its argument list, the summary lines it shows) of each console
+    example that prints a table."""
+    found = []
+    for path in DOCUMENTS:
+        for language, block in re.findall(r"```([\w-]*)\n(.*?)```", path.read_text(encoding="utf-8"), re.S):
+            if language != "console":
+                continue
+            for example in re.split(r"^(?=\$ )", block, flags=re.M):
+                command, _, output = example.partition("\n")
+                stages = _stages(command.removeprefix("$ ")) if command.startswith("$ pumpjack ") else None
+                shown = {m[1]: (m[2], m[3]) for m in map(SUMMARY_LINE.match, output.splitlines()) if m}
+                if stages and len(stages) == 1 and "|" not in command and shown:
+                    found.append((path.name, command, stages[0], shown))
+    return found
+
+
+SHOWN = _shown_outputs()
+
+
+@pytest.mark.parametrize(("name", "command", "words", "shown"), SHOWN, ids=[f"{n}: {c[:60]}" for n, c, _, _ in SHOWN])
+def test_the_numbers_a_document_shows_are_printed(run_cli, tmp_path, monkeypatch, name, command, words, shown):
+    """Each summary value a document shows (name, value, unit) is what the command prints."""
+    monkeypatch.chdir(REPO_ROOT)
+    argv = [str(tmp_path / Path(word).name) if i and words[i - 1] in OUTPUTS else word for i, word in enumerate(words)]
+    code, out, err = run_cli(*argv, "-f", "table")
+    assert code == 0, err
+    printed = {m[1]: (m[2], m[3]) for m in map(SUMMARY_LINE.match, out.splitlines()) if m}
+    assert {key: printed.get(key) for key in shown} == shown
+
+
+def test_the_documents_show_numbers():
+    assert len(SHOWN) >= 3 and sum(len(shown) for *_, shown in SHOWN) >= 40

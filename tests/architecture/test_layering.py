@@ -1,0 +1,168 @@
+"""The layers hold: who imports whom, what start-up imports, and the command table.
+
+Layers (docs/architecture.md): core <- config <- analysis (run layer) <- render <- commands.
+The core imports nothing of the layers above it and no I/O or validation library; the
+file readers (readers/) import only errors, quantities and text_input of this package;
+commands never import each other; ``--help``, ``--version`` and ``units`` import
+neither numpy nor a unit model.
+"""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from pumpjack_cli.cli import COMMANDS, command_function
+
+from helpers import REPO_ROOT
+
+PACKAGE = REPO_ROOT / "pumpjack_cli"
+
+
+def _imports(path: Path) -> set[str]:
+    """Absolute module names a file imports (relative imports resolved against its package)."""
+    package = path.relative_to(REPO_ROOT).with_suffix("").parts[:-1]
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            found |= {alias.name for alias in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            base = list(package[: len(package) - node.level + 1]) if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            found.add(module)
+            found |= {f"{module}.{alias.name}" for alias in node.names}
+    return found
+
+
+def _modules(folder: str) -> list[Path]:
+    return sorted((PACKAGE / folder).rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", _modules("commands"), ids=lambda p: p.name)
+def test_commands_never_import_each_other(path):
+    others = {f"pumpjack_cli.commands.{p.stem}" for p in _modules("commands") if p != path and p.stem != "__init__"}
+    assert not _imports(path) & others
+
+
+FORBIDDEN = {
+    "core": ("pumpjack_cli.config", "pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands",
+             "pumpjack_cli.cli", "pumpjack_cli.options", "pumpjack_cli.readers", "pydantic", "typer", "rich"),
+    "config": ("pumpjack_cli.analysis", "pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli",
+               "pumpjack_cli.options", "typer", "rich"),
+    "analysis": ("pumpjack_cli.render", "pumpjack_cli.commands", "pumpjack_cli.cli", "pumpjack_cli.options",
+                 "typer", "rich"),
+}
+
+
+@pytest.mark.parametrize("layer,path", [(layer, p) for layer in FORBIDDEN for p in _modules(layer)],
+                         ids=lambda x: x if isinstance(x, str) else x.name)
+def test_layers_import_only_downwards(layer, path):
+    bad = {name for name in _imports(path) if name.startswith(FORBIDDEN[layer])}
+    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
+
+
+#: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other.
+READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cli.text_input", "pumpjack_cli.readers")
+
+
+@pytest.mark.parametrize("path", _modules("readers"), ids=lambda p: p.name)
+def test_readers_import_only_errors_quantities_and_text_input(path):
+    bad = {name for name in _imports(path) if name.startswith(("pumpjack_cli", "pydantic", "typer", "rich"))
+           and not name.startswith(READERS_IMPORT)}
+    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
+
+
+@pytest.mark.parametrize("path", sorted((REPO_ROOT / "tests").rglob("test_*.py")),
+                         ids=lambda p: p.relative_to(REPO_ROOT / "tests").as_posix())
+def test_tests_do_not_import_command_modules(path):
+    assert not {name for name in _imports(path) if name.startswith("pumpjack_cli.commands")}
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"]])
+def test_startup_imports_no_numpy_and_no_unit_model(argv):
+    probe = (
+        "import sys, io, contextlib\n"
+        "from pumpjack_cli.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    code = main({argv!r})\n"
+        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pumpjack_cli.config.beam_unit',\n"
+        "                           'pumpjack_cli.config.slider_crank') if m in sys.modules)\n"
+        "print(code, heavy)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "0 []"
+
+
+@pytest.mark.parametrize("name", list(COMMANDS))
+def test_command_summary_is_the_docstring_first_line(name):
+    found = command_function(name)
+    text = found.info.help if hasattr(found, "info") else found.__doc__  # a command group (typer app) or a function
+    assert COMMANDS[name][2] == text.splitlines()[0]
+
+
+def test_every_package_is_listed_for_installation():
+    listed = set(tomllib.loads((REPO_ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
+    found = {".".join(p.parent.relative_to(REPO_ROOT).parts) for p in PACKAGE.rglob("__init__.py")}
+    found.add("pumpjack_cli.configs")
+    assert listed == found
+
+
+# --- the mechanism seam -------------------------------------------------------------
+
+#: Modules that are mechanisms (or build them from a unit file), or models specific to the
+#: conventional unit's six-link mechanism (spatial kinetostatics and the real mechanism), or
+#: another kind of machine (the slider-crank of drill pumps): they may read a linkage's dimensions.
+MECHANISM_MODULES = {
+    "core/beam/geometry.py", "core/beam/linkage.py",
+    "core/beam/spatial.py", "core/beam/kinetostatics.py", "core/beam/reactions.py", "core/beam/redundancy.py",
+    "config/conventional.py", "config/geometry_names.py",
+}
+#: The class I four-bar's own dimensions and helpers; everything else asks the Mechanism protocol.
+CLASS_I_ATTRIBUTES = {"front_arm", "rear_arm", "crank_radius", "pitman", "horizontal_offset", "vertical_offset",
+                      "crank_shaft", "frame_length", "pin_rates"}
+ARMS = {"front_arm", "horsehead_arm"}
+
+
+def _seam_modules() -> list[Path]:
+    return [p for p in sorted(PACKAGE.rglob("*.py")) if str(p.relative_to(PACKAGE)) not in MECHANISM_MODULES
+            and "slider_crank" not in p.parts and p.stem != "slider_crank"]
+
+
+def _names(node: ast.AST) -> set[str]:
+    return {n.attr for n in ast.walk(node) if isinstance(n, ast.Attribute)} | {
+        n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
+
+
+@pytest.mark.parametrize("path", _seam_modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor(path):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    read = sorted({f"{node.attr} (line {node.lineno})" for node in ast.walk(tree)  # a section's own field is not one
+                   if isinstance(node, ast.Attribute) and node.attr in CLASS_I_ATTRIBUTES
+                   and not (isinstance(node.value, ast.Name) and node.value.id == "self")})
+    assert not read, f"{path.relative_to(REPO_ROOT)} reads class-I dimensions: {read}; use the Mechanism protocol"
+    products = [node.lineno for node in ast.walk(tree) if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult)
+                and ({"beam_rate", "beam_rate2"} & _names(node.left) and ARMS & _names(node.right)
+                     or {"beam_rate", "beam_rate2"} & _names(node.right) and ARMS & _names(node.left))]
+    assert not products, f"{path.relative_to(REPO_ROOT)} computes a torque factor at lines {products}; ask the mechanism"
+
+
+def test_the_seam_test_sees_a_torque_factor(tmp_path):
+    """The check above fails on the pattern it forbids (a test that can fail)."""
+    tree = ast.parse("tf = unit.front_arm * m.beam_rate\nother = m.beam_rate * q.horsehead_arm\n")
+    found = [n for n in ast.walk(tree) if isinstance(n, ast.BinOp) and isinstance(n.op, ast.Mult)
+             and {"beam_rate"} & (_names(n.left) | _names(n.right)) and ARMS & (_names(n.left) | _names(n.right))]
+    assert len(found) == 2
+
+
+def test_the_core_type_checks(tmp_path):
+    """mypy over the numerical core: 0 errors (settings in pyproject.toml's [tool.mypy])."""
+    pytest.importorskip("mypy")
+    done = subprocess.run([sys.executable, "-m", "mypy", "--cache-dir", str(tmp_path / "cache"),
+                           "--config-file", str(REPO_ROOT / "pyproject.toml"), str(PACKAGE / "core")],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert done.returncode == 0, done.stdout + done.stderr

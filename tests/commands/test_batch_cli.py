@@ -1,0 +1,390 @@
+"""`pumpjack batch` as an operator runs it: a field of cards into a results store.
+
+Checked against the single-card commands (the same numbers to 1e-9 and the same error
+messages), by killing a run with SIGKILL and resuming it, by re-running it, by a real
+Dask LocalCluster on the loopback interface, and with manifests that are broken.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from helpers import CARD_UNITS, REPO_ROOT, sample_card
+
+
+def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
+    """``count`` cards of the bundled units (sample cards with scaled swing, noise and speed):
+    (well, unit, card file name, timestamp) rows."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for k in range(start, start + count):
+        unit = CARD_UNITS[k % len(CARD_UNITS)]
+        lines = sample_card(unit).read_text(encoding="utf-8").splitlines()
+        body = [line for line in lines if not line.startswith("#")]
+        data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
+        mean = data[:, 2].mean()
+        data[:, 2] = mean + rng.uniform(0.95, 1.05) * (data[:, 2] - mean) + rng.normal(0, 1e-3 * np.ptp(data[:, 2]),
+                                                                                      len(data))
+        data[:, 0] /= rng.uniform(0.97, 1.03)
+        name = f"card-{k:04d}.csv"
+        (folder / name).write_text(body[0] + "\n" + "".join(f"{t:.4f},{s:.5f},{w:.4f}\n" for t, s, w in data))
+        rows.append((f"well-{k % 5}", unit, name, f"2026-11-{1 + k // 5:02d}T00:00"))
+    return rows
+
+
+def manifest(folder: Path, rows, name: str = "manifest.csv") -> Path:
+    path = folder / name
+    path.write_text("well,unit,card,timestamp\n" + "".join(",".join(row) + "\n" for row in rows))
+    return path
+
+
+def stored(store: Path) -> dict[tuple[str, str], dict]:
+    """(card file name, analysis) -> the stored row."""
+    db = sqlite3.connect(store)
+    db.row_factory = sqlite3.Row
+    rows = {(Path(r["card"]).name, r["analysis"]): dict(r) for r in db.execute("SELECT * FROM results")}
+    db.close()
+    return rows
+
+
+def single(run_cli, folder: Path, command: str, unit: str, card: str):
+    """The single-card command's JSON document, or its error message."""
+    argv = [command, unit, "--card", str(folder / card), "-f", "json"] + (["--steps", "4"] if command == "torque" else [])
+    code, out, err = run_cli(*argv)
+    if code:
+        return err.removeprefix("pumpjack: error: ").strip()
+    return json.loads(out)["summary"]
+
+
+@pytest.mark.parametrize("part", range(4))
+def test_batch_results_equal_the_single_commands(run_cli, tmp_path, part):
+    """200 cards in four parts: every stored number equals the single command's `-f json`
+    summary to 1e-9 relative, every error the single command's message."""
+    rows = field(tmp_path, 50, seed=10 + part, start=50 * part)
+    store = tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
+    assert code == 0, err
+    results = stored(store)
+    assert len(results) == 2 * len(rows)
+    compared = 0
+    for _, unit, card, _ in rows:
+        for command in ("torque", "downhole"):
+            row, expected = results[(card, command)], single(run_cli, tmp_path, command, unit, card)
+            if isinstance(expected, str):
+                assert row["status"] == "error" and row["error"] == expected
+                continue
+            assert row["status"] == "ok", row["error"]
+            for name, value in expected.items():
+                assert row[name] == pytest.approx(value, rel=1e-9, abs=1e-12), (card, command, name)
+                compared += 1
+    assert compared > 2000
+
+
+def test_rerun_skips_what_is_done_and_adds_what_is_new(run_cli, tmp_path):
+    rows = field(tmp_path, 6)
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", manifest(tmp_path, rows[:4]), "--store", store, "--workers", "1")[0] == 0
+    first = stored(store)
+    code, out, _ = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
+    assert code == 0 and "6 cards: 2 analysed, 4 already in" in out
+    again = stored(store)
+    assert len(again) == 12 and all(again[key] == first[key] for key in first)
+    code, out, _ = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
+    assert "0 analysed, 6 already in" in out and stored(store) == again
+    code, out, _ = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1", "--balance",
+                           "min-rms")
+    assert "6 analysed" in out  # other options: other results, the old ones kept
+    assert len(stored(store)) == 12 and len(sqlite3.connect(store).execute("SELECT * FROM results").fetchall()) == 18
+
+
+def test_bad_cards_and_units_become_error_rows_with_the_single_commands_message(run_cli, tmp_path):
+    rows = field(tmp_path, 4)
+    (tmp_path / "broken.csv").write_text("when,where,what\n1,2,3\n")
+    (tmp_path / "binary.csv").write_bytes(bytes(range(256)))
+    bad = [("bad-1", "c-80d-133-48", "broken.csv", ""), ("bad-2", "c-80d-133-48", "missing.csv", ""),
+           ("bad-3", "no-such-unit", rows[0][2], ""), ("bad-4", "unb-600a", rows[0][2], ""),
+           ("bad-5", "sk8-3.5-4000", "binary.csv", "")]
+    store = tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", manifest(tmp_path, rows[:2] + bad + rows[2:]), "--store", store, "--workers",
+                             "2")
+    assert code == 0, err
+    db = sqlite3.connect(store)
+    for well, _, card, _ in rows:
+        statuses = db.execute("SELECT status FROM results WHERE well = ? AND card LIKE ?", (well, f"%{card}")).fetchall()
+        assert statuses == [("ok",), ("ok",)]
+    for well, unit, card, _ in bad:
+        for analysis in ("torque", "downhole"):
+            status, error = db.execute("SELECT status, error FROM results WHERE well = ? AND analysis = ?",
+                                       (well, analysis)).fetchone()
+            assert status == "error" and error == single(run_cli, tmp_path, analysis, unit, card)
+
+
+def test_a_run_killed_at_any_moment_resumes_with_every_card_once(tmp_path):
+    """SIGKILL in the middle of a run, then the same command again: every card and analysis
+    exactly once, none lost, none doubled."""
+    rows = field(tmp_path, 60)
+    path, store = manifest(tmp_path, rows), tmp_path / "r.sqlite"
+    script = Path(sys.executable).parent / "pumpjack"
+    if not script.is_file():
+        pytest.skip("the pumpjack console script is not installed")
+    process = subprocess.Popen([str(script), "batch", str(path), "--store", str(store), "--workers", "1"],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    count = 0
+    while time.monotonic() < deadline and process.poll() is None:
+        if store.exists():
+            try:
+                count = sqlite3.connect(store, timeout=5).execute("SELECT COUNT(*) FROM results").fetchone()[0]
+            except sqlite3.Error:
+                count = 0
+            if count >= 20:
+                break
+        time.sleep(0.02)
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait()
+    killed = sqlite3.connect(store).execute("SELECT COUNT(*) FROM results").fetchone()[0]
+    assert 0 < killed < 120 and killed % 2 == 0  # whole cards only: both analyses or none
+    done = subprocess.run([str(script), "batch", str(path), "--store", str(store), "--workers", "2"],
+                          capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    counts = sqlite3.connect(store).execute("SELECT card, analysis, COUNT(*) FROM results GROUP BY card, analysis")
+    counts = counts.fetchall()
+    assert len(counts) == 120 and all(n == 1 for _, _, n in counts)
+
+
+def test_dask_local_cluster_gives_the_local_results(run_cli, tmp_path):
+    """A real LocalCluster, two worker processes on 127.0.0.1: the same store as the local pool."""
+    distributed = pytest.importorskip("distributed")
+    rows = field(tmp_path, 12)
+    path = manifest(tmp_path, rows)
+    assert run_cli("batch", path, "--store", tmp_path / "local.sqlite", "--workers", "2")[0] == 0
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None, silence_logs=50) as cluster:
+        code, out, err = run_cli("batch", path, "--store", tmp_path / "dask.sqlite", "--scheduler",
+                                 cluster.scheduler_address)
+    assert code == 0, err
+    local, remote = stored(tmp_path / "local.sqlite"), stored(tmp_path / "dask.sqlite")
+    assert local.keys() == remote.keys() and len(local) == 24
+    for key, row in local.items():
+        other = remote[key]
+        assert {k: v for k, v in row.items() if k != "id"} == {k: v for k, v in other.items() if k != "id"}
+
+
+def test_export_and_trend(run_cli, tmp_path):
+    rows = field(tmp_path, 10)
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")[0] == 0
+    code, out, err = run_cli("batch", "export", "--store", store, "-f", "csv", "--analysis", "torque")
+    assert code == 0, err
+    exported = list(csv.DictReader(io.StringIO(out)))
+    assert len(exported) == 10 and {row["analysis"] for row in exported} == {"torque"}
+    results = stored(store)
+    for row in exported:
+        assert float(row["peak_net_torque_n_m"]) == results[(Path(row["card"]).name, "torque")]["peak_net_torque_n_m"]
+    code, out, err = run_cli("batch", "trend", "--store", store, "--well", "well-1", "-f", "json")
+    assert code == 0, err
+    trend = json.loads(out)["series"]
+    assert trend["timestamp"] == sorted(trend["timestamp"]) and len(trend["timestamp"]) == 2
+    for card, torque in zip(trend["card"], trend["peak_net_torque_n_m"]):
+        assert torque == results[(Path(card).name, "torque")]["peak_net_torque_n_m"]
+    code, out, err = run_cli("batch", "trend", "--store", store, "--well", "no-such-well")
+    assert code == 2 and "no-such-well" in err
+    for argv, fragment in ((("--analysis", "torgue"), "--analysis torgue: use one of torque, downhole"),
+                           (("--well", "no-such-well"), "--well no-such-well: no results for this well"),
+                           (("--well", "no-such-well", "--analysis", "downhole"), "no downhole results for this well")):
+        code, out, err = run_cli("batch", "export", "--store", store, *argv)
+        assert (code, out) == (2, "") and fragment in err and err.count("\n") == 1, err
+
+
+@pytest.mark.parametrize("content, fragment", [
+    ("well,unit\nw,sk8-3.5-4000\n", "needs the columns well, unit, card"),
+    ("well,unit,card,colour\nw,sk8-3.5-4000,x.csv,red\n", "unknown column 'colour'"),
+    ("well,unit,card,spm\nw,sk8-3.5-4000,x.csv,fast\n", "line 2: spm"),
+    ("well,unit,card\nw,sk8-3.5-4000\n", "line 2: 2 cells for 3 columns"),
+    ("well,unit,card\n,sk8-3.5-4000,x.csv\n", "line 2: well is empty"),
+    ("well,unit,card,counterbalance_moment\nw,sk8-3.5-4000,x.csv,95000\n", "has no unit"),
+    ("well,unit,card\nw,sk8-3.5-4000,nothing-*.csv\n", "no file matches"),
+    ("well,unit,card\n", "names no card"),
+    ("[[cards]]\nwell = 'w'\n", "unit is empty"),
+])
+def test_broken_manifests_are_refused_with_one_line(run_cli, tmp_path, content, fragment):
+    path = tmp_path / ("m.toml" if content.startswith("[[") else "m.csv")
+    path.write_text(content)
+    code, out, err = run_cli("batch", path, "--store", tmp_path / "r.sqlite")
+    assert code == 2 and out == "", err
+    assert err.startswith("pumpjack: error: ") and err.count("\n") == 1 and fragment in err, err
+
+
+def test_manifest_files_that_are_not_manifests(run_cli, tmp_path):
+    (tmp_path / "b.csv").write_bytes(bytes(range(256)))
+    for target, fragment in ((tmp_path, "directory"), (tmp_path / "none.csv", "no such file"),
+                             (tmp_path / "b.csv", "NUL")):
+        code, out, err = run_cli("batch", target, "--store", tmp_path / "r.sqlite")
+        assert code == 2 and err.count("\n") == 1 and fragment in err, err
+
+
+def test_a_store_that_is_not_a_store(run_cli, tmp_path):
+    rows = field(tmp_path, 1)
+    (tmp_path / "s.sqlite").write_text("not a database")
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", tmp_path / "s.sqlite")
+    assert code == 2 and "not a results store" in err
+    code, out, err = run_cli("batch", "export", "--store", tmp_path / "none.sqlite")
+    assert code == 2 and "no such results store" in err
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (("--method", "fancy"), "--method fancy"),
+    (("--balance", "level"), "--balance level"),
+    (("--analyses", "torque,bogus"), "unknown analysis 'bogus'"),
+    (("--analyses", ","), "--analyses"),
+    (("--store", "{tmp}/missing/r.sqlite"), "directory {tmp}/missing does not exist"),
+    (("--workers", "0"), "--workers"),
+])
+def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, argv, fragment):
+    """{tmp} is this test's temporary folder: a store in a folder that is surely missing."""
+    rows = field(tmp_path, 1)
+    argv, fragment = [arg.format(tmp=tmp_path) for arg in argv], fragment.format(tmp=tmp_path)
+    extra = () if "--store" in argv else ("--store", tmp_path / "r.sqlite")
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), *extra, *argv)
+    assert code == 2 and out == "" and err.count("\n") == 1 and fragment in err, err
+    assert not (tmp_path / "r.sqlite").exists() and not (tmp_path / "missing").exists()
+
+
+def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_path, monkeypatch):
+    """A bug that raises on one card (simulated) is recorded as that card's error; the others run."""
+    from pumpjack_cli.analysis.batch import per_card
+
+    rows = field(tmp_path, 3)
+    real = per_card._CardOnce.read
+
+    def faulty(self, linkage):
+        if self.name == rows[1][2]:
+            raise ZeroDivisionError("simulated")
+        return real(self, linkage)
+
+    monkeypatch.setattr(per_card._CardOnce, "read", faulty)
+    store = tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
+    assert code == 0, err
+    statuses = dict(sqlite3.connect(store).execute("SELECT card || analysis, status || error FROM results"))
+    assert sum(v.startswith("error") for v in statuses.values()) == 2
+    assert all("ZeroDivisionError: simulated" in v for v in statuses.values() if v.startswith("error"))
+
+
+def test_cards_whose_header_names_no_unit_need_card_units(run_cli, tmp_path):
+    """A card with a bare 'time,position,load' header (loads in N) is an error row naming
+    the column, as the single command prints it; with --card-units si the same card gives
+    the results of its kN twin (a different store, the options differ)."""
+    rows = field(tmp_path, 1)
+    named = tmp_path / rows[0][2]
+    lines = named.read_text().splitlines()
+    bare = tmp_path / "bare.csv"
+    bare.write_text("time,position,load\n" + "".join(
+        f"{t},{s},{float(w) * 1e3!r}\n" for t, s, w in (line.split(",") for line in lines[1:])))
+    table = manifest(tmp_path, [("well-b", rows[0][1], "bare.csv", rows[0][3])])
+    code, _, err = run_cli("batch", "run", table, "--store", tmp_path / "refused.sqlite", "--workers", "1")
+    assert code == 0, err
+    refused = stored(tmp_path / "refused.sqlite")
+    for analysis in ("torque", "downhole"):
+        assert refused[("bare.csv", analysis)]["status"] == "error"
+        assert refused[("bare.csv", analysis)]["error"] == single(run_cli, tmp_path, analysis, rows[0][1], "bare.csv")
+        assert "column 1 'time' names no unit" in refused[("bare.csv", analysis)]["error"]
+    both = manifest(tmp_path, [rows[0], ("well-b", rows[0][1], "bare.csv", rows[0][3])], "both.csv")
+    code, _, err = run_cli("batch", "run", both, "--store", tmp_path / "si.sqlite", "--workers", "1",
+                           "--card-units", "si")
+    assert code == 0, err
+    given = stored(tmp_path / "si.sqlite")
+    for analysis in ("torque", "downhole"):
+        a, b = given[("bare.csv", analysis)], given[(rows[0][2], analysis)]
+        assert a["status"] == b["status"] == "ok"
+        numbers = [name for name, value in b.items() if isinstance(value, float)]
+        assert len(numbers) > 5
+        assert all(math.isclose(a[name], b[name], rel_tol=1e-9, abs_tol=1e-9) for name in numbers)
+
+
+def test_a_unit_named_with_the_gost_comma_is_keyed_by_the_bundled_files_content(tmp_path):
+    """`SK8-3,5-4000` in a manifest (a quoted CSV cell) is the bundled sk8-3.5-4000 unit for
+    its content key too, not an unreadable name whose key never changes."""
+    import hashlib
+
+    from pumpjack_cli.analysis.batch.keys import unit_digest
+    from pumpjack_cli.readers.manifest import read_manifest
+
+    rows = field(tmp_path, 1)
+    jobs = read_manifest(manifest(tmp_path, [("well-g", '"SK8-3,5-4000"', rows[0][2], "")]))
+    expected = hashlib.sha256((REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes()).hexdigest()
+    assert [unit_digest(job.unit) for job in jobs] == [expected]
+
+
+def test_a_changed_unit_file_is_analysed_again(run_cli, tmp_path, monkeypatch):
+    """A bundled unit named with the GOST comma whose file changes (a copy in the temporary
+    folder stands for the bundled one): the re-run analyses the card again; unchanged, it
+    skips it."""
+    from pumpjack_cli.analysis.batch import per_card
+    from pumpjack_cli.readers import unit_files
+
+    copy = tmp_path / "units" / "sk8-3.5-4000.toml"
+    copy.parent.mkdir()
+    copy.write_bytes((REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_bytes())
+    monkeypatch.setattr(unit_files, "bundled_units", lambda: {"sk8-3.5-4000": copy})
+    monkeypatch.setattr(per_card, "_UNITS", {})
+    rows = field(tmp_path, 1)
+    path, store = manifest(tmp_path, [("well-g", '"SK8-3,5-4000"', rows[0][2], "")]), tmp_path / "r.sqlite"
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 1 analysed, 0 already in" in out, err
+    assert {row["status"] for row in stored(store).values()} == {"ok"}
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 0 analysed, 1 already in" in out, err
+    copy.write_text(copy.read_text(encoding="utf-8") + "# revised\n", encoding="utf-8")
+    code, out, err = run_cli("batch", path, "--store", store, "--workers", "1")
+    assert code == 0 and "1 cards: 1 analysed, 0 already in" in out, err
+    keys = sqlite3.connect(store).execute("SELECT analysis, options_sha256 FROM results").fetchall()
+    assert len(keys) == 4 and len(set(keys)) == 4
+
+
+def test_text_summary_values_are_stored_and_shown_as_text(run_cli, tmp_path, monkeypatch):
+    """A summary value that is text (a pump-condition label) gets a TEXT column, keeps its
+    text even when it looks like a number, and export and trend show it as text."""
+    from pumpjack_cli.analysis import store_views
+    from pumpjack_cli.readers.store import Store
+
+    path = tmp_path / "r.sqlite"
+    store = Store(path)
+    for number, (label, fillage) in enumerate((("full pump", 97.5), ("100", 41.0))):
+        store.add_card([{"well": "W-1", "card": f"c{number}.csv", "card_sha256": f"{number}", "unit": "sk8-3.5-4000",
+                         "timestamp": f"2026-11-2{number}", "analysis": "downhole", "options_sha256": "o",
+                         "status": "ok", "error": "", "warnings": "",
+                         "summary": {"pump_condition": label, "pump_fillage_percent": fillage}}])
+    store.close()
+    db = sqlite3.connect(path)
+    declared = {row[1]: row[2] for row in db.execute("PRAGMA table_info(results)")}
+    assert (declared["pump_condition"], declared["pump_fillage_percent"]) == ("TEXT", "REAL")
+    assert db.execute("SELECT typeof(pump_condition), typeof(pump_fillage_percent) FROM results").fetchall() == [
+        ("text", "real"), ("text", "real")]
+    code, out, err = run_cli("batch", "export", "--store", path, "-f", "json")
+    assert code == 0, err
+    series = json.loads(out)["series"]
+    assert series["pump_condition"] == ["full pump", "100"] and series["pump_fillage_percent"] == [97.5, 41.0]
+    code, out, err = run_cli("batch", "export", "--store", path, "-f", "csv")
+    assert code == 0, err
+    assert [row["pump_condition"] for row in csv.DictReader(io.StringIO(out))] == ["full pump", "100"]
+    monkeypatch.setattr(store_views, "TREND", store_views.TREND + (("pump_condition", "downhole"),))
+    code, out, err = run_cli("batch", "trend", "--store", path, "--well", "W-1", "-f", "json")
+    assert code == 0, err
+    trend = json.loads(out)
+    assert trend["series"]["pump_condition"] == ["full pump", "100"]
+    code, out, err = run_cli("batch", "trend", "--store", path, "--well", "W-1")
+    assert code == 0 and "full pump" in out, err
