@@ -25,12 +25,12 @@ from ..core.beam.card import Card
 from ..core.beam.counterbalance import (
     Counterbalance,
     counterbalance_effect,
-    counterbalance_from_masses,
     counterweight_placement,
 )
 from ..core.beam.loading import card_work, cyclic_load_factor
 from ..core.beam.torque import (
     ExactTorqueBasis,
+    TorqueComponents,
     beam_group_inertia,
     crank_group_inertia,
     exact_torque_basis,
@@ -87,18 +87,6 @@ def ratings(unit: UnitConfig) -> Ratings:
         return given if given is not None else (getattr(designation, name) if designation is not None else None)
 
     return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
-
-
-def counterbalance(unit: UnitConfig, masses) -> tuple[Counterbalance, bool]:
-    """B, M, tau of the API method and whether M is known: ``[counterbalance]`` if given,
-    else from the masses; without either the structural unbalance is taken as 0."""
-    given = unit.counterbalance
-    if given is not None:
-        return Counterbalance(given.structural_unbalance, given.moment or 0.0, given.phase), given.moment is not None
-    if masses is not None:
-        return counterbalance_from_masses(unit.geometry.mechanism(), masses), True
-    raise PumpjackError(f"unit {unit.name} has neither [counterbalance] nor [masses]: give at least "
-                        f"[counterbalance] structural_unbalance (and moment for the present net torque)")
 
 
 @dataclass(frozen=True)
@@ -181,7 +169,7 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     if method == "exact" and masses is None:
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
                             f"(--method api needs only [counterbalance])")
-    balance, moment_known = counterbalance(unit, masses)
+    balance, moment_known = unit.counterbalance_model()
     out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid

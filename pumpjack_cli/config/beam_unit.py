@@ -24,6 +24,7 @@ from .unit_classes import UNIT_CLASSES, unit_class
 from .well import Well
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.card import Card
+    from ..core.beam.counterbalance import CounterbalanceModel
     from ..core.beam.masses import MassModel
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
@@ -230,6 +231,15 @@ class UnitConfig(Section):
         if counterweight_radius is not None and not 0 <= counterweight_radius <= 5:
             raise ConfigError(f"--counterweight-radius: {counterweight_radius} m is outside 0..5 m")
         return self.masses.model(counterweight_count, counterweight_radius)
+
+    def counterbalance_model(self) -> tuple[CounterbalanceModel, bool]:
+        """The structure and counterbalance of the unit's kind (its geometry's ``counterbalance()``)
+        and whether the present counterbalance is known."""
+        try:
+            return self.geometry.counterbalance(self.counterbalance,
+                                                self.masses.model() if self.masses is not None else None)
+        except ConfigError as exc:
+            raise ConfigError(f"unit {self.name}: {exc}") from None
 
     def rigid_well_load(self) -> WellLoad:
         """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod

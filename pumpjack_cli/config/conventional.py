@@ -16,8 +16,11 @@ from ..errors import ConfigError, GeometryError
 from .geometry_names import ROTATION_SIGNS, canonical_geometry
 from .quantities import Length, Section, at_least
 
-if TYPE_CHECKING:  # the spatial model is imported when a command uses it
+if TYPE_CHECKING:  # the core's models are imported when a command uses them
+    from ..core.beam.counterbalance import Counterbalance
+    from ..core.beam.masses import MassModel
     from ..core.beam.spatial import SpatialLinkage
+    from .beam_unit import CounterbalanceConfig
 
 
 class ConventionalGeometry(Section):
@@ -67,6 +70,19 @@ class ConventionalGeometry(Section):
         return beam_linkage(self.front_arm, self.rear_arm, self.crank_radius, self.pitman, self.horizontal_offset,
                             self.vertical_offset, ROTATION_SIGNS[self.rotation], self.crank_half_spacing,
                             self.equalizer_half_length)
+
+    def counterbalance(self, given: CounterbalanceConfig | None, masses: MassModel | None) -> tuple[Counterbalance, bool]:
+        """Crank counterweights (B, M, tau of the API method) and whether M is known: the unit
+        file's ``[counterbalance]`` if given, else from the link masses
+        (:func:`~pumpjack_cli.core.beam.counterbalance.counterbalance_from_masses`)."""
+        from ..core.beam.counterbalance import Counterbalance, counterbalance_from_masses
+
+        if given is not None:
+            return Counterbalance(given.structural_unbalance, given.moment or 0.0, given.phase), given.moment is not None
+        if masses is not None:
+            return counterbalance_from_masses(self.mechanism(), masses), True
+        raise ConfigError("neither [counterbalance] nor [masses]: give at least [counterbalance] structural_unbalance "
+                          "(and moment for the present net torque)")
 
     def spatial(self, source: str = "unit") -> SpatialLinkage:
         """The spatial model; needs crank_half_spacing and equalizer_half_length."""

@@ -77,9 +77,7 @@ def _unit(job: Job):
 
 def _with_moment(unit: UnitConfig, moment: float):
     """The unit whose API counterbalance moment is ``moment`` [N·m] (B and tau kept)."""
-    from ..torque import counterbalance
-
-    balance, _ = counterbalance(unit, unit.mass_model() if unit.masses is not None else None)
+    balance, _ = unit.counterbalance_model()
     section = {"structural_unbalance": balance.structural_unbalance, "moment": moment, "phase": balance.offset}
     data = unit.model_dump()
     data["counterbalance"] = section
