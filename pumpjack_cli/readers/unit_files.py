@@ -68,6 +68,28 @@ def _depth(value: Any) -> int:
     return 0
 
 
+def _flow_depth(text: str) -> int:
+    """The deepest nesting of YAML flow collections (``[``, ``{``) outside quotes and comments:
+    the YAML parser's scanner is quadratic in it, so a file nested far deeper than a unit file
+    can be is refused before it is parsed (``[`` x 5000 took seconds)."""
+    depth = deepest = 0
+    quote = ""
+    for line in text.splitlines():
+        for char in line:
+            if quote:
+                quote = "" if char == quote else quote
+            elif char in "'\"":
+                quote = char
+            elif char == "#":
+                break
+            elif char in "[{":
+                depth += 1
+                deepest = max(deepest, depth)
+            elif char in "]}":
+                depth -= 1
+    return deepest
+
+
 def _parse_text(path: Path, text: str) -> Any:
     suffix = path.suffix.lower()
     formats = {".toml": "TOML", ".json": "JSON", ".yaml": "YAML", ".yml": "YAML"}
@@ -82,6 +104,8 @@ def _parse_text(path: Path, text: str) -> Any:
         else:
             import yaml
 
+            if _flow_depth(text) > 4 * MAX_DEPTH:
+                raise RecursionError
             try:
                 data = yaml.load(text, Loader=_yaml_loader())  # noqa: S506 - a SafeLoader subclass
             except yaml.YAMLError as exc:

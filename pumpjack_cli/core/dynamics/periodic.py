@@ -40,6 +40,12 @@ SUMMARY_STEPS = 3600
 MAX_ITERATIONS = 30
 #: The crank counts as stalled below this fraction of the mean-speed estimate.
 STALL_FRACTION = 1e-3
+#: Tolerance of the first, coarse periodic solution: it tells a load beyond the motor's
+#: pull-out torque before the fine one is sought, and gives the fine one its start speed.
+COARSE_RTOL = 1e-6
+#: A coarse solution's motor torque may exceed the pull-out torque by this share before the
+#: load is refused: its torque is off by about rtol / slip (1e-6 / 0.03), far less.
+PULL_OUT_MARGIN = 1e-3
 #: The reduced inertia must stay above this fraction of its maximum (it vanishes only
 #: at a dead position of a machine without crank and drive inertia: no solution there).
 INERTIA_FLOOR = 1e-6
@@ -402,6 +408,12 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
             f"the load needs a mean crank torque of {work / (2 * np.pi):.6g} N·m, more than the motor's linear "
             f"characteristic gives even at standstill ({a_u:.6g} N·m at the crank): the motor is too weak"
         )
+    if rtol < COARSE_RTOL:
+        _, coarse, first = _shoot(_Shooter(machine, strokes, COARSE_RTOL, guess, work), guess, max_iterations)
+        theta = crank_grid(SUMMARY_STEPS)
+        motor = np.asarray(machine.drive_torque(_evaluate(strokes, coarse, theta)[0])) / machine.drive_ratio
+        _check_pull_out(machine, theta, motor, 1.0 + PULL_OUT_MARGIN)
+        guess = first.start_speeds[-1]
     shooter = _Shooter(machine, strokes, rtol, guess, work)
     end, solutions, convergence = _shoot(shooter, guess, max_iterations)
     period = float(end[1])
@@ -444,6 +456,23 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
     )
 
 
+def _check_pull_out(machine: Machine, theta: np.ndarray, torque: np.ndarray, margin: float = 1.0) -> float:
+    """The largest |motor torque| [N·m] over the crank angles [rad]; a DynamicsError when it is
+    beyond ``margin`` times the motor's pull-out torque (the linear characteristic's limit)."""
+    motor = machine.motor
+    t_max, t_min = extremes(theta, torque)
+    peak = max(t_max.value, -t_min.value)
+    if peak > margin * motor.breakdown_torque:
+        where = t_max if t_max.value >= -t_min.value else t_min
+        raise DynamicsError(
+            f"the motor is too weak: the load needs {where.value:.1f} N·m at the motor shaft "
+            f"({where.value / motor.rated_torque:.2f} x rated) at crank angle {np.degrees(where.crank_angle):.1f}°, "
+            f"more than its pull-out torque {motor.breakdown_torque:.1f} N·m "
+            f"({motor.breakdown_torque / motor.rated_torque:.2f} x rated {motor.rated_torque:.1f} N·m)"
+        )
+    return peak
+
+
 def _summary(machine: Machine, strokes, solutions, at, period: float, energy: float, work: float,
              convergence: Convergence) -> DynamicsSummary:
     """Extremes on a dense grid, energies, and the motor checks (pull-out is an error)."""
@@ -458,15 +487,7 @@ def _summary(machine: Machine, strokes, solutions, at, period: float, energy: fl
     p_max, p_min = extremes(theta, power)
     t_max, t_min = extremes(theta, torque)
     static_max, _ = extremes(theta, r.rod_load_torque + r.gravity_torque)
-    peak = max(t_max.value, -t_min.value)
-    if peak > motor.breakdown_torque:
-        where = t_max if t_max.value >= -t_min.value else t_min
-        raise DynamicsError(
-            f"the motor is too weak: the load needs {where.value:.1f} N·m at the motor shaft "
-            f"({where.value / motor.rated_torque:.2f} x rated) at crank angle {np.degrees(where.crank_angle):.1f}°, "
-            f"more than its pull-out torque {motor.breakdown_torque:.1f} N·m "
-            f"({motor.breakdown_torque / motor.rated_torque:.2f} x rated {motor.rated_torque:.1f} N·m)"
-        )
+    peak = _check_pull_out(machine, theta, torque)
     mean = 2.0 * np.pi / period
     return DynamicsSummary(
         start_speed=convergence.start_speeds[-1],
