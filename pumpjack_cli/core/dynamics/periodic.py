@@ -41,7 +41,9 @@ MAX_ITERATIONS = 30
 #: The crank counts as stalled below this fraction of the mean-speed estimate.
 STALL_FRACTION = 1e-3
 #: Tolerance of the first, coarse periodic solution: it tells a load beyond the motor's
-#: pull-out torque before the fine one is sought, and gives the fine one its start speed.
+#: pull-out torque in a fraction of the fine solution's time. (The fine shooting starts
+#: from the mean-torque guess, not from the coarse start speed: a secant step between two
+#: start speeds that close follows the integration's noise on a card's kinks.)
 COARSE_RTOL = 1e-6
 #: A coarse solution's motor torque may exceed the pull-out torque by this share before the
 #: load is refused: its torque is off by about rtol / slip (1e-6 / 0.03), far less.
@@ -409,11 +411,10 @@ def steady_state(machine: Machine, crank_angle: np.ndarray | None = None, *, rto
             f"characteristic gives even at standstill ({a_u:.6g} N·m at the crank): the motor is too weak"
         )
     if rtol < COARSE_RTOL:
-        _, coarse, first = _shoot(_Shooter(machine, strokes, COARSE_RTOL, guess, work), guess, max_iterations)
+        _, coarse, _ = _shoot(_Shooter(machine, strokes, COARSE_RTOL, guess, work), guess, max_iterations)
         theta = crank_grid(SUMMARY_STEPS)
         motor = np.asarray(machine.drive_torque(_evaluate(strokes, coarse, theta)[0])) / machine.drive_ratio
         _check_pull_out(machine, theta, motor, 1.0 + PULL_OUT_MARGIN)
-        guess = first.start_speeds[-1]
     shooter = _Shooter(machine, strokes, rtol, guess, work)
     end, solutions, convergence = _shoot(shooter, guess, max_iterations)
     period = float(end[1])
