@@ -25,6 +25,7 @@ from .well import Well
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.card import Card
     from ..core.beam.counterbalance import CounterbalanceModel
+    from ..core.designations import Ratings
     from ..core.beam.masses import MassModel
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
@@ -240,6 +241,23 @@ class UnitConfig(Section):
                                                 self.masses.model() if self.masses is not None else None)
         except ConfigError as exc:
             raise ConfigError(f"unit {self.name}: {exc}") from None
+
+    def ratings(self) -> Ratings:
+        """The unit's ratings: its ``designation`` (or its name when that is a designation),
+        completed or overridden by ``[rating]`` ([API11E], [GOST5866])."""
+        from ..core.designations import Ratings
+
+        text = self.designation if self.designation is not None else self.name
+        try:
+            designation = parse_designation(text)
+        except DesignationError:
+            designation = None  # a name that is no designation (a validated designation parses)
+
+        def pick(name: str) -> float | None:
+            given = getattr(self.rating, name)
+            return given if given is not None else (getattr(designation, name) if designation is not None else None)
+
+        return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
 
     def rigid_well_load(self) -> WellLoad:
         """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod
