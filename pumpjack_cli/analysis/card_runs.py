@@ -26,6 +26,7 @@ from ..core.beam.card import card_load
 from ..core.cards import PlacedCard, place_card
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
+from ..core.rods.plausibility import check_card_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
@@ -40,6 +41,8 @@ SPEED_TOLERANCE = 0.02
 FINE_STEPS = 3600
 #: Crank-angle points per time sample when a card is put on a uniform time grid.
 RESAMPLE_FACTOR = 8
+#: Crank positions on which a card's plausibility is judged.
+PLAUSIBILITY_STEPS = 360
 
 #: Crank-motion models of the card-driven analyses: constant speed; the speed and
 #: acceleration fitted to the card's time stamps; the machine's equation of motion;
@@ -57,11 +60,13 @@ class CardSource:
     units: str | None = None
     columns: Mapping[str, str] | None = None
 
-    def read(self, mechanism: Mechanism) -> PlacedCard:
-        """The card read and placed on the unit's crank-angle axis; the warnings are noted
-        (:func:`~pumpjack_cli.errors.warn`)."""
-        placed = place(read_card(self.path, units=self.units, columns=self.columns), mechanism)
-        for warning in placed.warnings:
+    def read(self, unit: UnitConfig, spm: float | None = None) -> PlacedCard:
+        """The card read, placed on the unit's crank-angle axis and checked against what the unit
+        and its rods can produce (:func:`plausible`, the one rule of every command); the
+        warnings are noted (:func:`~pumpjack_cli.errors.warn`). ``spm`` [1/min], the
+        ``--spm`` option, is the speed of a card without time stamps."""
+        placed = place(read_card(self.path, units=self.units, columns=self.columns), unit.geometry.mechanism())
+        for warning in placed.warnings + plausible(unit, placed, spm):
             warn(warning)
         return placed
 
@@ -77,6 +82,29 @@ def place(raw: RawCard, mechanism: Mechanism) -> PlacedCard:
     return place_card(mechanism, raw.load, crank_angle=raw.crank_angle, position=raw.position, time=raw.time,
                       source=raw.source, position_unit=raw.column_units.get("position", ("m", 1.0)),
                       reversed=raw.reversed, warnings=raw.warnings)
+
+
+#: Crank speed assumed for the plausibility of a card without time stamps, --spm or drive
+#: [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
+FAST_PUMPING = 20.0
+
+
+def plausible(unit: UnitConfig, placed: PlacedCard, spm: float | None) -> tuple[str, ...]:
+    """Refuse a card the unit and its rods cannot have made, with the same one line for every
+    command (:func:`~pumpjack_cli.core.rods.plausibility.check_card_loads`); the warning of a
+    parted string, if any."""
+    mechanism = unit.geometry.mechanism()
+    theta = crank_grid(PLAUSIBILITY_STEPS)
+    if placed.speed is not None:
+        speed = placed.speed
+    elif spm is not None or unit.drive is None:
+        speed = parse_quantity(f"{FAST_PUMPING if spm is None else spm} spm", "rotational_speed")
+    else:
+        speed = unit.crank_speed(None)
+    verdict = check_card_loads(card_load(placed.card, theta), mechanism.rod_position(theta), stroke=mechanism.stroke,
+                               crank_speed=speed, well=unit.well_limits(),
+                               structure_rating=unit.ratings().structure_load, source=placed.source)
+    return (verdict.warning,) if verdict.warning else ()
 
 
 def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
@@ -166,7 +194,7 @@ def _card_motion(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]
 def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
               crank_motion: str) -> tuple[PlacedCard, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
-    reading = source.read(mechanism)
+    reading = source.read(unit, spm)
     thetas = [crank_grid(steps) for steps in grids]
     if crank_motion == "auto":
         crank_motion = "uniform" if reading.time is None or spm is not None else "card"

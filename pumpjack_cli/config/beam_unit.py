@@ -30,6 +30,7 @@ if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
     from ..core.dynamics.coefficients import Machine
+    from ..core.rods.plausibility import WellLimits
     from ..core.rods.pump import Pump
     from ..core.rods.string import RodString
     from ..core.well import WellLoad
@@ -258,6 +259,20 @@ class UnitConfig(Section):
             return given if given is not None else (getattr(designation, name) if designation is not None else None)
 
         return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
+
+    def well_limits(self) -> WellLimits | None:
+        """What the rods and the fluid column of the ``[well]`` can produce, for the plausibility of
+        a card (:mod:`~pumpjack_cli.core.rods.plausibility`); None without a ``[well]``."""
+        import math
+
+        from ..core.rods.plausibility import WellLimits
+        from ..core.rods.pump import discharge_pressure
+
+        if self.well is None:
+            return None
+        w = self.well
+        largest = discharge_pressure(w.pump_vertical_depth(), w.fluid_density, w.tubing_head_pressure)
+        return WellLimits(self.rods(), w.fluid_density, largest * math.pi * w.plunger_diameter**2 / 4.0)
 
     def rigid_well_load(self) -> WellLoad:
         """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod

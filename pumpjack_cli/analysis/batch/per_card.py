@@ -110,9 +110,9 @@ class _CardOnce:
         self.name = self.source.name
         self._reading = None
 
-    def read(self, linkage):
+    def read(self, unit, spm=None):
         if self._reading is None:
-            self._reading = self.source.read(linkage)
+            self._reading = self.source.read(unit, spm)
         return self._reading
 
 

@@ -17,8 +17,8 @@ polished rod's acceleration at the ends of a harmonic stroke in units of g, S th
   load; waves and asymmetric strokes move the median by far less than a quarter of W_rf;
 * its peak load is at most :data:`PEAK_FACTOR` (W_r + F_max)(1 + 2 alpha): the whole string
   and the largest fluid load, accelerated, with half again for the rod waves;
-* its load range is at most :data:`RANGE_FACTOR` (F_max + W_r): the fluid load and a
-  dynamic swing as large as the string's whole weight, each way, doubled;
+* its load range is at most that same bound: the polished rod's load is never below zero
+  (the carrier bar cannot push the rods down);
 * its minimum load is at most W_r: the polished rod never carries more than the whole
   string at the bottom of a downstroke;
 * its load-transfer slope (range over stroke) is at most
@@ -26,16 +26,22 @@ polished rod's acceleration at the ends of a harmonic stroke in units of g, S th
   constant (:func:`~pumpjack_cli.core.rods.downhole.load_transfer_slope`).
 
 A parted string is the one real card below the rods' weight: the polished rod then hangs
-only the rods above the break, so the median sits at their buoyant weight, smoothly, and
-the card is thin (no fluid is lifted: its loop holds only the damping of the rods left,
-:data:`PARTED_FULLNESS` of the box stroke x load range at most, against 0.3 to 0.9 for a
-pumping card). Such a card passes with a warning that gives the break's approximate depth
-(where the buoyant weight of the rods from the top equals the median load). A card whose
-loads a common unit slip would bring into the window (kN written as lbf, lbf as N, kgf as
-N, a factor 1000) is refused with the factor named.
+only the rods above the break, whose lower end is free. The wave equation run down from
+the card with the whole string ([Gibbs1963], :func:`~pumpjack_cli.core.rods.downhole.pump_card`)
+then finds the effective tension zero at the break at every instant: the constant
+difference between the whole string's buoyant weight and the hanging part's passes down
+unchanged and cancels the static tension of the rods below the break. A card whose
+diagnosed load stays within :data:`PARTED_FLATNESS` of its load range of zero at some depth,
+for some damping factor (the damping of the rods left is not known), passes with a warning
+that gives that depth. A card from a connected string, at any scale, has no such depth: its
+fluid load and inertia swing the load at every depth. A card whose loads a common unit
+slip would bring into the window (kN written as lbf, lbf as N, kgf as N, a factor 1000)
+is refused with the factor named.
 
 Without a ``[well]`` only the gross slips are refused: a load range below
-:data:`RATING_LOW` or above :data:`RATING_HIGH` times the unit's structure rating.
+:data:`RATING_LOW` or above :data:`RATING_HIGH` times the unit's structure rating, or a peak
+load above :data:`PEAK_RATING` times it (a beam loaded so far beyond its rating has yielded:
+no running unit records such a card; 1.5 to 2 times is the overload met in the field).
 
 The thresholds and their reasons: ``docs/cards.md``.
 """
@@ -47,24 +53,35 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import CardError
-from ..beam.card import loop_work
 from ..constants import STANDARD_GRAVITY
 from .downhole import LOAD_TRANSFER_MARGIN, load_transfer_slope
+from .gibbs import march
 from .string import RodString
 
 #: A connected string's median load is at least this share of W_rf.
 MEDIAN_SHARE = 0.75
 #: A connected string's peak load is at most this multiple of (W_r + F_max)(1 + 2 alpha).
 PEAK_FACTOR = 1.5
-#: A connected string's load range is at most this multiple of F_max + W_r.
-RANGE_FACTOR = 2.0
-#: A parted string's card encloses at most this share of the box stroke x load range.
-PARTED_FULLNESS = 0.3
+#: A parted string's diagnosed load at the break stays within this share of the card's load
+#: range of zero.
+PARTED_FLATNESS = 0.1
+#: A free end found below this share of the string's length is the pump carrying no load (a
+#: string parted at the pump makes the same card): no parted-string warning.
+PUMP_END = 0.95
+#: Sections the string is cut into to find the break; the depth is found to L / BREAK_SECTIONS.
+BREAK_SECTIONS = 100
+#: Gibbs damping factors tried for the rods left hanging: zero and 0.005 to 2 in equal ratios
+#: (the whole range a unit file may give).
+BREAK_DAMPING = (0.0, *np.geomspace(0.005, 2.0, 24).tolist())
+#: Harmonics of the card kept in finding the break: the rods' first modes, not the noise.
+BREAK_HARMONICS = 30
 #: The shortest string that can hang from a break: one API rod, 25 ft ([API11B]) [m].
 SHORTEST_HANGING = 7.62
-#: Without well data: a load range outside [RATING_LOW, RATING_HIGH] x the structure rating.
+#: Without well data: a load range below RATING_LOW x the structure rating, or above RATING_HIGH
+#: x that rating, or a peak load above PEAK_RATING x that rating.
 RATING_LOW = 0.01
 RATING_HIGH = 100.0
+PEAK_RATING = 3.0
 #: Unit slips of a load column: the factor that turns the read loads into the true ones,
 #: and what it means.
 LOAD_SLIPS = (
@@ -95,20 +112,25 @@ class Verdict:
     break_depth: float | None = None
 
 
-def break_depth(rods: RodString, hanging_weight: float, fluid_density: float,
-                gravity: float = STANDARD_GRAVITY) -> float:
-    """Length of rods from the top whose buoyant weight is ``hanging_weight`` [N], in [m].
+def free_end(load: np.ndarray, position: np.ndarray, period: float, rods: RodString, fluid_density: float,
+             gravity: float = STANDARD_GRAVITY) -> tuple[float, float]:
+    """Where the wave equation run down the whole string from a card finds a free end.
 
-    >>> rods = RodString(np.array([500.0, 500.0]), np.array([4e-4, 3e-4]), np.array([2e11, 2e11]),
-    ...                  np.array([4.0, 3.0]))
-    >>> w = rods.buoyant_weight_per_length(1000.0)            # N/m per taper
-    >>> round(break_depth(rods, 500.0 * w[0] + 100.0 * w[1], 1000.0), 6)
-    600.0
+    Returns the depth x [m] along the rods where max_t |T_e(x, t)| is least, and that least
+    value over the card's load range: zero at the break of a parted string (module
+    docstring). The damping factor is the one of :data:`BREAK_DAMPING` that makes it least;
+    the first :data:`BREAK_HARMONICS` harmonics are kept.
+
+    ``load`` [N] and ``position`` [m] (up positive) are one cycle on a uniform time grid of
+    ``period`` [s].
     """
-    per_length = rods.buoyant_weight_per_length(fluid_density, gravity)
-    ends = np.concatenate([[0.0], np.cumsum(rods.length)])
-    weights = np.concatenate([[0.0], np.cumsum(per_length * rods.length)])
-    return float(np.interp(hanging_weight, weights, ends))
+    fine = rods.subdivided(BREAK_SECTIONS)
+    static = fine.static_tension(fluid_density, gravity)
+    damping = np.array([fine.damping_coefficient(nu) for nu in BREAK_DAMPING])[:, None]
+    _, dynamic = march(fine, period, position, load - static[0], damping, harmonics=BREAK_HARMONICS)
+    off = np.abs(dynamic + static[:, None]).max(axis=-1) / float(np.ptp(load))
+    nu, where = np.unravel_index(int(np.argmin(off)), off.shape)
+    return float(np.concatenate([[0.0], np.cumsum(fine.length)])[where]), float(off[nu, where])
 
 
 def _slip(loads: np.ndarray, fits) -> str:
@@ -165,42 +187,48 @@ def check_card_loads(load: np.ndarray, position: np.ndarray, *, stroke: float, c
                             f"{spread / structure_rating:.3g} x the unit's structure rating "
                             f"{structure_rating * kn:.4g} kN (plausible: {RATING_LOW:g} to {RATING_HIGH:g} x); "
                             f"check the load column's unit")
+        if peak > PEAK_RATING * structure_rating:
+            raise CardError(f"{source}: the card's peak load {peak * kn:.4g} kN is {peak / structure_rating:.3g} x "
+                            f"the unit's structure rating {structure_rating * kn:.4g} kN (plausible: up to "
+                            f"{PEAK_RATING:g} x); check the load column's unit")
         return Verdict()
     rods = well.rods
     air = rods.weight_in_air(gravity)
     buoyant = rods.buoyant_weight(well.fluid_density, gravity)
     alpha = stroke * crank_speed**2 / (2.0 * gravity)
     upper = PEAK_FACTOR * (air + well.max_fluid_load) * (1.0 + 2.0 * alpha)
-    widest = RANGE_FACTOR * (well.max_fluid_load + air)
 
     def connected(loads: np.ndarray) -> bool:
         return bool(np.median(loads) >= MEDIAN_SHARE * buoyant and loads.max() <= upper
-                    and np.ptp(loads) <= widest and loads.min() <= air)
+                    and np.ptp(loads) <= upper and loads.min() <= air)
 
     figures = (f"W_r {air * kn:.4g} kN, W_rf {buoyant * kn:.4g} kN, F_max {well.max_fluid_load * kn:.4g} kN")
+    problem = ""
     if peak > upper:
         problem = (f"peak load {peak * kn:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
                    f"{upper * kn:.4g} kN")
-    elif spread > widest:
-        problem = f"load range {spread * kn:.4g} kN is above {RANGE_FACTOR:g} (F_max + W_r) = {widest * kn:.4g} kN"
+    elif spread > upper:
+        problem = (f"load range {spread * kn:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
+                   f"{upper * kn:.4g} kN")
     elif low > air:
         problem = f"minimum load {low * kn:.4g} kN is above the rods' weight in air W_r: wrong load datum?"
-    elif median < MEDIAN_SHARE * buoyant:
-        box = spread * float(np.ptp(position))
-        fullness = abs(loop_work(position, load)) / box if box > 0 else 0.0
-        shortest = float(rods.buoyant_weight_per_length(well.fluid_density, gravity)[0]) * SHORTEST_HANGING
-        if fullness <= PARTED_FULLNESS and median >= shortest and peak <= upper:
-            depth = break_depth(rods, median, well.fluid_density, gravity)
+    elif median < float(rods.buoyant_weight_per_length(well.fluid_density, gravity)[0]) * SHORTEST_HANGING:
+        problem = f"median load {median * kn:.4g} kN is less than the weight of one rod ({SHORTEST_HANGING:g} m)"
+    elif median < buoyant:
+        depth, off = free_end(load, position, 2.0 * np.pi / crank_speed, rods, well.fluid_density, gravity)
+        if off <= PARTED_FLATNESS and depth < PUMP_END * rods.total_length:
             return Verdict(f"{source}: the loads are those of a parted rod string: the median load "
                            f"{median * kn:.4g} kN is {median / buoyant:.0%} of the rods' buoyant weight "
-                           f"{buoyant * kn:.4g} kN and the card lifts no fluid (its loop is {fullness:.0%} of its "
-                           f"box); the break is about {depth:.0f} m down the {rods.total_length:.0f} m string", depth)
-        problem = (f"median load {median * kn:.4g} kN is below {MEDIAN_SHARE:g} W_rf = {MEDIAN_SHARE * buoyant * kn:.4g} "
-                   f"kN, and the card is not that of a parted string (its loop is {fullness:.0%} of its box)")
-    else:
+                           f"{buoyant * kn:.4g} kN and the wave equation finds a free end about {depth:.0f} m "
+                           f"down the {rods.total_length:.0f} m string", depth)
+        if median < MEDIAN_SHARE * buoyant:
+            problem = (f"median load {median * kn:.4g} kN is below {MEDIAN_SHARE:g} W_rf = "
+                       f"{MEDIAN_SHARE * buoyant * kn:.4g} kN, and the card is not that of a parted string (at no "
+                       f"depth does the rods' load stay nearer zero than {off:.0%} of the card's range; a break: "
+                       f"{PARTED_FLATNESS:.0%})")
+    if not problem:
         slope = float(load_transfer_slope(position, load)[0])
-        limit = LOAD_TRANSFER_MARGIN * rods.spring_constant
-        if slope > limit:
+        if slope > LOAD_TRANSFER_MARGIN * rods.spring_constant:
             raise CardError(f"{source}: the card's load-transfer slope {slope * kn:.4g} kN/m is stiffer than "
                             f"{LOAD_TRANSFER_MARGIN:g} x the rods' spring constant {rods.spring_constant * kn:.4g} kN/m: "
                             f"position in the wrong unit or wrong rod string")
