@@ -341,6 +341,15 @@ def test_broken_pipe_is_quiet(fmt):
     assert process.wait(timeout=120) == 1 and err == b""
 
 
+def test_an_unknown_mplbackend_is_left_aside_for_a_plot_file(run_script, tmp_path):
+    """The plot goes to a file: drawn by its file backend, whatever backend the environment names."""
+    plot = tmp_path / "curves.png"
+    done = run_script("kinematics", "sk8-3.5-4000", "--steps", "12", "-f", "csv", "--plot", plot,
+                      environment={"MPLBACKEND": "no-such-backend"})
+    assert (done.returncode, done.stderr) == (0, "")
+    assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"  # PNG signature (PNG spec, section 5.2)
+
+
 def test_no_floating_point_warning_reaches_stderr(run_cli, tmp_path):
     unit = tmp_path / "unit.toml"
     unit.write_text(SK8_TEXT.replace('r = "1010 mm"', 'r = "1 mm"'), encoding="utf-8")
