@@ -8,7 +8,6 @@ never an encoding error.
 
 from __future__ import annotations
 
-import codecs
 import os
 import stat
 import sys
@@ -32,17 +31,10 @@ PLAIN = {
 
 @cache
 def _spellings(encoding: str) -> dict[int, str]:
-    """The translation table of the characters of :data:`PLAIN` that ``encoding`` cannot encode."""
-    encoder = codecs.getencoder(encoding)
-
-    def encodes(char: str) -> bool:
-        try:
-            encoder(char)
-        except UnicodeEncodeError:
-            return False
-        return True
-
-    return {ord(char): spelled for char, spelled in PLAIN.items() if not encodes(char)}
+    """The translation table of the characters of :data:`PLAIN` that ``encoding`` cannot encode
+    (encoded ignoring errors, such a character is nothing)."""
+    nothing = "".encode(encoding)
+    return {ord(char): spelled for char, spelled in PLAIN.items() if char.encode(encoding, "ignore") == nothing}
 
 
 def plain(text: str, encoding: str) -> str:
