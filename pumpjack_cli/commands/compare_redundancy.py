@@ -13,6 +13,7 @@ from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import What, WhatOption
 
 class PhaseMode(str, Enum):
     pin_bore = "pin-bore"
@@ -61,6 +62,7 @@ def compare_redundancy(
         "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
     ] = None,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -68,7 +70,7 @@ def compare_redundancy(
     """Real mechanism (redundant constraints, elastic pitmans, errors) against the rational one.
 
     Reactions, joint moments and balancing torque of both from a dynamometer card."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     texts = {"crank_phase": crank_phase, "crank_radius": crank_radius, "pitman_length": pitman_length,
              "crank_pin_tilt_radial": crank_pin_tilt_radial, "crank_pin_tilt_tangential": crank_pin_tilt_tangential,
              "equalizer_pin_roll": equalizer_pin_roll, "equalizer_pin_yaw": equalizer_pin_yaw}

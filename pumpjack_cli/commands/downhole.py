@@ -13,6 +13,7 @@ from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
+from ..options import What, WhatOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -37,6 +38,7 @@ def downhole(
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -44,7 +46,7 @@ def downhole(
     """Pump card from a surface dynamometer card through the rod string's wave equation.
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)
