@@ -160,7 +160,7 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
                f"{stroke / factor:.4g} {unit} by {100 * mismatch:+.1f} %")
     notes = list(warnings)
     if abs(mismatch) > STROKE_ERROR:
-        raise CardError(f"{message}; {position_slip(card_stroke / stroke) or 'wrong unit, crank hole or position units?'}")
+        raise CardError(f"{message}; {position_slip(card_stroke / stroke, unit) or 'wrong unit, crank hole or position units?'}")
     if abs(mismatch) > STROKE_WARNING:
         notes.append(f"{message}; positions scaled to the unit's stroke")
     work = loop_work(position, load)
@@ -188,17 +188,18 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
 LENGTH_UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
 
 
-def position_slip(ratio: float) -> str:
-    """The unit slip that makes a card's stroke ``ratio`` times the unit's (numbers in one length
-    unit labelled as another), said as a question, or '' when none is within :data:`STROKE_ERROR`.
+def position_slip(ratio: float, written: str) -> str:
+    """The unit slip that makes a card's stroke ``ratio`` times the unit's when its positions are
+    labelled ``written`` (numbers in another length unit), said as a question, or '' when no
+    unit of :data:`LENGTH_UNITS` is within :data:`STROKE_ERROR`.
 
-    >>> position_slip(1000.0), position_slip(1 / 0.0254 * 1.01), position_slip(2.0)
+    >>> position_slip(1000.0, "m"), position_slip(1 / 0.0254 * 1.01, "m"), position_slip(1e-3, "in")
     ('positions in mm written as m?', 'positions in in written as m?', '')
     """
-    for written, read in LENGTH_UNITS.items():
-        for true, size in LENGTH_UNITS.items():
-            if written != true and abs(ratio / (read / size) - 1.0) <= STROKE_ERROR:
-                return f"positions in {true} written as {written}?"
+    read = LENGTH_UNITS.get(written)
+    for true, size in LENGTH_UNITS.items():
+        if read is not None and true != written and abs(ratio / (read / size) - 1.0) <= STROKE_ERROR:
+            return f"positions in {true} written as {written}?"
     return ""
 
 

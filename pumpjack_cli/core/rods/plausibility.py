@@ -85,7 +85,7 @@ PEAK_RATING = 3.0
 #: Unit slips of a load column: the factor that turns the read loads into the true ones,
 #: and what it means.
 LOAD_SLIPS = (
-    (1000.0, "kN written as N"), (1e-3, "N written as kN"),
+    (1000.0, "kN written as N, or klbf as lbf"), (1e-3, "N written as kN, or lbf as klbf"),
     (4.4482216152605, "lbf written as N"), (1 / 4.4482216152605, "N written as lbf"),
     (1000.0 / 4.4482216152605, "kN written as lbf"), (4.4482216152605 / 1000.0, "lbf written as kN"),
     (9.80665, "kgf written as N"), (1 / 9.80665, "N written as kgf"),

@@ -134,7 +134,7 @@ def test_a_hanging_string_with_the_exact_damping_has_a_load_free_end(name):
 
 
 #: The slips a load column suffers, as the factor its loads are read with: (factor, words).
-SLIPS = [(1000.0, "N written as kN"), (1e-3, "kN written as N"),
+SLIPS = [(1000.0, "N written as kN, or lbf as klbf"), (1e-3, "kN written as N, or klbf as lbf"),
          (POUND_FORCE, "N written as lbf"), (1 / POUND_FORCE, "lbf written as N"),
          (KILOGRAM_FORCE, "N written as kgf"), (1 / KILOGRAM_FORCE, "kgf written as N"),
          (POUND_FORCE / 1000, "kN written as lbf"), (1000 / POUND_FORCE, "lbf written as kN")]
