@@ -14,7 +14,7 @@ from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFa
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
 
-SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
+SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
 
 class CrankMotion(str, Enum):
@@ -67,4 +67,5 @@ def predict(
         gas_exponent=finite(gas_exponent),
     )
     result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor)
-    sink.emit(result, SHOWN)
+    torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
+    sink.emit(result, (*SHOWN, torque))
