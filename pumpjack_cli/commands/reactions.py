@@ -8,8 +8,10 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
-                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardOption,
+                       CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
+                       CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source,
+                       quantity)
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
 
@@ -19,6 +21,9 @@ def reactions(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
     crank_motion: CrankMotionOption = CrankMotion.uniform,
@@ -37,6 +42,6 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value, weights=not no_weights,
+    result = run(load_unit(unit), card_source(card, card_units, card_columns, card_format, card_points, stroke), spm, steps, crank_motion.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)
