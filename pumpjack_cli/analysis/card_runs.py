@@ -125,10 +125,10 @@ def chosen(raw: RawCard, stroke: int | str, mechanism: Mechanism) -> Reading:
     """The card ``stroke`` chooses among a file's strokes (a file of one card is its only
     stroke), placed on ``mechanism``."""
     strokes = raw.strokes or (raw,)
-    if stroke == "median":
-        return median_card(raw, mechanism) if raw.strokes else place(raw, mechanism)
-    if stroke == "last":
-        return place(raw, mechanism)
+    if stroke == "median" and raw.strokes:
+        return median_card(raw, mechanism)
+    if stroke in STROKE_CHOICES:
+        return place(strokes[-1], mechanism)
     if not 1 <= int(stroke) <= len(strokes):
         held = f"{len(strokes)} strokes" if raw.strokes else "one card, not a recording of several strokes"
         raise CardError(f"{raw.source}: --stroke {stroke}: the file holds {held}")

@@ -49,7 +49,7 @@ def _card(data: bytes, file: CardFile, where: str, line: int | None) -> RawCard:
     for kind, numbers in (("load", values[:points][kept]), ("position", values[points:][kept])):
         unit, factor = unit_of(None, kind, file.units, where)
         columns[kind] = Column(in_si(numbers, kind, unit, factor, lambda i: f"{where}: point {kept[i] + 1}",
-                                     lambda i: f"{numbers[i]:.9g}"), unit, factor)
+                                     lambda i: str(np.float32(numbers[i]))), unit, factor)
     lines = kept + 1 if line is None else np.full(kept.size, line)
     return assemble(file.source, columns, lines)
 

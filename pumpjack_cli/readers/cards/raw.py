@@ -104,8 +104,9 @@ class RawCard:
         One line for each thing the reader noticed and mended.
     strokes : tuple of RawCard
         Every card of a file that holds several, in the file's order: the strokes of a
-        continuous recording (:mod:`.recording`), the lines of a hex file. The raw card
-        itself is then the last of them (what a controller shows); empty for a file of
+        continuous recording (:mod:`.recording`), the lines of a hex file, each named
+        "<file> stroke k" (k from 1) in messages. The raw card itself is then the last
+        of them (what a controller shows) under the file's name; empty for a file of
         one card.
     """
 
@@ -331,4 +332,4 @@ def several(cards: Sequence[RawCard]) -> RawCard:
     if len(cards) == 1:
         return cards[0]
     named = tuple(replace(card, source=f"{card.source} stroke {k}") for k, card in enumerate(cards, 1))
-    return replace(named[-1], strokes=named)
+    return replace(cards[-1], strokes=named)
