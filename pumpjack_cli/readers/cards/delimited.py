@@ -108,7 +108,7 @@ def _header(cells: list[str], line: int, source: str, default_units: str | None,
     """Used columns: kind -> (column index, unit label, factor to SI)."""
     found: dict[str, list[tuple[int, str, float]]] = {}
     prefix = f"{source}: line {line}"
-    written = None if mapping is not None else written_card([cell.strip().strip('"').strip() for cell in cells], prefix)
+    written = None if mapping is not None else written_card([cell.strip().strip('"').strip() for cell in cells])
     if written is not None:
         return written
     if mapping is None:

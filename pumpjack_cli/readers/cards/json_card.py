@@ -142,9 +142,10 @@ def _written(series: object, text: str, at: int, line_of: _Lines, source: str) -
     if unknown is not None:
         raise CardError(f"{where}: series {show(unknown)} is not a column pumpjack writes; a JSON card is "
                         f"pumpjack's own output or has \"S\" and \"F\" arrays")
-    chosen = written_card(list(series), where)
+    chosen = written_card(list(series))
     if chosen is None:
-        raise CardError(f"{where}: \"series\" is empty")
+        raise CardError(f"{where}: the series hold no surface card (rod_load with time and position, position or "
+                        f"crank_angle, as predict and downhole write)")
     offsets = _members(text, at)
     names = list(series)
     columns, lines = {}, {}

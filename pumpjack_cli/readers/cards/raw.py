@@ -253,13 +253,12 @@ def count_points(points: int, source: str) -> None:
         raise CardError(f"{source}: {points} points; a card has at most {MAX_POINTS}")
 
 
-def written_card(names: list[str], where: str) -> dict[str, tuple[int, str, float]] | None:
+def written_card(names: list[str]) -> dict[str, tuple[int, str, float]] | None:
     """The surface card's columns in a table this tool wrote (``pumpjack predict -f csv``):
-    kind -> (index, unit, factor to SI); None when a name is not one the tool writes (a
-    user's table, read by its own rules). The time card (time, position, rod_load) is
-    taken when the table has it, else positions or crank angles with rod_load; every
-    other column is ignored. A table of the tool's names without a rod_load is refused,
-    ``where`` naming the file and line."""
+    kind -> (index, unit, factor to SI). The time card (time, position, rod_load) is taken
+    when the table has it, else positions or crank angles with rod_load; every other
+    column is ignored. None when a name is not one the tool writes or the table holds no
+    surface card (a user's table, read by its own rules)."""
     known = written_names()
     if not names or not all(name in known for name in names):
         return None
@@ -271,10 +270,7 @@ def written_card(names: list[str], where: str) -> dict[str, tuple[int, str, floa
             unit = output_unit(quantity, system)
             found[kind] = (j, unit.label, 1.0 / unit.scale)
     layout = next((layout for layout in _WRITTEN_LAYOUTS if set(layout) <= set(found)), None)
-    if layout is None:
-        raise CardError(f"{where}: a table of pumpjack's outputs without a surface card (rod_load with time and "
-                        f"position, position or crank_angle, as predict and downhole write)")
-    return {kind: found[kind] for kind in layout}
+    return None if layout is None else {kind: found[kind] for kind in layout}
 
 
 def stated_spm(value: object, where: str) -> float:

@@ -340,8 +340,12 @@ def test_an_unknown_column_in_a_users_csv_stays_an_error():
 
 
 def test_a_tool_output_without_a_surface_card_is_refused():
-    text = "crank_angle_deg,position_m,velocity_m_s\n" + "".join(f"{i}.0,0.5,0.1\n" for i in range(20))
-    refused(text, "line 1: a table of pumpjack's outputs without a surface card")
+    """Kinematics has no rod_load: as CSV its columns are a user's (velocity is unknown), as JSON
+    its series hold no card."""
+    columns = {"crank_angle_deg": [float(i) for i in range(20)], "position_m": [0.5] * 20, "velocity_m_s": [0.1] * 20}
+    text = ",".join(columns) + "\n" + "".join(f"{a},{p},{v}\n" for a, p, v in zip(*columns.values()))
+    refused(text, "line 1: unknown column 'velocity_m_s' (column 3)")
+    refused(json.dumps({"series": columns}), "line 1: the series hold no surface card")
 
 
 # --- continuous recordings ---------------------------------------------------------------------
