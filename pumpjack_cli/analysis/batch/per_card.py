@@ -168,7 +168,7 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> di
     from ..downhole import downhole
     from ..torque import torque
 
-    unit = _unit(job)
+    unit = _unit(job)  # loaded once per process
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
@@ -183,7 +183,7 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     from ..card_runs import CardSource
 
     source = CardSource(Path(job.card), options.card_units, None, options.card_format, options.card_points)
-    status, error, raw = _attempt(source.raw)
+    status, error, raw = _attempt(lambda: (_unit(job), source.raw())[1])  # the unit first, as a single command
     if raw is None:
         return [Outcome(analysis, status, error, "", {}, "", job.timestamp) for analysis in options.analyses]
     base = job.timestamp or str(raw.metadata.get("timestamp", ""))
