@@ -15,11 +15,13 @@ import typer
 from .errors import PumpjackError
 from .quantities import parse_quantity
 from .render import Outputs
-from .render.formats import CSV, FORMATS, PLOT_SUFFIXES, TABLE
+from .render.formats import CONTENTS, CSV, FORMATS, PLOT_SUFFIXES, TABLE
 from .results import Result
 
 #: The ``--format`` choices, one member per name of :data:`~pumpjack_cli.render.formats.FORMATS`.
 Format = Enum("Format", {name: name for name in FORMATS}, module=__name__, type=str)
+#: The ``--what`` choices, one member per name of :data:`~pumpjack_cli.render.formats.CONTENTS`.
+What = Enum("What", {name: name for name in CONTENTS}, module=__name__, type=str)
 
 
 def _either(names: tuple[str, ...]) -> str:
@@ -51,6 +53,9 @@ PlotOption = Annotated[
     Path | None,
     typer.Option("--plot", help=f"also draw the curves to FILE{_either(PLOT_SUFFIXES)}", dir_okay=False),
 ]
+WhatOption = Annotated[What, typer.Option(
+    "--what", help="columns: the per-row columns (table and JSON show the summary too); summary: the summary "
+    "values only (CSV: one row each, name,value,unit,description)")]
 UnitsOption = Annotated[
     UnitSystem,
     typer.Option("--units", help="si (m, m/s, N, N·m) or field (in, ft/s, lbf, lbf·in)"),
@@ -119,8 +124,9 @@ CrankMotionOption = Annotated[CrankMotion, typer.Option(
 class Output:
     """The output options of a command, checked before it computes anything."""
 
-    def __init__(self, fmt: Format | None, units: UnitSystem, out: Path | None, plot: Path | None):
-        self.targets = Outputs(fmt.value if fmt else None, units.value, out, plot)
+    def __init__(self, fmt: Format | None, units: UnitSystem, out: Path | None, plot: Path | None,
+                 what: What = What.columns):
+        self.targets = Outputs(fmt.value if fmt else None, units.value, out, plot, what.value)
 
     def emit(self, result: Result, shown: tuple[str, ...]) -> None:
         """Hand a result to the renderer, with the columns ``shown`` in the terminal table."""

@@ -155,13 +155,18 @@ def pumpjack_script() -> str:
 def run_script(pumpjack_script, repo_root):
     """Run the real console script in a subprocess from the repository root.
 
-    Returns the CompletedProcess with text stdout/stderr. The timeout only guards
-    against a hang; no assertion depends on how long a run takes.
+    Returns the CompletedProcess with text stdout/stderr. ``environment`` sets variables
+    (None: unset). The timeout only guards against a hang; no assertion depends on how
+    long a run takes.
     """
 
-    def run(*argv: str, **kwargs) -> subprocess.CompletedProcess:
+    def run(*argv: str, environment: dict[str, str | None] | None = None, **kwargs) -> subprocess.CompletedProcess:
         env = dict(os.environ)
         env.pop("COLUMNS", None)
+        for name, value in (environment or {}).items():
+            env.pop(name, None)
+            if value is not None:
+                env[name] = value
         return subprocess.run(
             [pumpjack_script, *map(str, argv)],
             cwd=repo_root,

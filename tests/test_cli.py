@@ -7,6 +7,8 @@ checked in tests/commands/.
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import os
 import subprocess
@@ -15,8 +17,9 @@ from pathlib import Path
 import pytest
 
 from pumpjack_cli.errors import PumpjackError
+from pumpjack_cli.names import lookup
 
-from helpers import SK8, SK8_API_YAML
+from helpers import SK8, SK8_API_YAML, SK8_CARD
 
 
 def test_default_format_is_csv_in_a_pipe(run_cli):
@@ -90,6 +93,42 @@ def test_plot_bad_suffix_writes_nothing(run_cli, tmp_path):
     assert len(err.splitlines()) == 1 and err.startswith("pumpjack: error:")
     assert "--plot" in err and "bad.txt" in err
     assert list(tmp_path.iterdir()) == []
+
+
+# --- what an output holds: the columns, or the summary alone ---------------------------
+
+SUMMARY_RUNS = [
+    # (argv, a summary name, its CSV name and unit label in field units)
+    (("kinematics", SK8, "--steps", "24"), "stroke", "stroke_in", "in"),
+    (("torque", SK8, "--card", SK8_CARD, "--steps", "24"), "peak_net_torque", "peak_net_torque_lbf_in", "lbf·in"),
+]
+
+
+@pytest.mark.parametrize(("argv", "name", "csv_name", "unit"), SUMMARY_RUNS, ids=lambda v: v[0] if isinstance(v, tuple) else "")
+def test_summary_csv_has_a_row_per_summary_value(run_cli, run_json, argv, name, csv_name, unit):
+    """The rows hold the JSON document's summary, in its order and with its names, each with
+    its unit label and meaning."""
+    code, out, err = run_cli(*argv, "--units", "field", "-f", "csv", "--what", "summary")
+    assert (code, err) == (0, "")
+    header, *rows = csv.reader(io.StringIO(out))
+    assert header == ["name", "value", "unit", "description"]
+    summary = run_json(*argv, "--units", "field")["summary"]
+    assert [(row[0], float(row[1])) for row in rows] == list(summary.items())
+    assert next(row[2:] for row in rows if row[0] == csv_name) == [unit, lookup(name)[1]]
+
+
+def test_summary_alone_in_json_and_the_table_and_the_plot_unchanged(run_cli, run_json, tmp_path):
+    argv = ("kinematics", SK8, "--steps", "24")
+    assert run_cli(*argv, "-f", "csv", "--what", "columns")[1] == run_cli(*argv, "-f", "csv")[1]
+    assert json.loads(run_cli(*argv, "-f", "json", "--what", "summary")[1]) == {**run_json(*argv), "columns": {},
+                                                                                "series": {}}
+    table = run_cli(*argv, "-f", "table", "--what", "summary")[1]
+    full = run_cli(*argv, "-f", "table")[1]
+    assert full.startswith(table) and "[deg]" not in table and "max_velocity" in table and not table.endswith("\n\n")
+    plot = tmp_path / "curves.png"
+    code, out, err = run_cli(*argv, "-f", "csv", "--what", "summary", "--plot", plot)
+    assert (code, err) == (0, "") and out.startswith("name,value,unit,description\n")
+    assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 # --- errors ------------------------------------------------------------------------

@@ -3,7 +3,7 @@
 Generated cases, one class at a time: files that are not unit files, unit files with
 a broken structure, every numeric field of a unit set to extreme values, quantities
 written wrongly, bad options, output targets that will fail, and standard output
-closed, full or cut. Each case checks the exit code, a single ``pumpjack: error:`` line
+closed, full, cut or unable to encode the text. Each case checks the exit code, a single ``pumpjack: error:`` line
 on stderr that names the file, field or option, no traceback, empty stdout, and that a
 pre-existing output file is left untouched. (Card files have their own module,
 ``tests/readers/cards/test_card_hostile.py``.)
@@ -11,6 +11,9 @@ pre-existing output file is left untouched. (Card files have their own module,
 
 from __future__ import annotations
 
+import csv
+import io
+import json
 import math
 import os
 import subprocess
@@ -313,12 +316,33 @@ def _script(argv, **kwargs):
     return subprocess.run([_script_path(), *map(str, argv)], cwd=REPO_ROOT, timeout=120, **kwargs)
 
 
+def _full_device() -> str:
+    """The device that is always full (Linux), or a skip where there is none."""
+    if not os.path.exists("/dev/full"):
+        pytest.skip("no /dev/full on this system")
+    return "/dev/full"
+
+
 @pytest.mark.parametrize("fmt", ["csv", "json", "table"])
 def test_full_stdout_is_one_line(fmt):
-    with open("/dev/full", "w") as full:
+    with open(_full_device(), "w") as full:
         done = _script(["kinematics", "sk8-3.5-4000", "--steps", "2000", "-f", fmt], stdout=full, stderr=subprocess.PIPE)
     err = done.stderr.decode()
-    assert done.returncode == 2 and err.count("\n") == 1 and "no space left on device" in err, err
+    assert done.returncode == 2 and err == "pumpjack: error: standard output: cannot write: no space left on device\n", err
+
+
+def test_an_output_file_on_a_full_device_is_named(run_script):
+    """A few lines fit the buffer: the device refuses them when the file is closed."""
+    done = run_script("kinematics", "sk8-3.5-4000", "--steps", "8", "-o", _full_device())
+    assert (done.returncode, done.stdout) == (2, "")
+    assert done.stderr == "pumpjack: error: --output /dev/full: cannot write: no space left on device\n"
+
+
+def test_a_plot_on_a_full_device_is_named(run_cli, tmp_path):
+    plot = tmp_path / "curves.png"
+    plot.symlink_to(_full_device())
+    code, out, err = run_cli("kinematics", "sk8-3.5-4000", "--steps", "8", "-f", "csv", "--plot", plot)
+    one_line_error(code, out, err, f"--plot {plot}: cannot write: no space left on device")
 
 
 @pytest.mark.parametrize("fmt", ["csv", "json", "table"])
@@ -339,6 +363,61 @@ def test_broken_pipe_is_quiet(fmt):
     process.stdout.close()
     err = process.stderr.read()
     assert process.wait(timeout=120) == 1 and err == b""
+
+
+# --- a standard output that cannot encode the text, a file name that is not UTF-8 -----------
+
+#: An ASCII standard output: by Python's variable, or by a locale without UTF-8 (Python's
+#: UTF-8 mode, which the C locale would turn on, off).
+ASCII_BY_VARIABLE = {"PYTHONIOENCODING": "ascii"}
+ASCII_BY_LOCALE = {"PYTHONIOENCODING": None, "LC_ALL": "C", "PYTHONUTF8": "0", "PYTHONCOERCECLOCALE": "0"}
+KINEMATICS_FIELD = ("kinematics", "sk8-3.5-4000", "--steps", "8", "--units", "field")
+
+
+@pytest.mark.parametrize("environment", [ASCII_BY_VARIABLE, ASCII_BY_LOCALE], ids=["variable", "locale"])
+def test_an_ascii_stdout_gets_a_plain_ascii_table(run_script, environment):
+    done = run_script(*KINEMATICS_FIELD, "-f", "table", environment=environment)
+    assert (done.returncode, done.stderr) == (0, "")
+    assert done.stdout.isascii()
+    assert "pumping speed, 60 omega1 / 2pi" in done.stdout and "[ft/s^2]" in done.stdout
+
+
+def test_an_ascii_stdout_gets_plain_ascii_csv(run_script):
+    """The summary's units and meanings are the CSV's non-ASCII text."""
+    done = run_script(*KINEMATICS_FIELD, "-f", "csv", "--what", "summary", environment=ASCII_BY_VARIABLE)
+    assert (done.returncode, done.stderr) == (0, "")
+    assert done.stdout.isascii()
+    rows = {row["name"]: row for row in csv.DictReader(io.StringIO(done.stdout))}
+    assert rows["max_acceleration_ft_s2"]["unit"] == "ft/s^2"
+
+
+def test_an_ascii_stdout_gets_json_with_escapes(run_script, run_json):
+    done = run_script(*KINEMATICS_FIELD, "-f", "json", environment=ASCII_BY_VARIABLE)
+    assert (done.returncode, done.stderr) == (0, "")
+    assert done.stdout.isascii()
+    assert json.loads(done.stdout) == run_json(*KINEMATICS_FIELD)
+
+
+def test_a_card_name_that_is_not_utf8_is_escaped_in_an_output_file(run_cli, tmp_path):
+    """The card's name is in the title; the output file is UTF-8, so its byte 0xff is written as an escape."""
+    card = tmp_path / os.fsdecode(b"\xff-card.csv")
+    try:
+        card.write_bytes(SK8_CARD.read_bytes())
+    except (OSError, UnicodeError):
+        pytest.skip("the file system takes only UTF-8 file names")
+    table = tmp_path / "out.txt"
+    code, out, err = run_cli("torque", "sk8-3.5-4000", "--card", card, "--steps", "8", "-o", table)
+    assert (code, out, err) == (0, "", "")
+    assert "card \\udcff-card.csv," in table.read_text(encoding="utf-8").splitlines()[0]
+
+
+def test_an_unknown_mplbackend_is_left_aside_for_a_plot_file(run_script, tmp_path):
+    """The plot goes to a file: drawn by its file backend, whatever backend the environment names."""
+    plot = tmp_path / "curves.png"
+    done = run_script("kinematics", "sk8-3.5-4000", "--steps", "12", "-f", "csv", "--plot", plot,
+                      environment={"MPLBACKEND": "no-such-backend"})
+    assert (done.returncode, done.stderr) == (0, "")
+    assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"  # PNG signature (PNG spec, section 5.2)
 
 
 def test_no_floating_point_warning_reaches_stderr(run_cli, tmp_path):

@@ -32,6 +32,7 @@ from ..core.beam.card import card_from_angles, card_load
 from ..core.cards import PlacedCard, place_card
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
+from ..core.rods.plausibility import check_card_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
@@ -49,6 +50,8 @@ FINE_STEPS = 3600
 RESAMPLE_FACTOR = 8
 #: The strokes ``--stroke`` may choose besides a number (from 1).
 STROKE_CHOICES = ("last", "median")
+#: Crank positions on which a card's plausibility is judged.
+PLAUSIBILITY_STEPS = 360
 
 #: Crank-motion models of the card-driven analyses: constant speed; the speed and
 #: acceleration fitted to the card's time stamps; the machine's equation of motion;
@@ -103,10 +106,11 @@ class CardSource:
         """The card file read (no unit yet): for a file of several strokes, the last, holding all."""
         return read_card(self.path, self.format, self.units, self.columns, points=self.points)
 
-    def read(self, mechanism: Mechanism) -> Reading:
-        """The chosen card read and placed on the unit's crank-angle axis; the warnings are
-        noted (:func:`~pumpjack_cli.errors.warn`)."""
-        return noted(chosen(self.raw(), self.stroke, mechanism))
+    def read(self, unit: UnitConfig, spm: float | None = None) -> Reading:
+        """The chosen card read, placed on the unit's crank-angle axis and checked against what
+        the unit and its rods can produce (:func:`noted`). ``spm`` [1/min], the ``--spm``
+        option, is the speed of a card without time stamps or a stated SPM."""
+        return noted(chosen(self.raw(), self.stroke, unit.geometry.mechanism()), unit, spm)
 
     @property
     def name(self) -> str:
@@ -114,9 +118,10 @@ class CardSource:
         return "<stdin>" if str(self.path) == "-" else self.path.name
 
 
-def noted(reading: Reading) -> Reading:
-    """The reading, its warnings noted (:func:`~pumpjack_cli.errors.warn`)."""
-    for warning in reading.warnings:
+def noted(reading: Reading, unit: UnitConfig, spm: float | None) -> Reading:
+    """The reading checked against what the unit and its rods can produce (:func:`plausible`,
+    the one rule of every command), its warnings noted (:func:`~pumpjack_cli.errors.warn`)."""
+    for warning in reading.warnings + plausible(unit, reading, spm):
         warn(warning)
     return reading
 
@@ -199,6 +204,31 @@ def _agree(given: float, known: float, given_name: str, known_name: str, hint: s
     if abs(mismatch) > SPEED_TOLERANCE:
         raise CardError(f"{given_name} {given * 30.0 / math.pi:.4g} disagrees with {known_name} "
                         f"({known * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; {hint}")
+
+
+#: Crank speed assumed for the plausibility of a card without time stamps, --spm or drive
+#: [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
+FAST_PUMPING = 20.0
+
+
+def plausible(unit: UnitConfig, placed: Reading, spm: float | None) -> tuple[str, ...]:
+    """Refuse a card the unit and its rods cannot have made, with the same one line for every
+    command (:func:`~pumpjack_cli.core.rods.plausibility.check_card_loads`); the warning of a
+    parted string, if any."""
+    mechanism = unit.geometry.mechanism()
+    theta = crank_grid(PLAUSIBILITY_STEPS)
+    if placed.speed is not None:
+        speed = placed.speed
+    elif placed.stated_speed is not None:
+        speed = placed.stated_speed
+    elif spm is not None or unit.drive is None:
+        speed = parse_quantity(f"{FAST_PUMPING if spm is None else spm} spm", "rotational_speed")
+    else:
+        speed = unit.crank_speed(None)
+    verdict = check_card_loads(card_load(placed.card, theta), mechanism.rod_position(theta), stroke=mechanism.stroke,
+                               crank_speed=speed, well=unit.well_limits(),
+                               structure_rating=unit.ratings().structure_load, source=placed.source)
+    return (verdict.warning,) if verdict.warning else ()
 
 
 def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
@@ -292,7 +322,7 @@ def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:
 def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
               crank_motion: str) -> tuple[Reading, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
-    reading = source.read(mechanism)
+    reading = source.read(unit, spm)
     thetas = [crank_grid(steps) for steps in grids]
     if crank_motion == "auto":
         crank_motion = "uniform" if reading.time is None or spm is not None else "card"

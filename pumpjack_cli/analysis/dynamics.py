@@ -22,7 +22,7 @@ _WELL_FORCES = (("upstroke_rod_load", "upstroke"), ("downstroke_rod_load", "down
 
 def dynamics(unit: UnitConfig, card: CardSource | None, rtol: float, steps: int) -> Result:
     """The periodic motion under the motor, the well model (or a card) and the weights ([SK8Rotation2013])."""
-    measured = None if card is None else card.read(unit.geometry.mechanism()).card
+    measured = None if card is None else card.read(unit).card
     machine_ = unit.machine(measured)
     result = steady_state(machine_, crank_grid(steps), rtol=rtol)
     s = result.summary

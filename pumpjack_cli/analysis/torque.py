@@ -38,7 +38,7 @@ from ..core.beam.torque import (
     torque_components,
     torque_methods,
 )
-from ..core.designations import parse_designation
+from ..core.designations import Ratings
 from ..core.sampling import extremes, peak
 from ..errors import PumpjackError, warn
 from ..results import Column, Panel, Result, Scalar
@@ -54,41 +54,6 @@ SUMMARY_STEPS = 3600
 MAX_RADIUS = 5.0
 #: Crank angle of the counterbalance-effect test (cranks horizontal) [rad].
 TEST_ANGLE = math.pi / 2
-#: Unit classes the linkage model of this package covers (conventional, crank-balanced).
-SUPPORTED_CLASSES = ("conventional",)
-
-
-@dataclass(frozen=True)
-class Ratings:
-    """Gearbox torque [N·m], structure load [N] and maximum stroke [m] ratings; None where unknown."""
-
-    gearbox_torque: float | None
-    structure_load: float | None
-    max_stroke: float | None
-
-
-def ratings(unit: UnitConfig) -> Ratings:
-    """The unit's ratings: its ``designation`` (or its name when that is a designation),
-    completed or overridden by ``[rating]``; a class other than conventional is refused."""
-    text = unit.designation if unit.designation is not None else unit.name
-    try:
-        designation = parse_designation(text)
-    except PumpjackError:
-        if unit.designation is not None:
-            raise
-        designation = None
-    if designation is not None and designation.unit_class not in SUPPORTED_CLASSES:
-        raise PumpjackError(f"unit {unit.name}: {text} is a {designation.unit_class} unit; its class is not "
-                            f"supported yet (the linkage model covers conventional units)")
-    rated = unit.rating
-
-    def pick(name: str) -> float | None:
-        given = getattr(rated, name)
-        return given if given is not None else (getattr(designation, name) if designation is not None else None)
-
-    return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
-
-
 @dataclass(frozen=True)
 class _Torques:
     """Torque terms [N·m] on one crank-angle grid and the net torque of the chosen method."""
@@ -124,7 +89,6 @@ def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, cr
            drive_efficiency: float = 1.0) -> Result:
     """The torque analysis of one card (see the module docstring)."""
     check_options(method, criterion)
-    ratings(unit)
     reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), crank_motion)
     found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
     title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank_motion, "
@@ -163,7 +127,7 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     ``runs[0]`` and the summary grid ``runs[1]`` (:data:`SUMMARY_STEPS` points): the
     analysis of a measured card and of a predicted one alike."""
     check_options(method, criterion)
-    rated = ratings(unit)
+    rated = unit.ratings()
     linkage = unit.geometry.mechanism()
     masses = unit.mass_model() if unit.masses is not None else None
     if method == "exact" and masses is None:

@@ -11,10 +11,10 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardOption,
-                       CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
-                       CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source,
-                       quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 class PhaseMode(str, Enum):
     pin_bore = "pin-bore"
@@ -66,6 +66,7 @@ def compare_redundancy(
         "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
     ] = None,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -73,7 +74,7 @@ def compare_redundancy(
     """Real mechanism (redundant constraints, elastic pitmans, errors) against the rational one.
 
     Reactions, joint moments and balancing torque of both from a dynamometer card."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     texts = {"crank_phase": crank_phase, "crank_radius": crank_radius, "pitman_length": pitman_length,
              "crank_pin_tilt_radial": crank_pin_tilt_radial, "crank_pin_tilt_tangential": crank_pin_tilt_tangential,
              "equalizer_pin_roll": equalizer_pin_roll, "equalizer_pin_yaw": equalizer_pin_yaw}
@@ -85,5 +86,6 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit), card_source(card, card_units, card_columns, card_format, card_points, stroke), spm, steps, crank_motion.value,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    sink.emit(run(load_unit(unit), source, spm, steps, crank_motion.value,
                   given, given_joints), SHOWN)

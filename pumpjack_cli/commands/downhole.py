@@ -10,10 +10,11 @@ import typer
 from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardOption, CardSpmOption,
-                       CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, CrankMotion,
-                       CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem, card_source,
-                       finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
+from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -41,6 +42,7 @@ def downhole(
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -48,7 +50,8 @@ def downhole(
     """Pump card from a surface dynamometer card through the rod string's wave equation.
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
-    sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns, card_format, card_points, stroke), spm, crank_motion.value, method.value,
+    sink = Output(fmt, units, out, plot, what)
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

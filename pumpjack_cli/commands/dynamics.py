@@ -12,9 +12,10 @@ from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..errors import PumpjackError
-from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardUnitsOption,
-                       FormatOption, Output, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite, positive)
+from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
+                       UnitsOption, UnitSystem, card_source, finite, positive)
+from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -55,6 +56,7 @@ def dynamics(
         help="with --well-model wave: Gibbs' damping factor nu of the rods, above 0 [default: the unit file's, "
              "else 0.05]", max=2.0, callback=positive)] = None,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -63,7 +65,7 @@ def dynamics(
 
     The periodic motion under the motor's characteristic, the well (or a dynamometer
     card) and the weights."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     if well_model is WellModel.rigid:
         for given, option in ((damping, "--damping"), (samples, "--samples")):
             if given is not None:

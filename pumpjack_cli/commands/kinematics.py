@@ -9,6 +9,7 @@ import typer
 from ..analysis.kinematics import kinematics as run
 from ..config import load_unit
 from ..options import SpmOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
+from ..options import What, WhatOption
 
 SHOWN = ("crank_angle", "time", "position", "velocity", "acceleration", "torque_factor")
 
@@ -18,6 +19,7 @@ def kinematics(
     spm: SpmOption = None,
     steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=10_000_000)] = 360,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -25,5 +27,5 @@ def kinematics(
     """Exact kinematics of the polished rod, beam and pitman for uniform crank rotation.
 
     The elementary and refined textbook approximations are printed beside it."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     sink.emit(run(load_unit(unit), spm, steps), SHOWN)

@@ -12,6 +12,7 @@ from ..analysis.predict import predict as run
 from ..config import load_unit
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, positive, quantity)
+from ..options import What, WhatOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
 
@@ -46,6 +47,7 @@ def predict(
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -54,7 +56,7 @@ def predict(
 
     The rods' damped wave equation driven by the exact polished-rod motion, the pump's
     valves at the bottom; loads, strokes, displacement, rod stresses, gearbox torque."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     overrides = WellOverrides(
         submergence=quantity(submergence, "length", "--submergence"),
         intake_pressure=quantity(intake_pressure, "pressure", "--intake-pressure"),

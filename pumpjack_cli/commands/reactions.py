@@ -8,10 +8,10 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardOption,
-                       CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
-                       CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source,
-                       quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
 
@@ -32,6 +32,7 @@ def reactions(
     counterweight_count: Annotated[int | None, typer.Option(help="number of counterweight blocks instead of the unit's", min=0, max=16)] = None,
     counterweight_radius: Annotated[str | None, typer.Option(help="counterweight radius instead of the unit's, e.g. '0.9 m'")] = None,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -40,8 +41,9 @@ def reactions(
 
     The spatial mechanism without redundant constraints (spherical pins), with weights
     and d'Alembert inertia."""
-    sink = Output(fmt, units, out, plot)
+    sink = Output(fmt, units, out, plot, what)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit), card_source(card, card_units, card_columns, card_format, card_points, stroke), spm, steps, crank_motion.value, weights=not no_weights,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit), source, spm, steps, crank_motion.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

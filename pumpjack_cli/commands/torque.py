@@ -9,9 +9,11 @@ import typer
 
 from ..analysis.torque import torque as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardFormatOption, CardPointsOption, StrokeOption, CardOption, CardSpmOption,
-                       CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, CrankMotion,
-                       CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
+from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
          "permissible_load_max")
@@ -49,6 +51,7 @@ def torque(
         help="efficiency of belt and gearbox between motor and crank, for the motor power", min=0.1, max=1.0,
         callback=finite)] = 1.0,
     fmt: FormatOption = None,
+    what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
     plot: PlotOption = None,
@@ -57,8 +60,9 @@ def torque(
 
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
-    sink = Output(fmt, units, out, plot)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns, card_format, card_points, stroke), spm, steps, crank_motion.value,
+    sink = Output(fmt, units, out, plot, what)
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit), source, spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

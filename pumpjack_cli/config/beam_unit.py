@@ -25,10 +25,12 @@ from .well import Well
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.card import Card
     from ..core.beam.counterbalance import CounterbalanceModel
+    from ..core.designations import Ratings
     from ..core.beam.masses import MassModel
     from ..core.beam.redundancy import JointCompliance, PinTilts, PitmanSection
     from ..core.beam.spatial import SpatialLinkage
     from ..core.dynamics.coefficients import Machine
+    from ..core.rods.plausibility import WellLimits
     from ..core.rods.pump import Pump
     from ..core.rods.string import RodString
     from ..core.well import WellLoad
@@ -240,6 +242,37 @@ class UnitConfig(Section):
                                                 self.masses.model() if self.masses is not None else None)
         except ConfigError as exc:
             raise ConfigError(f"unit {self.name}: {exc}") from None
+
+    def ratings(self) -> Ratings:
+        """The unit's ratings: its ``designation`` (or its name when that is a designation),
+        completed or overridden by ``[rating]`` ([API11E], [GOST5866])."""
+        from ..core.designations import Ratings
+
+        text = self.designation if self.designation is not None else self.name
+        try:
+            designation = parse_designation(text)
+        except DesignationError:
+            designation = None  # a name that is no designation (a validated designation parses)
+
+        def pick(name: str) -> float | None:
+            given = getattr(self.rating, name)
+            return given if given is not None else (getattr(designation, name) if designation is not None else None)
+
+        return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
+
+    def well_limits(self) -> WellLimits | None:
+        """What the rods and the fluid column of the ``[well]`` can produce, for the plausibility of
+        a card (:mod:`~pumpjack_cli.core.rods.plausibility`); None without a ``[well]``."""
+        import math
+
+        from ..core.rods.plausibility import WellLimits
+        from ..core.rods.pump import discharge_pressure
+
+        if self.well is None:
+            return None
+        w = self.well
+        largest = discharge_pressure(w.pump_vertical_depth(), w.fluid_density, w.tubing_head_pressure)
+        return WellLimits(self.rods(), w.fluid_density, largest * math.pi * w.plunger_diameter**2 / 4.0)
 
     def rigid_well_load(self) -> WellLoad:
         """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod

@@ -20,6 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from ..core.designations import API_CLASSES
 from .geometry_names import linkage_of
 
 
@@ -54,10 +55,15 @@ def _designation_class(designation: str | None) -> str | None:
     """
     if designation is None:
         return None
-    head = designation.strip().upper().split("-", 1)[0]
+    head = designation.strip().upper().split("-", 1)[0].strip()
     found = [(len(letter), name) for name, kind in UNIT_CLASSES.items() for letter in kind.letters
              if head == letter]
-    return max(found)[1] if found else None
+    if found:
+        return max(found)[1]
+    if head in API_CLASSES:
+        raise ValueError(f"the designation {designation!r} names a {API_CLASSES[head]} unit, a kind of unit this "
+                         f"version does not model (kinds: {', '.join(UNIT_CLASSES)})")
+    return None
 
 
 def unit_class(geometry: Any, designation: str | None) -> str:

@@ -110,6 +110,13 @@ class Well(Section):
                              f"of the pump depth {self.pump_depth:.6g} m)")
         if self.pump_submergence is not None and self.pump_intake_pressure is not None:
             raise ValueError("give pump_submergence or pump_intake_pressure, not both")
+        from ..core.rods.pump import TUBING
+
+        for name, inner in (("tubing_inner_diameter", self.tubing_inner_diameter),
+                            ("tubing_size", TUBING[self.tubing_size][1] if self.tubing_size else None)):
+            if inner is not None and self.plunger_diameter >= inner:
+                raise ValueError(f"plunger_diameter {self.plunger_diameter * 1e3:.4g} mm does not pass through the "
+                                 f"tubing of {name} (inner diameter {inner * 1e3:.4g} mm)")
         return self
 
     def rods(self) -> RodString:

@@ -160,7 +160,7 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
                f"{stroke / factor:.4g} {unit} by {100 * mismatch:+.1f} %")
     notes = list(warnings)
     if abs(mismatch) > STROKE_ERROR:
-        raise CardError(f"{message}; wrong unit, crank hole or position units?")
+        raise CardError(f"{message}; {position_slip(card_stroke / stroke, unit) or 'wrong unit, crank hole or position units?'}")
     if abs(mismatch) > STROKE_WARNING:
         notes.append(f"{message}; positions scaled to the unit's stroke")
     work = loop_work(position, load)
@@ -175,12 +175,32 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
     scaled = (position - position.min()) * (stroke / card_stroke)
     if time is None:
         theta = crank_angle_from_position(mechanism, scaled, upstroke_points(scaled))
+        _check_coverage(theta, source, "positions")
         return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, reversed=reversed)
     fit = _rotation(mechanism, time, scaled, position_unit, source, notes)
     theta = fit.crank_angle % (2.0 * math.pi)
     _check_coverage(theta, source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
     return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, time, fit.speed,
                       fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke, reversed)
+
+
+#: Lengths a position column is commonly written in [m], for naming a slip.
+LENGTH_UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
+
+
+def position_slip(ratio: float, written: str) -> str:
+    """The unit slip that makes a card's stroke ``ratio`` times the unit's when its positions are
+    labelled ``written`` (numbers in another length unit), said as a question, or '' when no
+    unit of :data:`LENGTH_UNITS` is within :data:`STROKE_ERROR`.
+
+    >>> position_slip(1000.0, "m"), position_slip(1 / 0.0254 * 1.01, "m"), position_slip(1e-3, "in")
+    ('positions in mm written as m?', 'positions in in written as m?', '')
+    """
+    read = LENGTH_UNITS.get(written)
+    for true, size in LENGTH_UNITS.items():
+        if read is not None and true != written and abs(ratio / (read / size) - 1.0) <= STROKE_ERROR:
+            return f"positions in {true} written as {written}?"
+    return ""
 
 
 def _check_coverage(theta: np.ndarray, source: str, what: str) -> None:

@@ -71,6 +71,16 @@ EXPECTED = (
 
 
 @dataclass(frozen=True)
+class Ratings:
+    """A unit's ratings: gearbox (reducer) peak torque [N·m], structure (polished-rod load) [N]
+    and maximum stroke [m]; None where unknown."""
+
+    gearbox_torque: float | None
+    structure_load: float | None
+    max_stroke: float | None
+
+
+@dataclass(frozen=True)
 class Designation:
     """Ratings read from a unit designation, SI.
 

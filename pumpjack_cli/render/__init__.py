@@ -7,25 +7,28 @@ of the system (``position_m`` / ``position_in``; dimensionless quantities carry 
 One module per job: :mod:`.formats` (the format names and plot suffixes, declared once),
 :mod:`.delimited` (CSV and JSON), :mod:`.table` (the terminal table), :mod:`.plot`
 (matplotlib), :mod:`.targets` (output files and standard output), :mod:`.display`
-(values and unit labels in the unit system, shared by the writers).
+(values and unit labels in the unit system, shared by the writers). What a text output
+holds (:data:`~.formats.CONTENTS`): the columns (a table and JSON add the summary) or
+the summary only (CSV: one row per value).
 
 This package imports nothing heavy at start-up (matplotlib only for a plot).
 """
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import os
 import sys
 from pathlib import Path
 
 from ..errors import PumpjackError
 from ..results import Result, check_finite
-from ..text_input import describe_os_error
-from .delimited import write_csv, write_json
-from .formats import CSV, JSON, PLOT_SUFFIXES, TABLE, choose_format
+from .delimited import write_csv, write_json, write_summary_csv
+from .formats import COLUMNS, CSV, JSON, PLOT_SUFFIXES, SUMMARY, TABLE, choose_format
 from .plot import draw_plot
 from .table import FILE_TABLE_WIDTH, write_table
-from .targets import Target, drop_stdout
+from .targets import Target, drop_stdout, standard_output
 
 __all__ = ["Outputs", "drop_stdout"]
 
@@ -34,14 +37,15 @@ _WRITERS = {CSV: write_csv, JSON: write_json, TABLE: write_table}
 
 class Outputs:
     """Where a result goes, checked when a command starts (before anything is computed):
-    stdout or an ``--output`` file in a format, and an optional ``--plot`` file.
+    stdout or an ``--output`` file in a format holding ``what`` (:data:`~.formats.CONTENTS`),
+    and an optional ``--plot`` file (drawn from the columns whatever the output holds).
 
     :meth:`emit` writes the plot and the output to temporary files (or stdout) and moves
     them into place only when both are complete, so a failure leaves every pre-existing
     file as it was and no temporary file behind.
     """
 
-    def __init__(self, fmt: str | None, system: str, output: Path | None, plot: Path | None):
+    def __init__(self, fmt: str | None, system: str, output: Path | None, plot: Path | None, what: str = COLUMNS):
         if plot is not None and plot.suffix.lower() not in PLOT_SUFFIXES:
             raise PumpjackError(f"--plot {plot}: use a file ending in {', '.join(PLOT_SUFFIXES)}")
         if output is not None and plot is not None and os.path.abspath(output) == os.path.abspath(plot):
@@ -50,6 +54,7 @@ class Outputs:
             raise PumpjackError("standard output is closed: give --output FILE")
         self.system = system
         self.format = choose_format(fmt, output)
+        self.what = what
         self.output = None if output is None else Target(output, "--output")
         self.plot = None if plot is None else Target(plot, "--plot")
 
@@ -59,28 +64,23 @@ class Outputs:
         targets = [t for t in (self.plot, self.output) if t is not None]
         for target in targets:
             target.refuse_input()
+        # the summary alone: the result without its columns, or in CSV (one table) a row per value
+        shown = result if self.what == COLUMNS else dataclasses.replace(result, columns=())
+        write = write_summary_csv if (self.format, self.what) == (CSV, SUMMARY) else _WRITERS[self.format]
         try:
             if self.plot is not None:
-                with self.plot.open(binary=True) as stream:
+                with self.plot.written(binary=True) as stream:
                     draw_plot(result, self.system, stream, self.plot.path.suffix.lstrip(".").lower())
             if self.output is None:
-                _WRITERS[self.format](result, self.system, sys.stdout)
-                sys.stdout.flush()
+                with standard_output() as stream:
+                    write(shown, self.system, stream)
             else:
-                with self.output.open() as stream:
-                    if self.format == TABLE:
-                        write_table(result, self.system, stream, width=FILE_TABLE_WIDTH)
-                    else:
-                        _WRITERS[self.format](result, self.system, stream)
+                if self.format == TABLE:
+                    write = functools.partial(write_table, width=FILE_TABLE_WIDTH)
+                with self.output.written() as stream:
+                    write(shown, self.system, stream)
             for target in targets:
                 target.commit()
-        except BrokenPipeError:
-            raise
-        except OSError as exc:
-            if self.output is None and exc.filename is None:
-                drop_stdout()
-                raise PumpjackError(f"cannot write standard output: {describe_os_error(exc)}") from None
-            raise PumpjackError(f"cannot write {exc.filename or 'the output'}: {describe_os_error(exc)}") from None
         finally:
             for target in targets:
                 target.discard()

@@ -69,6 +69,15 @@ def write_csv(result: Result, system: str, stream: TextIO) -> None:
         _FORKED = None
 
 
+def write_summary_csv(result: Result, system: str, stream: TextIO) -> None:
+    """The summary as CSV: a header ``name,value,unit,description``, then one row per value,
+    named as in JSON's summary (with the unit suffix), numbers by ``repr``, text as it is."""
+    writer = csv.writer(stream, lineterminator="\n")
+    writer.writerow(("name", "value", "unit", "description"))
+    for (name, value), s in zip(converted_summary(result, system).items(), result.summary):
+        writer.writerow((name, value if isinstance(value, str) else repr(value), unit_label(s.quantity, system), s.description))
+
+
 def _json_values(column: Column, values: Any, system: str) -> str:
     """A slice of a column as the lines of a JSON array indented as ``json.dump(indent=1)``
     writes them inside the document's "series" (floats by ``repr``, as json does)."""

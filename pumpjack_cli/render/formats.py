@@ -1,6 +1,7 @@
-"""The output format names and plot file suffixes, declared once, and the choice of a format.
+"""The output format names, contents and plot file suffixes, declared once, and the choice of a format.
 
-``options.Format`` (the ``--format`` choices) is built from :data:`FORMATS`.
+``options.Format`` (the ``--format`` choices) is built from :data:`FORMATS`, ``options.What``
+(the ``--what`` choices) from :data:`CONTENTS`.
 """
 
 from __future__ import annotations
@@ -11,6 +12,9 @@ from pathlib import Path
 #: The output formats, in the order ``--help`` lists them.
 FORMATS = ("table", "csv", "json")
 TABLE, CSV, JSON = FORMATS
+#: What a text output holds: the columns (a table and JSON add the summary), or the summary alone.
+CONTENTS = ("columns", "summary")
+COLUMNS, SUMMARY = CONTENTS
 #: The format an ``--output`` file's suffix implies (any other suffix: csv).
 SUFFIX_FORMATS = {".json": JSON, ".csv": CSV, ".txt": TABLE}
 #: The file suffixes of a ``--plot`` file, each its matplotlib file format.

@@ -1,6 +1,13 @@
-"""The plot of a result: its panels drawn with matplotlib, imported only when a plot is drawn."""
+"""The plot of a result: its panels drawn with matplotlib, imported only when a plot is drawn.
+
+The plot goes to a file: a figure drawn by the file backend of its format (Agg for PNG),
+never through pyplot, so no interactive backend is needed, and the one named by the
+environment (``MPLBACKEND``, which matplotlib checks when imported) is ignored.
+"""
 
 from __future__ import annotations
+
+import os
 
 from ..quantities import output_unit
 from ..results import Result
@@ -10,11 +17,9 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
     """Each panel against its x column (default: the first column), dashed curves for
     approximations and bounds, further curves, horizontal lines at the panel's levels,
     to a binary stream in ``file_format`` (png, svg or pdf)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     import numpy as np
+
+    Figure = _figure_class()
 
     def shown(name: str):
         column = result.column(name)
@@ -28,7 +33,8 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
         return unit.convert(np.asarray(curve_axis, dtype=float)), unit
 
     shares_x = all(panel.x is None and not panel.curves for panel in result.panels)
-    fig, axes = plt.subplots(len(result.panels), 1, sharex=shares_x, figsize=(8, 2.8 * len(result.panels)))
+    fig = Figure(figsize=(8, 2.8 * len(result.panels)))
+    axes = fig.subplots(len(result.panels), 1, sharex=shares_x)
     for ax, panel in zip(np.atleast_1d(axes), result.panels):
         x_name = panel.x or result.columns[0].name
         x, x_unit = shown(x_name)
@@ -59,4 +65,15 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
     fig.suptitle(result.title, fontsize="medium")
     fig.tight_layout()
     fig.savefig(stream, format=file_format)
-    plt.close(fig)
+
+
+def _figure_class():
+    """matplotlib's Figure, imported with ``MPLBACKEND`` out of sight (an unknown name would
+    stop the import; the figure never uses the backend it names)."""
+    backend = os.environ.pop("MPLBACKEND", None)
+    try:
+        from matplotlib.figure import Figure
+    finally:
+        if backend is not None:
+            os.environ["MPLBACKEND"] = backend
+    return Figure

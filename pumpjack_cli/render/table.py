@@ -114,10 +114,10 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
     (``width`` [characters]: default the terminal's)."""
     width = width if width is not None else shutil.get_terminal_size(fallback=(80, 24)).columns
     width = max(width, 40)
-    lines = _wrap(result.title, width) + [""]
+    lines = _wrap(result.title, width)
     summary = _summary_lines(result, system, width)
     if summary:
-        lines += summary + [""]
+        lines += [""] + summary
     brief = [c for c in result.columns if c.brief]
     columns = []
     for c in brief:
@@ -128,10 +128,8 @@ def write_table(result: Result, system: str, stream: TextIO, width: int | None =
                         c.quantity == TEXT))
     if columns:
         columns = _wrap_text_columns(columns, width)
-        for number, block in enumerate(_table_blocks(columns, width)):
-            if number:
-                lines.append("")
-            lines += _row_lines(columns, block)
+        for block in _table_blocks(columns, width):
+            lines += [""] + _row_lines(columns, block)
     hidden = len(result.columns) - len(brief)
     if hidden:
         lines += ["", f"{hidden} more columns with --format {CSV} or {JSON}"]

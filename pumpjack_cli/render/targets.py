@@ -1,14 +1,62 @@
-"""Where output goes: files written atomically (or in place for devices), and standard output."""
+"""Where output goes: files written atomically (or in place for devices), and standard output.
+
+Text goes through :class:`EncodedText`: a stream whose encoding cannot write a character
+(standard output under ``PYTHONIOENCODING=ascii`` or a locale without UTF-8, a file name
+that is not UTF-8) gets its plain-ASCII spelling (:data:`PLAIN`) or a backslash escape,
+never an encoding error.
+"""
 
 from __future__ import annotations
 
 import os
 import stat
 import sys
+from contextlib import contextmanager
+from functools import cache
 from pathlib import Path
 
 from ..errors import PumpjackError
 from ..text_input import describe_os_error, input_kind
+
+#: Plain-ASCII spellings of the non-ASCII characters of the results' titles, names, units and
+#: meanings (``tests/render/test_targets.py`` checks that every one has its spelling); units
+#: joined by ``*`` as the quantity parser reads them back (``N*m``, ``kg*m^2``).
+PLAIN = {
+    "°": "deg", "²": "^2", "³": "^3", "⁴": "^4", "ᵀ": "^T", "·": "*", "⋅": "*", "×": "x", "½": "1/2",
+    "−": "-", "–": "-", "—": "--", "′": "'", "″": "''", "…": "...", "→": "->", "∫": "int ", "µ": "u",
+    "α": "alpha", "δ": "delta", "Δ": "Delta", "ε": "epsilon", "θ": "theta", "λ": "lambda", "μ": "mu",
+    "ν": "nu", "π": "pi", "τ": "tau", "φ": "phi", "Φ": "Phi", "χ": "chi", "ψ": "psi", "ω": "omega",
+}
+
+
+@cache
+def _spellings(encoding: str) -> dict[int, str]:
+    """The translation table of the characters of :data:`PLAIN` that ``encoding`` cannot encode
+    (encoded ignoring errors, such a character is nothing)."""
+    nothing = "".encode(encoding)
+    return {ord(char): spelled for char, spelled in PLAIN.items() if char.encode(encoding, "ignore") == nothing}
+
+
+def plain(text: str, encoding: str) -> str:
+    """``text`` as ``encoding`` can write it: characters it cannot encode in their spelling of
+    :data:`PLAIN`, any other as a backslash escape (``\\u0421``, ``\\udcff``)."""
+    return text.translate(_spellings(encoding)).encode(encoding, "backslashreplace").decode(encoding)
+
+
+class EncodedText:
+    """A text stream that writes only what its encoding can encode: a text that it cannot
+    (rare: the stream raised before writing any of it) is written again made :func:`plain`."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.encoding = getattr(stream, "encoding", None) or "utf-8"
+
+    def write(self, text: str) -> int:
+        try:
+            return self.stream.write(text)
+        except UnicodeEncodeError:
+            return self.stream.write(plain(text, self.encoding))
+
 
 #: Output paths written in place, never replaced by a rename (devices, /dev/stdout, /proc/self/fd/N).
 SPECIAL_FILES = ("/dev/", "/proc/")
@@ -54,18 +102,21 @@ class Target:
         if kind is not None:
             raise PumpjackError(f"{self.option} {self.path}: is the {kind} this run read; write the result elsewhere")
 
-    def open(self, binary: bool = False):
-        """A stream to write to: the temporary file, or the target itself when written in place."""
-        try:
+    @contextmanager
+    def written(self, binary: bool = False):
+        """A stream to write to (UTF-8 text, or bytes): the temporary file, or the target itself
+        when written in place; a failure to open, write or close it names the target."""
+        with _failures_named(f"{self.option} {self.path}"):
             if self.in_place:
-                return open(self.path, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
-            import tempfile
+                stream = open(self.path, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
+            else:
+                import tempfile
 
-            fd, name = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.path.suffix, dir=self.path.parent)
-            self.tmp = Path(name)
-            return os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
-        except OSError as exc:
-            raise PumpjackError(f"{self.option} {self.path}: cannot write: {describe_os_error(exc)}") from None
+                fd, name = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.path.suffix, dir=self.path.parent)
+                self.tmp = Path(name)
+                stream = os.fdopen(fd, "wb" if binary else "w", **({} if binary else {"encoding": "utf-8", "newline": ""}))
+            with stream:
+                yield stream if binary else EncodedText(stream)
 
     def commit(self) -> None:
         """Move the written temporary file onto the target, with the target's mode (or the usual one)."""
@@ -74,14 +125,37 @@ class Target:
         if self.mode is None:
             umask = os.umask(0)
             os.umask(umask)
-        os.chmod(self.tmp, self.mode if self.mode is not None else 0o666 & ~umask)
-        os.replace(self.tmp, self.path)
+        with _failures_named(f"{self.option} {self.path}"):
+            os.chmod(self.tmp, self.mode if self.mode is not None else 0o666 & ~umask)
+            os.replace(self.tmp, self.path)
         self.tmp = None
 
     def discard(self) -> None:
         if self.tmp is not None:
             self.tmp.unlink(missing_ok=True)
             self.tmp = None
+
+
+@contextmanager
+def standard_output():
+    """Standard output as a stream to write to, flushed at the end; a failure to write names it
+    and drops what is still buffered."""
+    with _failures_named("standard output", drop_stdout):
+        yield EncodedText(sys.stdout)
+        sys.stdout.flush()
+
+
+@contextmanager
+def _failures_named(where: str, cleanup=lambda: None):
+    """An OSError as one line naming where the output went, after ``cleanup`` (a closed pipe
+    stays a BrokenPipeError: the run stops quietly)."""
+    try:
+        yield
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        cleanup()
+        raise PumpjackError(f"{where}: cannot write: {describe_os_error(exc)}") from None
 
 
 def drop_stdout() -> None:

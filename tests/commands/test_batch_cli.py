@@ -270,10 +270,10 @@ def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_p
     rows = field(tmp_path, 3)
     real = per_card._PlacedOnce.read
 
-    def faulty(self, linkage):
+    def faulty(self, unit, spm):
         if self.name == rows[1][2]:
             raise ZeroDivisionError("simulated")
-        return real(self, linkage)
+        return real(self, unit, spm)
 
     monkeypatch.setattr(per_card._PlacedOnce, "read", faulty)
     store = tmp_path / "r.sqlite"

@@ -204,7 +204,7 @@ def test_card_in_the_wrong_load_unit_is_refused_by_the_rods(run_cli, tmp_path):
     code, out, err = run_cli("downhole", "c-80d-133-48", "--card", path, "-f", "csv")
     assert code == 2 and out == ""
     assert err.startswith("pumpjack: error: ") and err.count("\n") == 1
-    assert "buoyant" in err
+    assert "lbf written as N?" in err
 
 
 def test_unit_without_a_well_is_refused(run_cli):

@@ -139,7 +139,8 @@ def test_mark_ii_is_refused_by_name(run_cli, tmp_path):
     unit.write_text(text.replace('designation = "C-80D-133-48"', 'designation = "M-912D-427-192"'), encoding="utf-8")
     code, out, err = run_cli("torque", unit, "--card", sample_card("c-80d-133-48"))
     assert code == 2 and out == "" and err.count("\n") == 1
-    assert "M-912D-427-192 is a Mark II unit; its class is not supported yet" in err
+    assert "geometry: the designation 'M-912D-427-192' names a Mark II unit, a kind of unit this version does not " \
+           "model" in err
 
 
 def test_exact_method_needs_masses(run_cli):

@@ -143,11 +143,11 @@ class _PlacedOnce:
         self.raw, self.name = raw, name
         self._reading = None
 
-    def read(self, mechanism):
+    def read(self, unit, spm=None):
         from ..card_runs import noted, place
 
         if self._reading is None:
-            self._reading = noted(place(self.raw, mechanism))
+            self._reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
         return self._reading
 
 

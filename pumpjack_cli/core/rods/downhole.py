@@ -36,7 +36,7 @@ from .string import RodString
 DEFAULT_DAMPING_FACTOR = 0.05
 
 #: A card whose load-transfer slope exceeds this multiple of the rods' spring constant
-#: is refused (see :func:`check_card`).
+#: is refused (:mod:`.plausibility`).
 LOAD_TRANSFER_MARGIN = 2.0
 
 _METHODS = {"gibbs": gibbs.march, "everitt-jennings": everitt_jennings.march}
@@ -135,7 +135,7 @@ def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndar
 
 def pump_card(string: RodString, period: float, position, load, *, fluid_density: float,
               damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
-              harmonics: int | None = None, gravity: float = STANDARD_GRAVITY, check: bool = True) -> DownholeCard:
+              harmonics: int | None = None, gravity: float = STANDARD_GRAVITY) -> DownholeCard:
     """Pump card (plunger position and net plunger load) from a surface card.
 
     Parameters
@@ -159,8 +159,6 @@ def pump_card(string: RodString, period: float, position, load, *, fluid_density
         ``gibbs`` only: highest harmonic kept (default all the grid resolves).
     gravity : float
         g [m/s^2].
-    check : bool
-        Run :func:`check_card` first (default).
 
     Returns
     -------
@@ -170,8 +168,9 @@ def pump_card(string: RodString, period: float, position, load, *, fluid_density
     Raises
     ------
     DownholeError
-        Unknown method (the message lists the valid ones; it is a ValueError), a card
-        that is not finite, or one :func:`check_card` refuses.
+        Unknown method (the message lists the valid ones; it is a ValueError), or a card
+        that is not finite. Whether these rods can have made the card is the run layer's
+        question, asked once for every command (:mod:`.plausibility`).
 
     References
     ----------
@@ -179,8 +178,6 @@ def pump_card(string: RodString, period: float, position, load, *, fluid_density
     """
     position, load = _card_arrays(period, position, load, "surface card")
     _march_function(method)
-    if check:
-        check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
     return _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=damping_factor,
                   method=method, harmonics=harmonics, gravity=gravity, upward=False)
 
@@ -237,7 +234,7 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
     @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
     def excess(nu: float) -> float:
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
-                         method=method, gravity=gravity, check=False)
+                         method=method, gravity=gravity)
         return float(card_work(card.pump_position, card.pump_load)) - pump_work
 
     undamped, damped = excess(0.0), excess(largest)
@@ -271,13 +268,11 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
     Raises
     ------
     DownholeError
-        When the card cannot come from these rods (:func:`check_card`), when even the
-        undamped rods deliver less than F_o S_n (the fluid load is lower than assumed), or
+        When even the undamped rods deliver less than F_o S_n (the fluid load is lower than assumed), or
         when more than ``largest`` would be needed.
     """
     from scipy.optimize import brentq
 
-    check_card(string, position, load, fluid_density=fluid_density, gravity=gravity)
     position, load = _card_arrays(period, position, load, "surface card")
     if position.ndim != 1:
         raise DownholeError("damping_from_fluid_load takes one card of shape (N,)")
@@ -285,7 +280,7 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
     @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
     def excess(nu: float) -> float:
         card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
-                         method=method, gravity=gravity, check=False)
+                         method=method, gravity=gravity)
         net = float(summarise_pump_card(card.pump_position, card.pump_load).net_stroke)
         return float(card_work(card.pump_position, card.pump_load)) - fluid_load * net
 
@@ -307,7 +302,7 @@ def load_transfer_slope(position, load) -> np.ndarray:
     R / S steep, so R / S is a lower bound of the card's steepest load transfer. A
     quasi-static string transfers load no faster than its spring constant k_r (a stuck
     plunger gives exactly R / S = k_r); dynamic loads add to R, hence the margin of
-    :func:`check_card`. A measured slope such as the 25 %-75 % secant of the pickup is
+    :mod:`.plausibility`. A measured slope such as the 25 %-75 % secant of the pickup is
     not used: the rods' inertia near the bottom of the stroke makes it steep on sound
     cards.
     """
@@ -316,43 +311,3 @@ def load_transfer_slope(position, load) -> np.ndarray:
     stroke = np.ptp(position, axis=-1)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(stroke > 0, np.ptp(load, axis=-1) / np.where(stroke > 0, stroke, 1.0), np.inf)
-
-
-def check_card(string: RodString, position, load, *, fluid_density: float,
-               gravity: float = STANDARD_GRAVITY) -> None:
-    """Refuse a surface card these rods cannot have produced, with a one-line reason.
-
-    * a minimum load above the rods' weight in air W_r (the polished rod never carries
-      more than the whole string at the bottom of a downstroke);
-    * a maximum load below their buoyant weight W_rf (the upstroke lifts the rods);
-    * a load-transfer slope (:func:`load_transfer_slope`, the card's R / S) above
-      LOAD_TRANSFER_MARGIN times the rods' spring constant k_r = 1 / sum(L_i / (E_i A_i))
-      [API11L]: a position axis in the wrong unit or rod data of the wrong well.
-
-    Raises
-    ------
-    DownholeError
-        Naming the card (for a batch), the quantity and the limit.
-    """
-    position, load = (np.atleast_2d(array) for array in as_cards(position, load, "surface card"))
-    weight_in_air = string.weight_in_air(gravity)
-    buoyant = string.buoyant_weight(fluid_density, gravity)
-    slope = load_transfer_slope(position, load)
-    limit = LOAD_TRANSFER_MARGIN * string.spring_constant
-    tests = (
-        (load.min(axis=-1) > weight_in_air,
-         lambda i: f"minimum load {load[i].min() / 1e3:.4g} kN is above the rods' weight in air "
-                   f"{weight_in_air / 1e3:.4g} kN: wrong load datum or wrong rod string"),
-        (load.max(axis=-1) < buoyant,
-         lambda i: f"maximum load {load[i].max() / 1e3:.4g} kN is below the rods' buoyant weight "
-                   f"{buoyant / 1e3:.4g} kN: wrong load datum or wrong rod string"),
-        (slope > limit,
-         lambda i: f"load-transfer slope {slope[i] / 1e3:.4g} kN/m is stiffer than {LOAD_TRANSFER_MARGIN:g} "
-                   f"x the rods' spring constant {string.spring_constant / 1e3:.4g} kN/m: "
-                   f"position in the wrong unit or wrong rod string"),
-    )
-    for failed, message in tests:
-        if failed.any():
-            index = int(np.flatnonzero(failed)[0])
-            prefix = f"surface card {index + 1}: " if len(load) > 1 else "surface card: "
-            raise DownholeError(prefix + message(index))

@@ -26,7 +26,7 @@ from .string import RodString
 
 
 def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffness: float,
-                    damping: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                    damping: float | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic."""
     beta = np.sqrt((-(omega**2) + 1j * omega * damping).astype(complex)) / wave_speed
     z = beta * length
@@ -35,7 +35,7 @@ def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffne
     return np.cosh(z), length * sinhc / stiffness, stiffness * z * np.sinh(z) / length
 
 
-def march(string: RodString, period: float, position: np.ndarray, load: np.ndarray, damping: float,
+def march(string: RodString, period: float, position: np.ndarray, load: np.ndarray, damping: float | np.ndarray,
           harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Displacement and dynamic tension at every section end from those at the top.
 
@@ -49,8 +49,9 @@ def march(string: RodString, period: float, position: np.ndarray, load: np.ndarr
         w(0, t_k) [m], shape (..., N), uniform grid t_k = k T / N, up positive.
     load : numpy.ndarray
         Dynamic tension F(0, t_k) [N], same shape.
-    damping : float
-        c [1/s].
+    damping : float or numpy.ndarray
+        c [1/s]; an array of shape (..., 1) solves for several dampings at once (its axes
+        broadcast against the cards').
     harmonics : int, optional
         Highest harmonic kept; default (N - 1) // 2, every harmonic the grid resolves
         (the Nyquist term of an even N is dropped: its sine part is not sampled).
@@ -69,6 +70,8 @@ def march(string: RodString, period: float, position: np.ndarray, load: np.ndarr
     omega = 2.0 * np.pi * np.arange(highest + 1) / period
     w = np.fft.rfft(position, axis=-1)[..., : highest + 1]
     f = np.fft.rfft(load, axis=-1)[..., : highest + 1]
+    shape = np.broadcast_shapes(w.shape, f.shape, np.shape(damping))
+    w, f = np.broadcast_to(w, shape), np.broadcast_to(f, shape)
     ends_w, ends_f = [w], [f]
     stiffness = string.youngs_modulus * string.area
     for length, speed, ea in zip(string.length, string.wave_speed, stiffness):

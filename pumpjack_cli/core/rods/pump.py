@@ -67,6 +67,17 @@ def tubing_stiffness(size: str, length: float, modulus: float = TUBING_MODULUS) 
     return modulus * math.pi * (outer**2 - inner**2) / 4.0 / length
 
 
+def discharge_pressure(pump_depth: float, fluid_density: float, tubing_head_pressure: float = 0.0,
+                       gravity: float = STANDARD_GRAVITY) -> float:
+    """Pressure at the pump's discharge, p_d = p_th + rho g L [Pa], gauge: the tubing full of the
+    produced fluid over the pump's true vertical depth L [m] ([API11L]).
+
+    >>> round(discharge_pressure(1530.0, 820.0, 0.0, 9.81))
+    12307338
+    """
+    return tubing_head_pressure + fluid_density * gravity * pump_depth
+
+
 def pump_pressures(pump_depth: float, fluid_density: float, *, submergence: float | None = None,
                    intake_pressure: float | None = None, tubing_head_pressure: float = 0.0,
                    casing_head_pressure: float = 0.0, gravity: float = STANDARD_GRAVITY) -> tuple[float, float]:
@@ -87,7 +98,7 @@ def pump_pressures(pump_depth: float, fluid_density: float, *, submergence: floa
     for name, value in (("pump depth", pump_depth), ("fluid density", fluid_density)):
         if not (math.isfinite(value) and value > 0):
             raise PredictionError(f"{name} must be positive and finite, got {value}")
-    discharge = tubing_head_pressure + fluid_density * gravity * pump_depth
+    discharge = discharge_pressure(pump_depth, fluid_density, tubing_head_pressure, gravity)
     if submergence is not None:
         if not 0.0 <= submergence <= pump_depth:
             raise PredictionError(f"submergence {submergence:.6g} m must lie between 0 and the pump depth {pump_depth:.6g} m")

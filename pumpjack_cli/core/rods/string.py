@@ -245,6 +245,20 @@ class RodString:
             raise DownholeError(f"damping factor must be finite and not negative, got {damping_factor:g}")
         return float(np.pi * self.mean_wave_speed * damping_factor / (2.0 * self.total_length))
 
+    def subdivided(self, pieces: int) -> RodString:
+        """The same string cut into at least ``pieces`` sections, none longer than L / pieces (to
+        read the wave solution along the rods, not only at the tapers' ends).
+
+        >>> s = RodString([600.0, 400.0], [4e-4, 3e-4], [2e11, 2e11], [3.2, 2.4]).subdivided(10)
+        >>> s.length.tolist(), s.total_length
+        ([100.0, 100.0, 100.0, 100.0, 100.0, 100.0, 100.0, 100.0, 100.0, 100.0], 1000.0)
+        """
+        counts = np.maximum(1, np.ceil(self.length * pieces / self.total_length - 1e-9)).astype(int)
+        return RodString(np.repeat(self.length / counts, counts), np.repeat(self.area, counts),
+                         np.repeat(self.youngs_modulus, counts), np.repeat(self.mass_per_length, counts),
+                         np.repeat(self.material_density, counts), np.repeat(self.tensile_strength, counts),
+                         tuple(name for name, count in zip(self.names, counts) for _ in range(count)))
+
     def reversed(self) -> RodString:
         """The same string listed from the pump up (for marching from the pump)."""
         return RodString(self.length[::-1], self.area[::-1], self.youngs_modulus[::-1],

@@ -16,7 +16,6 @@ from hypothesis import strategies as st
 from pumpjack_cli.core.rods.analysis import card_work
 from pumpjack_cli.core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
-    check_card,
     damping_for_pump_work,
     downhole_methods,
     pump_card,
@@ -81,9 +80,8 @@ def well_cards(name, samples=200, damping=DEFAULT_DAMPING_FACTOR, unload=0.52):
 @pytest.mark.parametrize("well", WELLS)
 def test_synthetic_surface_cards_are_realistic(well):
     string, period, density, _, _, surface = well_cards(well)
-    # the checks pass, the card sits around the buoyant weight with a load range of the
-    # order of the fluid load, and the polished-rod stroke exceeds the plunger's (stretch)
-    check_card(string, surface.surface_position, surface.surface_load, fluid_density=density)
+    # the card sits around the buoyant weight with a load range of the order of the fluid
+    # load, and the polished-rod stroke exceeds the plunger's (stretch)
     assert surface.surface_load.min() < string.buoyant_weight(density) < surface.surface_load.max()
     assert np.ptp(surface.surface_position) > np.ptp(surface.pump_position)
 
@@ -270,27 +268,12 @@ def _surface(well="sk8-1530m"):
     return string, period, density, surface.surface_position, surface.surface_load
 
 
-@pytest.mark.parametrize("change, message", [
-    (lambda p, f, s: (p, f + 1.2 * s.weight_in_air()), "minimum load .* kN is above the rods' weight in air"),
-    (lambda p, f, s: (p, f - 0.5 * f.max()), "maximum load .* kN is below the rods' buoyant weight"),
-    (lambda p, f, s: (p / 1000.0, f), "load-transfer slope .* is stiffer than 2 x the rods' spring constant"),
-    (lambda p, f, s: (np.where(np.arange(p.size) == 7, np.nan, p), f), "position is not finite at sample 7"),
-])
-def test_impossible_cards_are_refused_with_one_line(change, message):
+def test_a_card_that_is_not_finite_is_refused_with_one_line():
     string, period, density, position, load = _surface()
-    position, load = change(position, load, string)
-    with pytest.raises(DownholeError, match="surface card: " + message) as error:
+    position = np.where(np.arange(position.size) == 7, np.nan, position)
+    with pytest.raises(DownholeError, match="surface card: position is not finite at sample 7") as error:
         pump_card(string, period, position, load, fluid_density=density)
     assert "\n" not in str(error.value)
-
-
-def test_a_batch_names_the_refused_card():
-    string, period, density, position, load = _surface()
-    loads = np.stack([load, load, load + 2 * string.weight_in_air()])
-    with pytest.raises(DownholeError, match="surface card 3: minimum load"):
-        pump_card(string, period, np.stack([position] * 3), loads, fluid_density=density)
-    # check=False lets the arithmetic run (for the lead's own diagnostics)
-    pump_card(string, period, np.stack([position] * 3), loads, fluid_density=density, check=False)
 
 
 @pytest.mark.parametrize("period, position, load, message", [
@@ -333,7 +316,7 @@ def test_any_string_and_band_limited_card_round_trip_and_energy(diameters, lengt
     load = 1e4 * load
     up = surface_card(string, period, position, load, fluid_density=900.0, damping_factor=damping, method=method)
     down = pump_card(string, period, up.surface_position, up.surface_load, fluid_density=900.0,
-                     damping_factor=damping, method=method, check=False)
+                     damping_factor=damping, method=method)
     assert down.pump_position == pytest.approx(position, abs=1e-9 * np.ptp(position))
     assert down.pump_load == pytest.approx(load, abs=1e-9 * np.ptp(load))
     surface_work = card_work(up.surface_position, up.surface_load)
