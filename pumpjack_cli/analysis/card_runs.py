@@ -206,8 +206,8 @@ def _agree(given: float, known: float, given_name: str, known_name: str, hint: s
                         f"({known * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; {hint}")
 
 
-#: Crank speed assumed for the plausibility of a card without time stamps, --spm or drive
-#: [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
+#: Crank speed assumed for the plausibility of a card without time stamps, stated SPM, --spm or
+#: drive [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
 FAST_PUMPING = 20.0
 
 
