@@ -14,6 +14,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 from ..options import What, WhatOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -28,6 +29,9 @@ def downhole(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     crank_motion: CrankMotionOption = CrankMotion.auto,
     method: Annotated[Method, typer.Option(
@@ -47,6 +51,7 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)
