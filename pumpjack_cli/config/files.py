@@ -134,20 +134,21 @@ def _kind(data: Any, source: str) -> Kind:
     return UNIT_KINDS[kind]
 
 
-def parse_unit(data: Any, source: str):
-    """Validate parsed file contents; ``source`` names the file in error messages."""
+def parse_unit(data: Any, source: str, folder: Path | None = None):
+    """Validate parsed file contents; ``source`` names the file in error messages, ``folder`` is
+    the one files named in it (a well's survey) are relative to."""
     from pydantic import ValidationError
 
     model = _kind(data, source).model()
     try:
-        return model.model_validate(data)
+        return model.model_validate(data, context={"folder": folder})
     except ValidationError as exc:
         raise ConfigError(format_validation_error(source, exc, model)) from None
 
 
 def read_unit_file(path: Path):
     """Read and validate one unit file."""
-    return parse_unit(read_table(path), str(path))
+    return parse_unit(read_table(path), str(path), path.parent)
 
 
 def unit_listing() -> list[dict[str, Any]]:

@@ -13,16 +13,17 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, ValidationInfo, field_validator, model_validator
 
 from ..errors import ConfigError, DownholeError
 
 if TYPE_CHECKING:  # the rod models are imported when a command uses them
     from ..core.rods.path import WellPath
+    from ..core.rods.survey_path import SurveyPath
     from ..core.rods.pump import Pump
     from ..core.rods.string import RodString
-from .quantities import (Density, Fraction, KinematicViscosity, Length, Number, Pressure, Section, WeightPerLength,
-                         at_least)
+from .quantities import (Density, Force, Fraction, KinematicViscosity, Length, Number, Pressure, Section,
+                         WeightPerLength, at_least)
 
 
 class RodSection(Section):
@@ -101,6 +102,28 @@ class Well(Section):
         "the energy balance of the card and the fluid load]")
     rod_density: Density = Field(default=7850.0, gt=1000, le=10000,
                                  description="rod material density (steel) of the rigid-rod well model [kg/m³]")
+    survey: str | None = Field(
+        default=None, min_length=1, description="deviation survey file (CSV: measured_depth_m or _ft, inclination_deg, "
+        "azimuth_deg), relative to the unit file; none: a vertical hole (docs/deviated.md)")
+    rod_friction_coefficient: Number | None = Field(
+        default=None, ge=0, le=1, description="Coulomb friction coefficient of rods and couplings on the tubing "
+        "[default: 0.2, docs/deviated.md]")
+    rod_guide_side_load_limit: Force | None = Field(
+        default=None, gt=0, le=1e6, description="side load one coupling or rod guide may carry [N], for the rod-guide "
+        "advice (no published limit was found: docs/deviated.md)")
+    rod_joint_length: Annotated[Length, at_least(1.0, "1 m")] = Field(
+        default=7.62, le=20, description="length of one rod between couplings [m] (API 11B: 25 or 30 ft)")
+
+    @field_validator("survey")
+    @classmethod
+    def _survey_file(cls, value: str | None, info: ValidationInfo) -> str | None:
+        """The survey file relative to the unit file's folder (the validation context's ``folder``)."""
+        from pathlib import Path
+
+        folder = (info.context or {}).get("folder") if info.context else None
+        if value is None or folder is None or Path(value).is_absolute():
+            return value
+        return str(Path(folder) / value)
 
     @model_validator(mode="after")
     def _taper(self) -> "Well":
@@ -140,10 +163,21 @@ class Well(Section):
             raise ConfigError(f"well.rod_string: {exc}") from None
 
     def path(self) -> WellPath:
-        """The well's path along the rods (:mod:`~pumpjack_cli.core.rods.path`): a vertical hole."""
-        from ..core.rods.path import VerticalPath
+        """The well's path along the rods (:mod:`~pumpjack_cli.core.rods.path`): the ``survey`` by
+        minimum curvature (:mod:`~pumpjack_cli.core.rods.survey_path`), else a vertical hole. A
+        survey that does not reach the pump is refused naming the file."""
+        if self.survey is None:
+            from ..core.rods.path import VerticalPath
 
-        return VerticalPath()
+            return VerticalPath()
+        return _survey_path(self.survey, self.pump_depth)
+
+    def friction_coefficient(self) -> float:
+        """mu of rods and couplings on the tubing: the file's, else the default
+        (:data:`~pumpjack_cli.core.rods.deviated.DEFAULT_FRICTION_COEFFICIENT`)."""
+        from ..core.rods.deviated import DEFAULT_FRICTION_COEFFICIENT
+
+        return DEFAULT_FRICTION_COEFFICIENT if self.rod_friction_coefficient is None else self.rod_friction_coefficient
 
     def pump_vertical_depth(self) -> float:
         """The pump's true vertical depth [m]: the head of the fluid columns above it."""
@@ -176,3 +210,39 @@ class Well(Section):
             stiffness = tubing_stiffness(self.tubing_size, self.pump_depth)
         return Pump(math.pi * self.plunger_diameter**2 / 4.0, found[0], found[1], fillage=self.pump_fillage,
                     gas_exponent=self.gas_exponent, tubing_stiffness=stiffness)
+
+
+def _survey_path(file: str, pump_depth: float) -> SurveyPath:
+    """The minimum-curvature path of a survey file (read once per file and content), checked
+    to reach the pump's measured depth [m]."""
+    import os
+
+    try:
+        info = os.stat(file)
+        key = (os.path.abspath(file), info.st_mtime_ns, info.st_size)
+    except (OSError, ValueError):
+        key = (file, 0, 0)
+    path = _read_survey_path(key)
+    if path.depth < pump_depth - 1e-6:
+        raise ConfigError(f"{file}: the survey reaches {path.depth:.6g} m of measured depth, short of the pump "
+                          f"depth {pump_depth:.6g} m")
+    return path
+
+
+_SURVEYS: dict = {}
+
+
+def _read_survey_path(key: tuple) -> SurveyPath:
+    """The path of the survey file ``key[0]`` (cached by file, modification time and size)."""
+    if key not in _SURVEYS:
+        import numpy as np
+
+        from ..core.rods.survey_path import SurveyPath
+        from ..readers.survey import read_survey
+
+        raw = read_survey(key[0])
+        try:
+            _SURVEYS[key] = SurveyPath(np.array(raw.measured_depth), np.array(raw.inclination), np.array(raw.azimuth))
+        except DownholeError as exc:
+            raise ConfigError(f"{raw.source}: {exc}") from None
+    return _SURVEYS[key]

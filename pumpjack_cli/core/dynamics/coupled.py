@@ -327,7 +327,7 @@ class _CoupledMarch:
 
     def _result(self, block: "_Revolution", discharged: float, convergence: Convergence) -> CoupledPrediction:
         """Cards on the revolution's samples (shifted to start at its crank angle), machine outputs and summary."""
-        machine, model = self.machine, self.model
+        model = self.model
         n, h = self.samples, block.step
         period = n * h
         rows = np.roll(block.rows, 1, axis=0)
@@ -336,37 +336,50 @@ class _CoupledMarch:
         time = np.arange(n) * h
         cards = assemble(with_step(model, h, n), time, angle, position, velocity, np.roll(block.drive, 1), np.roll(block.load, 1),
                          discharged, period, convergence)
-        tables = np.array([self.tables.at(t) for t in theta])
-        tf, inertia, rate, gravity = tables[:, 1], tables[:, 3], tables[:, 4], tables[:, 5]
-        drive_torque = np.asarray(machine.drive_torque(omega))
-        rod_load_torque = cards.polished_rod_load * tf
-        inertia_torque = inertia * eps + 0.5 * rate * omega**2
-        gearbox = drive_torque - machine.drive_inertia * eps
-        motor_work = float(np.sum(drive_torque * omega) * h)
-        rod_work = float(np.sum(cards.polished_rod_load * velocity) * h)
-        mean = 2.0 * np.pi / period
-        summary = CoupledSummary(
-            mean_speed=mean,
-            max_speed=card_extreme(omega, time, angle, np.argmax),
-            min_speed=card_extreme(omega, time, angle, np.argmin),
-            speed_fluctuation=float(np.ptp(omega)) / mean,
-            max_acceleration=card_extreme(eps, time, angle, np.argmax),
-            min_acceleration=card_extreme(eps, time, angle, np.argmin),
-            peak_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmax),
-            min_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmin),
-            max_net_torque=card_extreme(gearbox, time, angle, np.argmax),
-            min_net_torque=card_extreme(gearbox, time, angle, np.argmin),
-            peak_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmax),
-            min_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmin),
-            period=period,
-            motor_work=motor_work,
-            polished_rod_work=rod_work,
-            energy_residual=(motor_work - rod_work) / motor_work,
-            breakdown_torque_margin=machine.motor.breakdown_torque / float(np.max(np.abs(drive_torque)) / machine.drive_ratio),
-            convergence=convergence,
-        )
-        return CoupledPrediction(cards, omega, eps, drive_torque / machine.drive_ratio, gearbox, rod_load_torque,
-                                 gravity, inertia_torque, summary)
+        return machine_result(self.machine, self.tables, cards, theta, omega, eps, h, convergence)
+
+
+def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: np.ndarray, omega: np.ndarray,
+                   eps: np.ndarray, h: float, convergence: Convergence) -> CoupledPrediction:
+    """The machine's side of a coupled solution from its cards and crank motion at the samples
+    (crank angle theta [rad], speed omega [1/s], acceleration eps [1/s^2], on a time grid of step h [s]):
+    motor, gearbox, load, gravity and inertia torques and the summary."""
+    n = theta.size
+    period = n * h
+    angle = theta % (2.0 * np.pi)
+    time = np.arange(n) * h
+    velocity = cards.polished_rod_velocity
+    table = np.array([tables.at(t) for t in theta])
+    tf, inertia, rate, gravity = table[:, 1], table[:, 3], table[:, 4], table[:, 5]
+    drive_torque = np.asarray(machine.drive_torque(omega))
+    rod_load_torque = cards.polished_rod_load * tf
+    inertia_torque = inertia * eps + 0.5 * rate * omega**2
+    gearbox = drive_torque - machine.drive_inertia * eps
+    motor_work = float(np.sum(drive_torque * omega) * h)
+    rod_work = float(np.sum(cards.polished_rod_load * velocity) * h)
+    mean = 2.0 * np.pi / period
+    summary = CoupledSummary(
+        mean_speed=mean,
+        max_speed=card_extreme(omega, time, angle, np.argmax),
+        min_speed=card_extreme(omega, time, angle, np.argmin),
+        speed_fluctuation=float(np.ptp(omega)) / mean,
+        max_acceleration=card_extreme(eps, time, angle, np.argmax),
+        min_acceleration=card_extreme(eps, time, angle, np.argmin),
+        peak_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmax),
+        min_motor_torque=card_extreme(drive_torque / machine.drive_ratio, time, angle, np.argmin),
+        max_net_torque=card_extreme(gearbox, time, angle, np.argmax),
+        min_net_torque=card_extreme(gearbox, time, angle, np.argmin),
+        peak_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmax),
+        min_inertia_torque=card_extreme(inertia_torque, time, angle, np.argmin),
+        period=period,
+        motor_work=motor_work,
+        polished_rod_work=rod_work,
+        energy_residual=(motor_work - rod_work) / motor_work,
+        breakdown_torque_margin=machine.motor.breakdown_torque / float(np.max(np.abs(drive_torque)) / machine.drive_ratio),
+        convergence=convergence,
+    )
+    return CoupledPrediction(cards, omega, eps, drive_torque / machine.drive_ratio, gearbox, rod_load_torque,
+                             gravity, inertia_torque, summary)
 
 
 @dataclass(frozen=True)

@@ -247,7 +247,7 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
 
 def damping_from_fluid_load(string: RodString, period: float, position, load, fluid_load: float, *,
                             fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
-                            largest: float = 2.0) -> float:
+                            largest: float = 2.0, solve=None) -> float:
     """The damping factor nu that closes the energy balance of the rods with the pump's hydraulic work [-].
 
     The useful work of the pump per stroke is the fluid load times the net plunger
@@ -264,6 +264,10 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
         F_o = (p_d - p_i) A_p [N], from the well's pressures at the pump.
     largest : float
         Upper end of the search [-].
+    solve : callable, optional
+        nu -> the pump card (a :class:`DownholeCard`) of another transfer of the same card (a
+        deviated well's march, :mod:`.deviated_diagnostic`, whose drag takes its share of the
+        surface work); default :func:`pump_card` with ``method``.
 
     Raises
     ------
@@ -279,8 +283,8 @@ def damping_from_fluid_load(string: RodString, period: float, position, load, fl
 
     @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
     def excess(nu: float) -> float:
-        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
-                         method=method, gravity=gravity)
+        card = solve(nu) if solve is not None else pump_card(string, period, position, load, fluid_density=fluid_density,
+                                                              damping_factor=nu, method=method, gravity=gravity)
         net = float(summarise_pump_card(card.pump_position, card.pump_load).net_stroke)
         return float(card_work(card.pump_position, card.pump_load)) - fluid_load * net
 
