@@ -368,7 +368,7 @@ SECTIONS: tuple[Section, ...] = (
           "(p_d − p_chamber) A_p"),
         E("damping_factor", "ratio", "Gibbs' dimensionless damping factor of the rods, c = π a ν / (2 L)", "ν"),
         E("buoyant_rod_weight", "force", "weight of the rods with couplings in the well fluid: the pump card's "
-          "datum", "W_rf"),
+          "datum in a vertical well", "W_rf"),
         E("gross_pump_stroke", "length", "plunger travel", "S_g"),
         E("net_pump_stroke", "length", "plunger travel through liquid: the liquid discharged per stroke over the "
           "plunger area", "S_n"),
@@ -414,6 +414,46 @@ SECTIONS: tuple[Section, ...] = (
         E("rigid_rod_max_motor_torque", "torque", "largest motor torque of the rigid-rod model"),
         E("rigid_rod_peak_inertia_torque", "torque", "largest |inertia torque| of the rigid-rod model"),
         E("rigid_rod_{extreme}_rod_load", "force", "{extreme} polished-rod load of the rigid-rod model"),
+    )),
+    Section("Deviated wells (`--survey` of `downhole`, `predict`, `dynamics --well-model wave`)",
+            "The rods along a surveyed hole: gravity along the hole, the soft-string side load and Coulomb drag "
+            "([JohancsikSPE11380]); definitions in `docs/deviated.md`. Depths are measured along the hole from the "
+            "wellhead; the profile (`--profile`) has one row per node of the rod string.", (
+        E("pump_true_vertical_depth", "length", "true vertical depth of the pump: the head of the fluid columns",
+          "TVD"),
+        E("axial_rod_weight", "force", "buoyant weight of the rods along the hole, ∫ q cos φ ds: the polished rod's "
+          "static load of a frictionless string, the pump card's datum", "W"),
+        E("friction_coefficient", "ratio", "Coulomb friction coefficient of rods and couplings on the tubing", "μ"),
+        E("friction_work_per_cycle", "energy", "work of the rod-tubing drag per cycle, ∫∫ μ N |u_t| ds dt"),
+        E("max_side_load", "force_per_length", "largest side load per length over depth and cycle (soft-string, "
+          "from the dynamic effective tension)", "N"),
+        E("max_side_load_depth", "length", "measured depth of the largest side load per length"),
+        E("max_side_load_per_rod", "force", "largest side load of one rod between couplings (what one coupling "
+          "carries without guides)"),
+        E("rod_guide_side_load_limit", "force", "side load one coupling or guide may carry (--guide-limit or "
+          "well.rod_guide_side_load_limit)"),
+        E("rods_with_guides", "count", "rods that need guides to keep every contact under the limit"),
+        E("rod_guides_total", "count", "guides on those rods, all together"),
+        E("rod_guide_intervals", TEXT, "measured-depth intervals that need guides, with the most guides per rod "
+          "in each"),
+        E("pump_card_work_without_friction", "energy", "work of the pump card of a diagnosis that ignores the "
+          "drag (the vertical model's along the hole)"),
+        E("pump_position_without_friction", "length", "plunger position of a diagnosis that ignores the drag"),
+        E("pump_load_without_friction", "force", "net plunger load of a diagnosis that ignores the drag"),
+        E("measured_depth", "length", "depth along the hole from the wellhead (the rods' length to here)", "MD"),
+        E("true_vertical_depth", "length", "depth below the wellhead", "TVD"),
+        E("inclination", "angle", "angle of the hole from the vertical", "φ"),
+        E("azimuth", "angle", "direction of the hole clockwise from north", "ψ"),
+        E("dogleg_severity", "dogleg_severity", "curvature of the hole (minimum curvature between the stations)",
+          "DLS"),
+        E("north", "length", "the hole's displacement north of the wellhead"),
+        E("east", "length", "the hole's displacement east of the wellhead"),
+        E("horizontal_displacement", "length", "the hole's horizontal distance from the wellhead"),
+        E("side_load", "force_per_length", "largest side load per length over the cycle at this depth", "N"),
+        E("side_load_per_rod", "force", "largest side load of one rod between couplings at this depth"),
+        E("rod_guides", "count", "guides per rod that keep each contact under the side-load limit"),
+        E("{extreme}_axial_load", "force", "{extreme} effective axial load over the cycle at this depth"),
+        E("drag_work", "energy", "work of the drag per cycle on the node's share of the string"),
     )),
     Section("Results store (`batch run`, `batch export`, `batch trend`)",
             "A row per card and analysis; the summary values are the analysis' own names with their SI suffix, as "

@@ -146,3 +146,28 @@ def quantity(text: str | None, dimension: str, option: str) -> float | None:
 ServiceFactorOption = Annotated[float, typer.Option(
     help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0, callback=finite)]
 
+
+
+SurveyOption = Annotated[Path | None, typer.Option(
+    "--survey", help="deviation survey CSV (measured_depth_m or _ft, inclination_deg, azimuth_deg) of the well: rods "
+    "and drag along the hole (docs/deviated.md) [default: the unit's well.survey, else a vertical hole]",
+    dir_okay=False)]
+FrictionCoefficientOption = Annotated[float | None, typer.Option(
+    "--friction-coefficient", help="Coulomb friction coefficient of rods and couplings on the tubing, with a survey "
+    "[default: the unit's well.rod_friction_coefficient, else 0.2]", min=0.0, max=1.0, callback=finite)]
+GuideLimitOption = Annotated[str | None, typer.Option(
+    "--guide-limit", help="side load one coupling or rod guide may carry, with its unit ('150 lbf'): where the rods "
+    "need guides and how many per rod [default: the unit's well.rod_guide_side_load_limit, else no advice]")]
+ProfileOption = Annotated[bool, typer.Option(
+    "--profile", help="output the rods' profile along the hole (measured and vertical depth, inclination, dogleg "
+    "severity, side loads, axial load envelope, rod guides) instead of the cards")]
+
+
+def deviation(survey: Path | None, friction: float | None, guide_limit: str | None, profile: bool):
+    """The deviated-well options as the run layer's :class:`~pumpjack_cli.analysis.deviated.Deviation`."""
+    from .analysis.deviated import Deviation  # numpy: only when a command runs
+
+    limit = quantity(guide_limit, "force", "--guide-limit")
+    if limit is not None and not limit > 0:
+        raise PumpjackError(f"--guide-limit {guide_limit}: must be above 0")
+    return Deviation(survey, friction, limit, profile)

@@ -236,6 +236,10 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "count": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
     "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
     "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
+    "force_per_length": {"si": OutputUnit("N/m", "n_m", 1.0), "field": OutputUnit("lbf/ft", "lbf_ft", FOOT / POUND_FORCE)},
+    # a hole's curvature [rad/m] as drillers give it: degrees per 30 m, degrees per 100 ft
+    "dogleg_severity": {"si": OutputUnit("°/30 m", "deg_30m", 180 / math.pi * 30.0),
+                        "field": OutputUnit("°/100 ft", "deg_100ft", 180 / math.pi * 100 * FOOT)},
     "rotational_stiffness": {
         "si": OutputUnit("N·m/rad", "n_m_rad", 1.0),
         "field": OutputUnit("lbf·in/rad", "lbf_in_rad", 1 / (POUND_FORCE * INCH)),

@@ -85,7 +85,9 @@ class Panel:
     value) pairs in the quantity of the first solid curve, e.g. a rating). With ``clip``
     the vertical range follows the solid curves (half their range beyond each side), so
     that a dashed bound that grows without limit does not hide them. ``curves`` are drawn
-    too; a panel of curves only names its x axis ``x_label``."""
+    too; a panel of curves only names its x axis ``x_label``. With ``colour`` (a column name) the
+    solid curves are drawn as points coloured by that column, with a colour bar; ``y_down`` turns
+    the vertical axis downward (a depth)."""
 
     title: str
     solid: tuple[str, ...]
@@ -95,6 +97,8 @@ class Panel:
     clip: bool = False
     curves: tuple[Curve, ...] = ()
     x_label: str | None = None
+    colour: str | None = None
+    y_down: bool = False
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,7 @@ stress and Goodman summary of `pumpjack downhole` ([API11BR]).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -21,11 +22,14 @@ from ..core.beam.card import Card, card_load
 from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
+from ..core.rods.deviated_predict import predict_deviated, predict_deviated_cards
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
+from .deviated import (Deviation, deviated_path, friction_coefficient, profile_result, survey_summary, surveyed,
+                       with_survey)
 from .inputs import crank_columns, extreme_scalars
 from .rods import goodman_panel, taper_summary
 from .torque import SUMMARY_STEPS, card_torque
@@ -114,6 +118,8 @@ class Predicted:
     crank_acceleration: np.ndarray
     coupled: object | None
     damping: float
+    #: In a deviated well, the profile, drag and grid (:class:`~pumpjack_cli.core.rods.deviated_predict.DeviatedPrediction`).
+    deviated: object | None = None
 
 
 def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
@@ -121,9 +127,15 @@ def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: i
     if crank_motion not in CRANK_MOTIONS:
         raise PumpjackError(f"--crank-motion {crank_motion}: use one of {', '.join(CRANK_MOTIONS)}")
     string, well_pump, well = unit.rods(), unit.pump(), unit.well
+    path = deviated_path(unit)
     if crank_motion == "uniform":
         omega = unit.crank_speed(spm)
         nu = damping_factor(unit, damping)
+        if path is not None:
+            found = predict_deviated_cards(unit.geometry.mechanism(), omega, string, path, well_pump, damping=nu,
+                                           fluid_density=well.fluid_density, samples=samples,
+                                           friction_coefficient=friction_coefficient(unit))
+            return Predicted(found.cards, np.full(samples, omega), np.zeros(samples), None, nu, found)
         cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
@@ -132,15 +144,23 @@ def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: i
     for section in ("masses", "drive"):
         unit.require(section, "--crank-motion dynamic solves the machine's equation of motion")
     nu = damping_factor(unit, damping)
-    from ..core.dynamics.coupled import predict_coupled
+    deviated = None
+    if path is not None:
+        from ..core.dynamics.coupled_deviated import predict_coupled_deviated
 
-    both = predict_coupled(unit.machine(elastic_rods=True), string, well_pump, damping=nu,
-                           fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
+        both, deviated = predict_coupled_deviated(unit.machine(elastic_rods=True), string, path, well_pump, damping=nu,
+                                                  fluid_density=well.fluid_density, samples=samples,
+                                                  friction_coefficient=friction_coefficient(unit))
+    else:
+        from ..core.dynamics.coupled import predict_coupled
+
+        both = predict_coupled(unit.machine(elastic_rods=True), string, well_pump, damping=nu,
+                               fluid_density=well.fluid_density, rod_density=well.rod_density, samples=samples)
     margin = both.summary.breakdown_torque_margin
     if margin < 1.0:
         warn(f"unit {unit.name}: the motor would need {1.0 / margin:.3g} x its pull-out torque; the linear motor "
              f"characteristic is used beyond its validity (the motor would stall)")
-    return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu)
+    return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu, deviated)
 
 
 def _runs(found: Predicted, steps: int) -> tuple[Card, list[CardRun]]:
@@ -226,9 +246,15 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
     from ..core.dynamics.periodic import steady_state
 
     cards = found.cards.summary
-    uniform = predict_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, unit.rods(), unit.pump(),
-                            damping=found.damping, fluid_density=unit.well.fluid_density, samples=samples,
-                            rod_density=unit.well.rod_density)
+    if found.deviated is not None:
+        uniform = predict_deviated_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, unit.rods(),
+                                         unit.well.path(), unit.pump(), damping=found.damping,
+                                         fluid_density=unit.well.fluid_density, samples=samples,
+                                         friction_coefficient=unit.well.friction_coefficient()).cards
+    else:
+        uniform = predict_cards(unit.geometry.mechanism(), 2.0 * np.pi / cards.period, unit.rods(), unit.pump(),
+                                damping=found.damping, fluid_density=unit.well.fluid_density, samples=samples,
+                                rod_density=unit.well.rod_density)
     uniform_found = Predicted(uniform, np.full(samples, 2.0 * np.pi / cards.period), np.zeros(samples), None,
                               found.damping)
     card, runs = _runs(uniform_found, SUMMARY_STEPS)
@@ -251,12 +277,17 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
 
 def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
-            steps: int = SUMMARY_STEPS) -> Result:
-    """The result of `pumpjack predict` (module docstring)."""
-    unit = with_overrides(unit, overrides)
+            steps: int = SUMMARY_STEPS, deviation: Deviation = Deviation()) -> Result:
+    """The result of `pumpjack predict` (module docstring); a survey (``deviation`` or the unit's)
+    adds the deviated well's figures (:mod:`.deviated`)."""
+    unit = with_survey(with_overrides(unit, overrides), deviation.survey, deviation.friction, deviation.guide_limit)
     found = predicted(unit, spm, crank_motion, samples, damping)
     cards = found.cards
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
+    if found.deviated is not None:  # the cards' datum is the weight along the hole; W_rf stays the whole string's
+        whole = unit.rods().buoyant_weight(unit.well.fluid_density)
+        summary = [Scalar(s.name, whole) if s.name == "buoyant_rod_weight" else s for s in summary]
+    summary += _survey_rows(unit, found)
     string = unit.rods()
     joint = np.vstack([cards.taper_top_load, cards.taper_bottom_load[-1:]])
     loads = taper_loads(string, joint)
@@ -288,12 +319,43 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
     title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
              f"damping {found.damping:.3g}")
+    if surveyed(unit):
+        title += f", survey {Path(unit.well.survey).name}"
+    if deviation.profile:
+        columns, panels = profile_result(unit, _profile(unit, found))
     return Result(title, tuple(summary), tuple(columns), tuple(panels))
 
 
-def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None) -> Result:
+def _survey_rows(unit: UnitConfig, found: Predicted) -> list[Scalar]:
+    """A survey's figures for `predict` and `dynamics --well-model wave`; in a deviated well the
+    cards' datum is the weight along the hole, and buoyant_rod_weight stays the whole string's."""
+    if not surveyed(unit):
+        return []
+    well = unit.well
+    whole = unit.rods().buoyant_weight(well.fluid_density)
+    if found.deviated is None:
+        return survey_summary(unit, None, 0.0, well.friction_coefficient(), whole)
+    deviated = found.deviated
+    return survey_summary(unit, deviated.profile, deviated.friction_work, well.friction_coefficient(),
+                          deviated.grid.hanging_weight)
+
+
+def _profile(unit: UnitConfig, found: Predicted):
+    """The depth profile of a prediction: the deviated march's, or in a vertical hole the same
+    march's along the vertical (its cards are the modal solution's)."""
+    if found.deviated is not None:
+        return found.deviated.profile
+    well = unit.well
+    return predict_deviated(unit.rods(), well.path(), unit.pump(), found.cards.polished_rod_position,
+                            found.cards.summary.period, damping=found.damping, fluid_density=well.fluid_density,
+                            friction_coefficient=0.0).profile
+
+
+def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None, deviation: Deviation = Deviation()) -> Result:
     """`pumpjack dynamics --well-model wave`: the machine's periodic motion with the elastic rods
-    of the unit's ``[well]`` instead of the rigid-rod model ([SK8Rotation2013], [Gibbs1963])."""
+    of the unit's ``[well]`` instead of the rigid-rod model ([SK8Rotation2013], [Gibbs1963]), along
+    the hole of a survey (:mod:`.deviated`)."""
+    unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     found = predicted(unit, None, "dynamic", samples, damping)
     both, cards = found.coupled, found.cards
     summary = [Scalar("damping_factor", found.damping),
@@ -301,7 +363,8 @@ def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None) -> Resu
                Scalar("strokes_per_minute", 2.0 * np.pi / cards.summary.period),
                *coupled_summary(both.summary),
                Scalar("max_rod_load", cards.summary.peak_polished_rod_load.value),
-               Scalar("min_rod_load", cards.summary.minimum_polished_rod_load.value)]
+               Scalar("min_rod_load", cards.summary.minimum_polished_rod_load.value),
+               *_survey_rows(unit, found)]
     columns = (
         *crank_columns(cards.crank_angle, cards.time, both.crank_speed, both.crank_acceleration),
         Column("motor_torque", both.motor_torque),

@@ -8,6 +8,7 @@ from typing import Annotated
 import typer
 
 from ..analysis.downhole import DEFAULT_SAMPLES
+from ..analysis.deviated import profile_shown
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
@@ -15,6 +16,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        card_source, finite)
 from ..options import What, WhatOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
+from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -34,13 +36,18 @@ def downhole(
     stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     crank_motion: CrankMotionOption = CrankMotion.auto,
-    method: Annotated[Method, typer.Option(
-        help="gibbs: exact per-harmonic solution; everitt-jennings: finite-difference march in depth")] = Method.gibbs,
+    method: Annotated[Method | None, typer.Option(
+        help="gibbs: exact per-harmonic solution; everitt-jennings: finite-difference march in depth, which carries "
+             "the friction of a deviated well [default: gibbs, everitt-jennings with a survey]")] = None,
     damping: Annotated[float | None, typer.Option(
         help="Gibbs' dimensionless damping factor nu of the rods, 0 for none [default: the unit file's, else from "
              "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    survey: SurveyOption = None,
+    friction_coefficient: FrictionCoefficientOption = None,
+    guide_limit: GuideLimitOption = None,
+    profile: ProfileOption = False,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -52,6 +59,7 @@ def downhole(
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
-    result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
-                 damping, samples, service_factor)
-    sink.emit(result, SHOWN)
+    options = deviation(survey, friction_coefficient, guide_limit, profile)
+    result = run(load_unit(unit), source, spm, crank_motion.value, None if method is None else method.value,
+                 damping, samples, service_factor, options)
+    sink.emit(result, profile_shown(result.columns) if profile else SHOWN)

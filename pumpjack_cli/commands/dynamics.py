@@ -16,6 +16,7 @@ from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output,
                        UnitsOption, UnitSystem, card_source, finite, positive)
 from ..options import What, WhatOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
+from ..options import FrictionCoefficientOption, SurveyOption, deviation
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -55,6 +56,8 @@ def dynamics(
     damping: Annotated[float | None, typer.Option(
         help="with --well-model wave: Gibbs' damping factor nu of the rods, above 0 [default: the unit file's, "
              "else 0.05]", max=2.0, callback=positive)] = None,
+    survey: SurveyOption = None,
+    friction_coefficient: FrictionCoefficientOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -67,7 +70,8 @@ def dynamics(
     card) and the weights."""
     sink = Output(fmt, units, out, plot, what)
     if well_model is WellModel.rigid:
-        for given, option in ((damping, "--damping"), (samples, "--samples")):
+        for given, option in ((damping, "--damping"), (samples, "--samples"), (survey, "--survey"),
+                              (friction_coefficient, "--friction-coefficient")):
             if given is not None:
                 raise PumpjackError(f"{option} applies to --well-model wave")
         source = None if card is None else card_source(card, card_units, card_columns, card_format, card_points, stroke)
@@ -80,6 +84,7 @@ def dynamics(
                             "(time samples per revolution)")
     from ..analysis.predict import wave_dynamics
 
-    sink.emit(wave_dynamics(load_unit(unit), DEFAULT_POINTS if samples is None else samples, damping), ("crank_angle", "time", "crank_speed",
+    sink.emit(wave_dynamics(load_unit(unit), DEFAULT_POINTS if samples is None else samples, damping,
+                            deviation(survey, friction_coefficient, None, False)), ("crank_angle", "time", "crank_speed",
                                                               "crank_acceleration", "motor_torque", "rod_load",
                                                               "inertia_torque"))

@@ -7,12 +7,14 @@ from typing import Annotated
 
 import typer
 
+from ..analysis.deviated import profile_shown
 from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
+from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -46,6 +48,10 @@ def predict(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    survey: SurveyOption = None,
+    friction_coefficient: FrictionCoefficientOption = None,
+    guide_limit: GuideLimitOption = None,
+    profile: ProfileOption = False,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -66,6 +72,10 @@ def predict(
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
     )
-    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor)
+    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor,
+                 deviation=deviation(survey, friction_coefficient, guide_limit, profile))
+    if profile:
+        sink.emit(result, profile_shown(result.columns))
+        return
     torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
     sink.emit(result, (*SHOWN, torque))

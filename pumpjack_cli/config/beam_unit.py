@@ -282,7 +282,12 @@ class UnitConfig(Section):
             return None
         w = self.well
         largest = discharge_pressure(w.pump_vertical_depth(), w.fluid_density, w.tubing_head_pressure)
-        return WellLimits(self.rods(), w.fluid_density, largest * math.pi * w.plunger_diameter**2 / 4.0)
+        hanging = None
+        if w.survey is not None:
+            from ..core.rods.deviated import axial_weight
+
+            hanging = axial_weight(self.rods(), w.path(), w.fluid_density)
+        return WellLimits(self.rods(), w.fluid_density, largest * math.pi * w.plunger_diameter**2 / 4.0, hanging)
 
     def rigid_well_load(self) -> WellLoad:
         """The rigid-rod well model of [SK8Rotation2013] for the ``[well]``, friction at the mean rod

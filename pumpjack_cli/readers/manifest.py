@@ -2,7 +2,8 @@
 
 A row names a well, a unit (a bundled unit's name or a unit file) and a card (a path or
 a glob), with optional ``spm``, ``counterbalance_moment`` (with its unit), ``rod_string``
-(a file) and ``timestamp``. Relative paths are taken from the manifest's folder. A
+(a file), ``survey`` (the well's deviation survey, a file: docs/deviated.md) and
+``timestamp``. Relative paths are taken from the manifest's folder. A
 manifest that cannot be read or has a malformed row is refused with one line naming the
 line; a card or unit that does not exist is left for the analysis.
 """
@@ -24,7 +25,7 @@ from .unit_files import names_a_file
 
 #: Manifest columns: required, then optional.
 REQUIRED_COLUMNS = ("well", "unit", "card")
-OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp")
+OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp", "survey")
 #: Largest manifest [bytes].
 MAX_MANIFEST_BYTES = 64 << 20
 
@@ -42,6 +43,7 @@ class Job:
     counterbalance_moment: float | None = None
     rod_string: str | None = None
     timestamp: str = ""
+    survey: str | None = None
 
 
 def _row_error(source: str, line: int, message: str) -> PumpjackError:
@@ -137,6 +139,9 @@ def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     rod_string = row.get("rod_string") or None
     if rod_string is not None and not Path(rod_string).is_absolute():
         rod_string = str(folder / rod_string)
+    survey = row.get("survey") or None
+    if survey is not None and not Path(survey).is_absolute():
+        survey = str(folder / survey)
     pattern = row["card"].strip()
     pattern = pattern if Path(pattern).is_absolute() else str(folder / pattern)
     cards = sorted(glob.glob(pattern)) if glob.has_magic(pattern) else [pattern]
@@ -145,4 +150,4 @@ def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     timestamp = row.get("timestamp") or ""
     if not isinstance(timestamp, str):
         timestamp = str(timestamp)
-    return [Job(row["well"].strip(), unit, card, number, spm, moment, rod_string, timestamp) for card in cards]
+    return [Job(row["well"].strip(), unit, card, number, spm, moment, rod_string, timestamp, survey) for card in cards]

@@ -40,7 +40,12 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
         x, x_unit = shown(x_name)
         for names, style in ((panel.solid, "-"), (panel.dashed, "--")):
             for name in names:
-                ax.plot(x, shown(name)[0], style, label=name)
+                if panel.colour and style == "-":
+                    colour, colour_unit = shown(panel.colour)
+                    points = ax.scatter(x, shown(name)[0], c=colour, s=6, cmap="viridis", label=name)
+                    fig.colorbar(points, ax=ax, label=f"{panel.colour} [{colour_unit.label}]")
+                else:
+                    ax.plot(x, shown(name)[0], style, label=name)
         y_unit = output_unit(result.column(panel.solid[0]).quantity, system) if panel.solid else None
         for curve in panel.curves:
             (cx, cx_unit), (cy, cy_unit) = values(curve.x, curve.quantity), values(curve.y, curve.quantity)
@@ -56,6 +61,8 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
             ax.axhline(float(y_unit.convert(float(value))), color="red", linewidth=0.8, linestyle=":",
                        label=label or None)
         ax.set_ylabel(f"{panel.title} [{y_unit.label}]")
+        if panel.y_down:
+            ax.invert_yaxis()
         ax.grid(True, alpha=0.3)
         if len(panel.solid) + len(panel.dashed) + len(panel.curves) + len([lv for lv in panel.levels if lv[0]]) > 1:
             ax.legend(fontsize="small")

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from ...errors import ConfigError
 from ...readers.manifest import Job
-from ...readers.unit_files import unit_path
+from ...readers.unit_files import read_table, unit_path
 from .per_card import Options
 
 
@@ -42,18 +42,41 @@ def unit_digest(spec: str) -> str:
     :func:`pumpjack_cli.config.load_unit` resolves it, or a file), or the spec itself when
     it cannot be read (the analysis then records the error)."""
     try:
-        return _sha256(unit_path(spec))
+        path = unit_path(spec)
+        digest = _sha256(path)
     except (ConfigError, OSError):
         return f"unreadable:{spec}"
+    survey = _survey_of(path)
+    return digest if survey is None else f"{digest}+{survey}"
+
+
+def _survey_of(path: Path) -> str | None:
+    """The content hash of the survey file a unit file's ``[well]`` names (relative to the unit
+    file), None without one (the unit's digest is then its file's alone, as before surveys)."""
+    try:
+        table = read_table(path)
+    except ConfigError:
+        return None
+    well = table.get("well") if isinstance(table, dict) else None
+    survey = well.get("survey") if isinstance(well, dict) else None
+    if not isinstance(survey, str):
+        return None
+    file = Path(survey) if Path(survey).is_absolute() else path.parent / survey
+    try:
+        return _sha256(file)
+    except OSError:
+        return f"unreadable:{file}"
 
 
 def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) -> str:
     """What makes a result: the analysis and its options, the unit (its file's content) and the
     row's overrides (a rod-string file by its content)."""
     rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
-    text = json.dumps({"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
-                       "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest},
-                      sort_keys=True)
+    made = {"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
+            "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
+    if job.survey is not None:  # absent without one, so that the stores written before surveys keep their keys
+        made["survey"] = _sha256(job.survey) if os.path.isfile(job.survey) else job.survey
+    text = json.dumps(made, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
 
 

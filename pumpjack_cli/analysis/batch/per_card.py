@@ -98,7 +98,7 @@ _UNITS: dict = {}
 
 def _unit(job: Job):
     """The unit of a job with its overrides, loaded once per process."""
-    key = (job.unit, job.counterbalance_moment, job.rod_string)
+    key = (job.unit, job.counterbalance_moment, job.rod_string, job.survey)
     if key not in _UNITS:
         from ...config import load_unit
 
@@ -107,6 +107,10 @@ def _unit(job: Job):
             unit = _with_moment(unit, job.counterbalance_moment)
         if job.rod_string is not None:
             unit = _with_rod_string(unit, job.rod_string)
+        if job.survey is not None:
+            from ..deviated import with_survey
+
+            unit = with_survey(unit, Path(job.survey))
         _UNITS[key] = unit
     return _UNITS[key]
 
@@ -172,7 +176,7 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> di
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
-        result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
+        result = downhole(unit, card, job.spm, "auto", None, options.damping)  # Everitt-Jennings with drag if deviated
     check_finite(result)
     return converted_summary(result, "si")
 

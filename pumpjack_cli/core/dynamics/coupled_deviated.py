@@ -24,7 +24,7 @@ import numpy as np
 
 from ...errors import PredictionError
 from ..rods.deviated import DEFAULT_REGULARISATION, MAX_SEGMENT
-from ..rods.deviated_predict import (DEFAULT_TOLERANCE, SPECTRAL_RADIUS, DeviatedPrediction, Recorder, StringMarch,
+from ..rods.deviated_predict import (DEFAULT_TOLERANCE, SPECTRAL_RADIUS, Cycle, DeviatedPrediction, Recorder, StringMarch,
                                      TopMotion, assemble_deviated, cycle_change, deviated_grid, steady_state,
                                      top_motion)
 from ..rods.path import WellPath
@@ -64,7 +64,7 @@ def predict_coupled_deviated(machine: Machine, rods: RodString, path: WellPath, 
     position = _positions(tables, samples)
     a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
 
-    def uniform(period: float, tolerance: float) -> tuple[StringMarch, object, TopMotion]:
+    def uniform(period: float, tolerance: float) -> tuple[StringMarch, Cycle, TopMotion]:
         step = period / samples
         grid = deviated_grid(rods, path, step, damping=damping, fluid_density=fluid_density, max_segment=max_segment)
         top = top_motion(position, period)

@@ -271,3 +271,18 @@ def guide_advice(depth: np.ndarray, side_load: np.ndarray, limit: float, rod_len
             intervals.append((float(depth[start]), float(depth[stop]), int(guides[start:stop + 1].max())))
             start = None
     return GuideAdvice(per_rod, guides, tuple(intervals))
+
+
+def axial_weight(rods: RodString, path: WellPath, fluid_density: float, gravity: float = STANDARD_GRAVITY,
+                 max_segment: float = MAX_SEGMENT) -> float:
+    """W = int_0^L q cos(phi) ds [N]: the rods' buoyant weight along the hole (Simpson's rule on
+    segments of at most ``max_segment``), what a frictionless string hangs on the polished rod.
+
+    >>> from pumpjack_cli.core.rods.path import VerticalPath
+    >>> rods = RodString([1000.0], [2.85e-4], [2.05e11], [2.43])
+    >>> round(axial_weight(rods, VerticalPath(), 1000.0) / rods.buoyant_weight(1000.0), 12)
+    1.0
+    """
+    grid = string_grid(rods, path, np.ceil(rods.length / max_segment).astype(int), fluid_density=fluid_density,
+                       damping_factor=0.0, gravity=gravity)
+    return grid.hanging_weight

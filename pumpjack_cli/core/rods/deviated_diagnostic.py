@@ -46,12 +46,14 @@ from .string import RodString
 class DeviatedCard:
     """A pump card of a deviated well: the card (:class:`~.downhole.DownholeCard`, its
     ``buoyant_weight`` the weight along the hole W, the load datum), the string's profile over
-    the cycle (:class:`~.deviated.DepthProfile`), the drag's work per cycle [J] and the grid."""
+    the cycle (:class:`~.deviated.DepthProfile`), the drag's work per cycle [J], the grid and
+    the friction coefficient mu [-]."""
 
     card: DownholeCard
     profile: DepthProfile
     friction_work: float
     grid: StringGrid
+    friction_coefficient: float
 
 
 def march(grid: StringGrid, period: float, position: np.ndarray, dynamic_load: np.ndarray,
@@ -157,7 +159,8 @@ def deviated_pump_card(rods: RodString, path: WellPath, period: float, position,
     work = np.sum(drag * result["velocity"], axis=-1) * dt
     side = grid.side_force(tension.swapaxes(-1, -2)).swapaxes(-1, -2) / grid.cell_length[:, None]
     profile = DepthProfile(grid.depth, tension.max(axis=-1), tension.min(axis=-1), side.max(axis=-1), work)
-    return DeviatedCard(card, profile, float(np.sum(work)) if work.ndim == 1 else np.sum(work, axis=-1), grid)
+    return DeviatedCard(card, profile, float(np.sum(work)) if work.ndim == 1 else np.sum(work, axis=-1), grid,
+                        float(friction_coefficient))
 
 
 def deviated_damping_from_fluid_load(rods: RodString, path: WellPath, period: float, position, load,

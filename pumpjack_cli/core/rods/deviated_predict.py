@@ -41,7 +41,8 @@ from ...errors import PredictionError
 from ..constants import STANDARD_GRAVITY
 from .deviated import DEFAULT_REGULARISATION, MAX_SEGMENT, DepthProfile, StringGrid, friction_sign, string_grid
 from .path import WellPath
-from .predict import CardExtreme, Prediction, PredictionSummary, card_extreme
+from ..mechanism import Mechanism
+from .predict import Prediction, PredictionSummary, card_extreme, crank_samples, thinned
 from .predict_solver import Convergence, spectral_derivatives
 from .pump import Pump, PumpChamber
 from .string import RodString
@@ -79,7 +80,7 @@ class Alpha:
     beta: float
 
     @classmethod
-    def of(cls, rho: float) -> "Alpha":
+    def of(cls, rho: float) -> Alpha:
         if not 0.0 <= rho <= 1.0:
             raise PredictionError(f"spectral radius must lie in [0, 1], got {rho}")
         alpha_m, alpha_f = (2.0 * rho - 1.0) / (rho + 1.0), rho / (rho + 1.0)
@@ -464,3 +465,20 @@ def assemble_deviated(grid: StringGrid, pump: Pump, cycle: Cycle, top: TopMotion
         taper_top_load=cycle.joint_tension[:-1], taper_bottom_load=cycle.joint_tension[1:], summary=summary)
     profile = DepthProfile(grid.depth, cycle.tension[0], cycle.tension[1], cycle.side, cycle.drag_work)
     return DeviatedPrediction(cards, profile, friction, grid)
+
+
+def predict_deviated_cards(linkage: Mechanism, crank_speed: float, rods: RodString, path: WellPath, pump: Pump, *,
+                           damping: float, fluid_density: float, friction_coefficient: float, samples: int = 360,
+                           resolution: int = 1024, **options) -> DeviatedPrediction:
+    """Cards of a beam unit turning uniformly over a deviated well, on ``samples`` points of one
+    cycle from crank angle 0, solved on samples x k steps (k the smallest factor reaching
+    ``resolution``, as :func:`.predict.predict_cards`); ``options`` go to :func:`predict_deviated`."""
+    if not 16 <= samples <= 1 << 16:
+        raise PredictionError(f"samples per cycle must lie in 16 .. 65536, got {samples}")
+    if not (np.isfinite(crank_speed) and crank_speed > 0):
+        raise PredictionError(f"crank speed must be positive and finite, got {crank_speed} 1/s")
+    factor, theta = crank_samples(samples, resolution)
+    fine = predict_deviated(rods, path, pump, linkage.rod_position(theta), 2.0 * np.pi / crank_speed, damping=damping,
+                            fluid_density=fluid_density, friction_coefficient=friction_coefficient, crank_angle=theta,
+                            **options)
+    return DeviatedPrediction(thinned(fine.cards, factor), fine.profile, fine.friction_work, fine.grid)

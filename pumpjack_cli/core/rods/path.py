@@ -41,6 +41,10 @@ class WellPath(Protocol):
         """dpsi/ds [rad/m], going down."""
         ...
 
+    def north_east(self, measured_depth: Any) -> np.ndarray:
+        """Horizontal displacement (north, east) [m] from the wellhead, shape (..., 2)."""
+        ...
+
 
 @dataclass(frozen=True)
 class VerticalPath:
@@ -57,3 +61,6 @@ class VerticalPath:
         return np.zeros_like(np.asarray(measured_depth, dtype=float))
 
     inclination = azimuth = inclination_rate = azimuth_rate = _zero
+
+    def north_east(self, measured_depth: Any) -> np.ndarray:
+        return np.zeros((*np.shape(measured_depth), 2))

@@ -96,11 +96,15 @@ LOAD_SLIPS = (
 @dataclass(frozen=True)
 class WellLimits:
     """What the rods and the fluid column can produce: the rods, the fluid density [kg/m^3],
-    the largest fluid load on the plunger F_max = p_d A_p [N]."""
+    the largest fluid load on the plunger F_max = p_d A_p [N], and in a deviated hole the rods'
+    weight along it."""
 
     rods: RodString
     fluid_density: float
     max_fluid_load: float
+    #: The rods' buoyant weight along a deviated hole [N] (:func:`.deviated.axial_weight`), what a
+    #: connected string's loads center on instead of W_rf; None in a vertical hole.
+    hanging_weight: float | None = None
 
 
 @dataclass(frozen=True)
@@ -194,7 +198,7 @@ def check_card_loads(load: np.ndarray, position: np.ndarray, *, stroke: float, c
         return Verdict()
     rods = well.rods
     air = rods.weight_in_air(gravity)
-    buoyant = rods.buoyant_weight(well.fluid_density, gravity)
+    buoyant = rods.buoyant_weight(well.fluid_density, gravity) if well.hanging_weight is None else well.hanging_weight
     alpha = stroke * crank_speed**2 / (2.0 * gravity)
     upper = PEAK_FACTOR * (air + well.max_fluid_load) * (1.0 + 2.0 * alpha)
 

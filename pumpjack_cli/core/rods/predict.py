@@ -247,11 +247,22 @@ def predict_cards(linkage: Mechanism, crank_speed: float, rods: RodString, pump:
         raise PredictionError(f"samples per cycle must lie in 16 .. 65536, got {samples}")
     if not (np.isfinite(crank_speed) and crank_speed > 0):
         raise PredictionError(f"crank speed must be positive and finite, got {crank_speed} 1/s")
-    factor = max(1, -(-resolution // samples))
-    theta = np.arange(samples * factor) * (2.0 * np.pi / (samples * factor))
+    factor, theta = crank_samples(samples, resolution)
     position = linkage.rod_position(theta)
     fine = predict(rods, pump, position, 2.0 * np.pi / crank_speed, damping=damping, fluid_density=fluid_density,
                    rod_density=rod_density, crank_angle=theta)
+    return thinned(fine, factor)
+
+
+def crank_samples(samples: int, resolution: int) -> tuple[int, np.ndarray]:
+    """The factor k and the samples x k crank angles [rad] of one revolution from 0 that a
+    prediction of ``samples`` points is solved on (the smallest multiple reaching ``resolution``)."""
+    factor = max(1, -(-resolution // samples))
+    return factor, np.arange(samples * factor) * (2.0 * np.pi / (samples * factor))
+
+
+def thinned(fine: Prediction, factor: int) -> Prediction:
+    """Every ``factor``-th sample of a prediction's cards (the summary is the fine grid's)."""
     pick = slice(None, None, factor)
     columns = ("time", "crank_angle", "polished_rod_position", "polished_rod_velocity", "polished_rod_load",
                "plunger_position", "pump_load", "chamber_pressure")
