@@ -196,3 +196,15 @@ def sk8_drivable_card(tmp_path_factory) -> Path:
     path.write_text("\n".join([body[0]] + [",".join(repr(float(x)) for x in row) for row in rows]) + "\n",
                     encoding="utf-8")
     return path
+
+
+@pytest.fixture(scope="session")
+def deviated_sample():
+    """samples/make_deviated.py as a module, and its prediction of the SK8 rods in the J-shaped hole
+    (cards, crank speed, unit), computed once: (module, (prediction, omega, unit))."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_deviated", REPO_ROOT / "samples" / "make_deviated.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module, module.prediction()

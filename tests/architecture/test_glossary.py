@@ -22,6 +22,9 @@ from pumpjack_cli.quantities import OUTPUT_QUANTITIES
 from helpers import REPO_ROOT, SK8_CARD, sample_card
 
 GLOSSARY = REPO_ROOT / "docs" / "glossary.md"
+#: A deviated well's sample card and survey (samples/make_deviated.py).
+DEVIATED_CARD = REPO_ROOT / "samples" / "sk8-3.5-4000-deviated-card.csv"
+J_SURVEY = REPO_ROOT / "samples" / "j-well-survey.csv"
 
 RUNS = [
     ("units",),
@@ -40,6 +43,10 @@ RUNS = [
     ("predict", "sk8-3.5-4000", "--samples", "64", "--damping", "0.1", "--crank-motion", "dynamic"),
     ("predict", "c-80d-133-48", "--samples", "64", "--damping", "0.1", "--spm", "8"),
     ("dynamics", "sk8-3.5-4000", "--samples", "64", "--well-model", "wave", "--damping", "0.1"),
+    ("downhole", "sk8-3.5-4000", "--card", DEVIATED_CARD, "--survey", J_SURVEY, "--samples", "64", "--damping", "0.05",
+     "--guide-limit", "100 lbf"),
+    ("downhole", "sk8-3.5-4000", "--card", DEVIATED_CARD, "--survey", J_SURVEY, "--samples", "64", "--damping", "0.05",
+     "--profile", "--guide-limit", "100 lbf"),
 ]
 
 

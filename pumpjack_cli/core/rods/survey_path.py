@@ -112,7 +112,8 @@ class SurveyPath:
         if not np.all((phi >= 0) & (phi <= np.pi)):
             raise DownholeError("survey inclinations must lie between 0 and 180 degrees")
         t = tangent(phi, psi)
-        beta = np.arccos(np.clip(np.sum(t[:-1] * t[1:], axis=-1), -1.0, 1.0))
+        # the angle between the tangents, accurate for small angles too (arccos of the dot product is not)
+        beta = np.arctan2(np.linalg.norm(np.cross(t[:-1], t[1:]), axis=-1), np.sum(t[:-1] * t[1:], axis=-1))
         if np.any(beta > LARGEST_DOGLEG):
             j = int(np.flatnonzero(beta > LARGEST_DOGLEG)[0])
             raise DownholeError(f"the survey turns by 180 degrees between {s[j]:g} m and {s[j + 1]:g} m")
