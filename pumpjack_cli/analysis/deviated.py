@@ -43,37 +43,19 @@ class Deviation:
     profile: bool = False
 
 
-#: Option -> the well's field it sets.
-_OPTIONS = {"--survey": "survey", "--friction-coefficient": "rod_friction_coefficient",
-            "--guide-limit": "rod_guide_side_load_limit"}
 
 
 def with_survey(unit: UnitConfig, survey: Path | None = None, friction: float | None = None,
                 guide_limit: float | None = None) -> UnitConfig:
     """The unit with its ``[well]``'s survey file, friction coefficient and guide limit replaced by the
     options (None keeps the file's), validated by the well's schema (a value out of range is
-    refused naming its option)."""
-    from pydantic import ValidationError
+    refused naming its option: :func:`.predict.with_overrides`)."""
+    from .predict import WellOverrides, with_overrides
 
-    from ..config.files import error_message
-
-    given = {"--survey": None if survey is None else str(Path(survey).absolute()),
-             "--friction-coefficient": friction, "--guide-limit": guide_limit}
-    if all(value is None for value in given.values()):
+    if survey is None and friction is None and guide_limit is None:
         return unit
-    well = unit.require_well()
-    data = well.model_dump()
-    for option, value in given.items():
-        if value is not None:
-            data[_OPTIONS[option]] = value
-    try:
-        changed = type(well).model_validate(data)
-    except ValidationError as exc:
-        error = exc.errors()[0]
-        field = str(error["loc"][0]) if error["loc"] else ""
-        option = next((option for option, name in _OPTIONS.items() if name == field), f"well.{field}")
-        raise PumpjackError(f"{option}: {error_message(error, type(well))}") from None
-    return unit.model_copy(update={"well": changed})
+    return with_overrides(unit, WellOverrides(survey=None if survey is None else str(Path(survey).absolute()),
+                                              friction_coefficient=friction, guide_limit=guide_limit))
 
 
 def surveyed(unit: UnitConfig) -> bool:

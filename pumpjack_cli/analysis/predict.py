@@ -55,6 +55,9 @@ class WellOverrides:
     fluid_density: float | None = None
     fillage: float | None = None
     gas_exponent: float | None = None
+    survey: str | None = None
+    friction_coefficient: float | None = None
+    guide_limit: float | None = None
 
 
 #: Override field -> (the well's field, the option that sets it).
@@ -66,6 +69,9 @@ _OVERRIDES = {
     "fluid_density": ("fluid_density", "--fluid-density"),
     "fillage": ("pump_fillage", "--fillage"),
     "gas_exponent": ("gas_exponent", "--gas-exponent"),
+    "survey": ("survey", "--survey"),
+    "friction_coefficient": ("rod_friction_coefficient", "--friction-coefficient"),
+    "guide_limit": ("rod_guide_side_load_limit", "--guide-limit"),
 }
 
 

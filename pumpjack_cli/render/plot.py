@@ -8,6 +8,7 @@ environment (``MPLBACKEND``, which matplotlib checks when imported) is ignored.
 from __future__ import annotations
 
 import os
+import textwrap
 
 from ..quantities import output_unit
 from ..results import Result
@@ -69,7 +70,7 @@ def draw_plot(result: Result, system: str, stream, file_format: str) -> None:
         if not shares_x or ax is np.atleast_1d(axes)[-1]:
             name = panel.x_label if not panel.solid and panel.x_label else x_name
             ax.set_xlabel(f"{name} [{x_unit.label}]")
-    fig.suptitle(result.title, fontsize="medium")
+    fig.suptitle(textwrap.fill(result.title, 100), fontsize="medium")  # a long title on two lines, not cut off
     fig.tight_layout()
     fig.savefig(stream, format=file_format)
 
