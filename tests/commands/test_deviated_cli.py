@@ -191,3 +191,40 @@ def test_batch_takes_a_survey_per_well(run_cli, run_json, tmp_path):
     single = run_json("downhole", SK8, "--card", DEVIATED_CARD, "--survey", J_SURVEY)["summary"]
     assert rows["max_side_load_n_m"][by_well["j"]] == pytest.approx(single["max_side_load_n_m"], rel=1e-9)
     assert rows["pump_true_vertical_depth_m"][by_well["v"]] is None  # the vertical well has no survey figures
+
+
+def test_predict_with_a_vertical_survey_is_the_vertical_prediction(run_json, tmp_path):
+    plain = run_json("predict", SK8, "--samples", "64", "--damping", "0.1")
+    surveyed = run_json("predict", SK8, "--samples", "64", "--damping", "0.1", "--survey", _vertical_survey(tmp_path))
+    for name, value in plain["summary"].items():
+        assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
+    assert surveyed["summary"]["friction_work_per_cycle_j"] == 0.0
+
+
+def test_a_card_is_judged_by_the_rods_weight_along_the_hole(sk8_unit, tmp_path):
+    """A connected string's loads center on the weight it hangs; along a hole that turns horizontal at
+    300 m, that is far less than its buoyant weight, and a card of it must not be refused as a parted
+    string's (core/rods/plausibility.py)."""
+    from pumpjack_cli.analysis.deviated import with_survey
+    from pumpjack_cli.core.rods.plausibility import check_card_loads
+    from pumpjack_cli.errors import CardError
+
+    survey = tmp_path / "lateral.csv"
+    survey.write_text("measured_depth_m,inclination_deg,azimuth_deg\n0,0,0\n300,0,0\n600,90,0\n2000,90,0\n",
+                      encoding="utf-8")
+    unit = with_survey(sk8_unit, survey)
+    limits = unit.well_limits()
+    hole = unit.well.path()
+    q1, q2 = unit.rods().buoyant_weight_per_length(SK8_FLUID_DENSITY)[:2]
+    joint = 0.23 * SK8_PUMP_DEPTH  # the 1 in rods end 51.9 m into the quarter circle of radius R, phi = (s - 300) / R
+    build = 300.0 / math.radians(90.0)
+    into = math.sin((joint - 300.0) / build)  # int cos(phi) ds from 300 m to the joint, over R
+    assert hole.vertical_depth(SK8_PUMP_DEPTH) == pytest.approx(300.0 + build, rel=1e-9)
+    assert limits.hanging_weight == pytest.approx(q1 * (300.0 + build * into) + q2 * build * (1 - into), rel=1e-6)
+    theta = np.linspace(0.0, 2 * np.pi, 360, endpoint=False)
+    position = 1.5 * (1 - np.cos(theta))
+    load = limits.hanging_weight + 6e3 * (1 + np.sin(theta))  # the weight along the hole and a fluid load
+    check_card_loads(load, position, stroke=3.0, crank_speed=1.0, well=limits, structure_rating=None, source="c")
+    vertical = sk8_unit.well_limits()
+    with pytest.raises(CardError, match="median load"):
+        check_card_loads(load, position, stroke=3.0, crank_speed=1.0, well=vertical, structure_rating=None, source="c")

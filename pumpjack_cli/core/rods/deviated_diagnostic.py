@@ -71,7 +71,7 @@ def march(grid: StringGrid, period: float, position: np.ndarray, dynamic_load: n
         return (ahead - 2.0 * w + behind) / dt**2 + c * velocity, velocity
 
     mass, stiffness, static = grid.node_mass, grid.segment_stiffness, grid.static_node
-    a, b, cc, cell = grid.side_a, grid.side_b, grid.side_c, grid.cell_length
+    a, b, cc = grid.side_a, grid.side_b, grid.side_c
     positions, tensions, drags, velocities = [], [], [], []
     w, above = position, dynamic_load
     last = grid.nodes - 1
