@@ -105,11 +105,18 @@ class Section:
 
 E = Entry
 SECTIONS: tuple[Section, ...] = (
-    Section("Bundled units (`units`)", "", (
-        E("name", TEXT, "name to give to the commands (file stem)"),
+    Section("Units (`units`, `units --catalogue`)",
+            "The bundled units, or the rows of an operator's catalogue ([catalogue.md](catalogue.md)).", (
+        E("name", TEXT, "name to give to the commands (a bundled unit's file stem, a catalogue's DESIGNATION/HOLE)"),
         E("kind", TEXT, "machine kind: beam-pump or slider-crank"),
         E("designation", TEXT, "unit designation, e.g. SK8-3,5-4000"),
         E("description", TEXT, "one line about the file"),
+        E("crank_hole", TEXT, "crank hole of a catalogue row, 1 for the longest stroke"),
+        E("unit_class", TEXT, "kind of beam unit, its [geometry] class: conventional, mark-ii, ..."),
+        E("published_stroke", "length", "stroke the catalogue gives for the crank hole (empty if none)"),
+        E("stroke_difference", "length", "exact stroke minus the published stroke"),
+        E("stroke_check", TEXT, "ok, differs (by more than 0.5 in) or not published"),
+        E("source", TEXT, "where a catalogue row's data come from"),
     )),
     Section("Kinematics (`kinematics`, and columns shared by other commands)",
             "Beam units' crank angle is measured from 12 o'clock in the direction of rotation ([API11E]).", (

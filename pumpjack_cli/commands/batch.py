@@ -13,7 +13,7 @@ from ..analysis.batch.per_card import ANALYSES, Options
 from ..analysis.batch.run import run_batch
 from ..analysis.store_views import export_result, trend_result
 from ..errors import PumpjackError
-from ..options import CardUnitsOption, FormatOption, Output, OutputOption, UnitSystem, finite
+from ..options import CardUnitsOption, CatalogueOption, FormatOption, Output, OutputOption, UnitSystem, finite
 
 VERBS = ("run", "export", "trend")
 
@@ -51,6 +51,7 @@ def run(
         help="downhole: Gibbs' damping factor nu [default: the unit file's, else the energy balance]",
         min=0.0, max=2.0, callback=finite)] = None,
     card_units: CardUnitsOption = None,
+    catalogue: CatalogueOption = None,
     workers: Annotated[int | None, typer.Option(help="local worker processes [default: every core]", min=1,
                                                 max=1024)] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -60,7 +61,8 @@ def run(
     chosen = tuple(name.strip() for name in analyses.split(",") if name.strip())
     if not chosen:
         raise PumpjackError("--analyses: name at least one of torque, downhole")
-    options = Options(chosen, method, balance, damping, card_units.value if card_units else None)
+    options = Options(chosen, method, balance, damping, card_units.value if card_units else None,
+                      None if catalogue is None else str(catalogue))
     progress = _progress() if _terminal() else None
     try:
         tally = run_batch(manifest, store, options, workers or default_workers(), scheduler,

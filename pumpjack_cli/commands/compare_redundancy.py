@@ -11,8 +11,9 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
-                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption,
+                       CrankMotion, CrankMotionOption, CardSpmOption, StepsOption, CatalogueOption, UnitArgument,
+                       UnitsOption, UnitSystem, Output, card_source, quantity)
 from ..options import What, WhatOption
 
 class PhaseMode(str, Enum):
@@ -61,6 +62,7 @@ def compare_redundancy(
     crank_phase_mode: Annotated[PhaseMode | None, _deviation(
         "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
     ] = None,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -82,5 +84,5 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
+    sink.emit(run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
                   given, given_joints), SHOWN)

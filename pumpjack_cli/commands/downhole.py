@@ -10,9 +10,9 @@ import typer
 from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
+                       OutputOption, PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, CatalogueOption,
+                       UnitArgument, UnitsOption, UnitSystem, card_source, finite)
 from ..options import What, WhatOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
@@ -37,6 +37,7 @@ def downhole(
              "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -47,6 +48,6 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
+    result = run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -10,8 +10,8 @@ import typer
 from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
-from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
-                       UnitSystem, finite, positive, quantity)
+from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption,
+                       CatalogueOption, UnitArgument, UnitsOption, UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
@@ -46,6 +46,7 @@ def predict(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -66,5 +67,5 @@ def predict(
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
     )
-    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor)
+    result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor)
     sink.emit(result, SHOWN)

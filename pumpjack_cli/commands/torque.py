@@ -9,9 +9,9 @@ import typer
 
 from ..analysis.torque import torque as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
+                       OutputOption, PlotOption, CrankMotion, CrankMotionOption, StepsOption, CatalogueOption,
+                       UnitArgument, UnitsOption, UnitSystem, card_source, finite)
 from ..options import What, WhatOption
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
@@ -46,6 +46,7 @@ def torque(
     drive_efficiency: Annotated[float, typer.Option(
         help="efficiency of belt and gearbox between motor and crank, for the motor power", min=0.1, max=1.0,
         callback=finite)] = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -57,7 +58,7 @@ def torque(
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_unit(unit), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
+    result = run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

@@ -12,7 +12,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ...errors import PumpjackError, collected_warnings
+from ...errors import PumpjackError, collected_warnings, warn
+from ...readers.catalogue import read_catalogue
 from ...readers.manifest import Job
 from ...readers.unit_files import read_table
 from ...results import check_finite, converted_summary
@@ -38,6 +39,8 @@ class Options:
     damping: float | None = None
     #: Units of card columns whose header names none ("si", "field"); None refuses them.
     card_units: str | None = None
+    #: The operator's catalogue file whose units the manifest may name (DESIGNATION/HOLE), if any.
+    catalogue: str | None = None
 
     def for_analysis(self, analysis: str) -> dict:
         """The options that change an analysis' result (for the options hash; without
@@ -58,21 +61,34 @@ class Outcome:
 
 
 _UNITS: dict = {}
+_CATALOGUES: dict = {}
 
 
-def _unit(job: Job):
-    """The unit of a job with its overrides, loaded once per process."""
-    key = (job.unit, job.counterbalance_moment, job.rod_string)
+def _catalogue(path: str | None):
+    """The catalogue of a run, read once per process."""
+    if path is not None and path not in _CATALOGUES:
+        _CATALOGUES[path] = read_catalogue(Path(path))
+    return None if path is None else _CATALOGUES[path]
+
+
+def _unit(job: Job, catalogue: str | None):
+    """The unit of a job with its overrides, loaded once per process; the warnings of loading it
+    (a catalogue unit's stroke) are given again for every card."""
+    key = (job.unit, job.counterbalance_moment, job.rod_string, catalogue)
     if key not in _UNITS:
         from ...config import load_unit
 
-        unit = load_unit(job.unit)
-        if job.counterbalance_moment is not None:
-            unit = _with_moment(unit, job.counterbalance_moment)
-        if job.rod_string is not None:
-            unit = _with_rod_string(unit, job.rod_string)
-        _UNITS[key] = unit
-    return _UNITS[key]
+        with collected_warnings() as noted:
+            unit = load_unit(job.unit, _catalogue(catalogue))
+            if job.counterbalance_moment is not None:
+                unit = _with_moment(unit, job.counterbalance_moment)
+            if job.rod_string is not None:
+                unit = _with_rod_string(unit, job.rod_string)
+        _UNITS[key] = unit, tuple(noted)
+    unit, noted = _UNITS[key]
+    for text in noted:
+        warn(text)
+    return unit
 
 
 def _with_moment(unit: UnitConfig, moment: float):
@@ -127,7 +143,7 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     for analysis in options.analyses:
         with collected_warnings() as noted:
             try:
-                unit = _unit(job)
+                unit = _unit(job, options.catalogue)
                 if analysis == "torque":
                     result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
                 else:
