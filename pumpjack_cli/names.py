@@ -21,6 +21,8 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
+from .quantities import UNIT_SYSTEMS, output_unit
+
 #: Quantity kind of a text value (a label, a designation): no unit, no conversion.
 TEXT = "text"
 
@@ -447,6 +449,28 @@ def lookup(name: str) -> tuple[str, str]:
         return catalogue()[name]
     except KeyError:
         raise KeyError(f"output name {name!r} is not in the catalogue (pumpjack_cli/names.py)") from None
+
+
+def suffixed(name: str, quantity: str, system: str) -> str:
+    """An output name as ``-f csv`` and ``-f json`` write it: with the unit suffix of the unit
+    system, none for text or a pure number.
+
+    >>> suffixed("rod_load", "force", "si"), suffixed("rod_load", "force", "field")
+    ('rod_load_n', 'rod_load_lbf')
+    """
+    if quantity == TEXT:
+        return name
+    suffix = output_unit(quantity, system).suffix
+    return f"{name}_{suffix}" if suffix else name
+
+
+@cache
+def written_names() -> dict[str, tuple[str, str, str]]:
+    """Every name this tool writes in ``-f csv`` and ``-f json`` (suffixed, in both unit
+    systems) -> (output name, quantity kind, unit system), so that a reader knows the tool's
+    own files: ``position_in`` -> ``("position", "length", "field")``."""
+    return {suffixed(name, quantity, system): (name, quantity, system)
+            for name, (quantity, _) in catalogue().items() for system in UNIT_SYSTEMS}
 
 
 def _cell(text: str) -> str:

@@ -66,24 +66,36 @@ CatalogueOption = Annotated[Path | None, typer.Option(
     "--catalogue", help="your unit catalogue: a CSV of one row per unit and crank hole, whose units are named "
     "DESIGNATION/HOLE (docs/catalogue.md)", dir_okay=False)]
 CardOption = Annotated[Path, typer.Option(
-    "--card", help="dynamometer card CSV, or - for standard input (see docs/cards.md)", dir_okay=False)]
+    "--card", help="dynamometer card file (delimited text, JSON, binary or hex block, a recording), or - for "
+    "standard input (see docs/cards.md)", dir_okay=False)]
 
 CardColumnsOption = Annotated[str | None, typer.Option(
     "--card-columns", help="which card columns to read, for headers the reader does not know: "
     "'position=NAME,load=NAME[,time=NAME]' or 'crank_angle=NAME,load=NAME'")]
 CardUnitsOption = Annotated[UnitSystem | None, typer.Option(
-    "--card-units", help="units of card columns whose header names none: si (m, N) or field (in, lbf) "
-    "[default: such a column is refused]")]
+    "--card-units", help="units of card columns whose file names none: si (m, N) or field (in, lbf); a binary or "
+    "hex block needs them [default: such a column is refused]")]
+CardFormatOption = Annotated[str | None, typer.Option(
+    "--card-format", help="card file format: json, hex, binary or delimited [default: told from the content, "
+    "then the file name's ending]")]
+CardPointsOption = Annotated[int | None, typer.Option(
+    "--card-points", help="points of a binary or hex card block (8 bytes each) [default: 200]", min=8,
+    max=100_000)]
+StrokeOption = Annotated[str | None, typer.Option(
+    "--stroke", help="the card of a file of several strokes (a recording, a hex file of several lines): a number "
+    "from 1, last or median (the median card of all strokes) [default: last, the card a controller shows]")]
 
 
-def card_source(card: Path, units: UnitSystem | None, columns: str | None):
+def card_source(card: Path, units: UnitSystem | None, columns: str | None, format: str | None = None,
+                points: int | None = None, stroke: str | None = None):
     """The card options as the run layer's :class:`~pumpjack_cli.analysis.card_runs.CardSource`,
-    the ``--card-columns`` text parsed into its mapping (a bad text: one-line CardError)."""
-    from .analysis.card_runs import CardSource  # numpy: only when a command runs
+    the ``--card-columns`` text parsed into its mapping and ``--stroke`` into its choice, the
+    format and block size checked (bad options: one-line CardError)."""
+    from .analysis.card_runs import CardSource, parse_stroke  # numpy: only when a command runs
     from .readers.cards import parse_card_columns
 
     mapping = None if columns is None else parse_card_columns(columns)
-    return CardSource(card, None if units is None else units.value, mapping)
+    return CardSource(card, None if units is None else units.value, mapping, format, points, parse_stroke(stroke))
 
 
 def finite(value: float | None) -> float | None:

@@ -70,6 +70,7 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     "kinematic_viscosity": {"m2/s": 1.0, "mm2/s": 1e-6, "cst": 1e-6},
     "fraction": {"%": 1e-2},
     "area": {"m2": 1.0, "cm2": 1e-4, "mm2": 1e-6, "in2": INCH**2},
+    "volume": {"m3": 1.0, "l": 1e-3, "in3": INCH**3, "ft3": FOOT**3, "gal": 231 * INCH**3},
     "area_moment": {"m4": 1.0, "cm4": 1e-8, "mm4": 1e-12, "in4": INCH**4},
     "pressure": {"pa": 1.0, "kpa": 1e3, "mpa": 1e6, "gpa": 1e9, "bar": 1e5, "psi": POUND_FORCE / INCH**2},
     # weight per unit length of a rod (couplings included); "lb/ft" and "kg/m" are the

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .errors import PumpjackError
-from .names import TEXT, lookup
+from .names import TEXT, lookup, suffixed
 from .quantities import output_unit
 
 #: Quantity of a column of numbers already in SI display units under their suffixed
@@ -127,11 +127,9 @@ class Result:
 
 
 def display_name(name: str, quantity: str, system: str) -> str:
-    """Column or summary key with the unit suffix of the unit system (none for text or pure numbers)."""
-    if quantity in (TEXT, STORED):
-        return name
-    suffix = output_unit(quantity, system).suffix
-    return f"{name}_{suffix}" if suffix else name
+    """Column or summary key with the unit suffix of the unit system (none for text, pure numbers
+    or stored columns, already suffixed)."""
+    return name if quantity == STORED else suffixed(name, quantity, system)
 
 
 def converted_summary(result: Result, system: str) -> dict[str, float | str]:

@@ -6,7 +6,8 @@ directory, a FIFO, a device such as ``/dev/zero`` that never ends) and what is l
 than the limit of its kind, reads at most that many bytes, and accepts only UTF-8 text
 (a byte-order mark is dropped, line ends become LF), naming UTF-16, binary data and
 other encodings instead of misreading them. ``-`` reads standard input with the same
-limit, and refuses a terminal (it would wait for typing).
+limit, and refuses a terminal (it would wait for typing). A file that may be binary (a
+card's float block) is read the same way by :func:`read_bytes`, and decoded by its reader.
 """
 
 from __future__ import annotations
@@ -122,9 +123,11 @@ def _read_file(path: Path | str, limit: int, what: str, source: str, error: type
         os.close(fd)
 
 
-def read_text(path: Path | str, limit: int, what: str, error: type[PumpjackError] = PumpjackError,
-              stream: IO | None = None) -> str:
-    """The text of a file (``"-"``: ``stream``, by default standard input) of at most ``limit`` bytes.
+def read_bytes(path: Path | str, limit: int, what: str, error: type[PumpjackError] = PumpjackError,
+               stream: IO | None = None) -> bytes | str:
+    """The content of a file (``"-"``: ``stream``, by default standard input) of at most ``limit``
+    bytes, as read: bytes, or text from a text stream. For a file that may be binary (a card
+    block); :func:`read_text` for text.
 
     ``what`` names the kind of file in messages ("unit file", "card file"); problems
     raise ``error`` (a :class:`~pumpjack_cli.errors.PumpjackError`) with one line naming
@@ -145,4 +148,11 @@ def read_text(path: Path | str, limit: int, what: str, error: type[PumpjackError
         data = _read_file(path, limit, what, source, error)
     if len(data) > limit:
         raise error(f"{source}: more than {limit:,} bytes; a {what} is at most {limit:,} bytes")
-    return decode_text(data, source, error)
+    return data
+
+
+def read_text(path: Path | str, limit: int, what: str, error: type[PumpjackError] = PumpjackError,
+              stream: IO | None = None) -> str:
+    """The text of a file (``"-"``: ``stream``) of at most ``limit`` bytes (:func:`read_bytes`),
+    UTF-8 only (:func:`decode_text`)."""
+    return decode_text(read_bytes(path, limit, what, error, stream), display_name(path), error)

@@ -6,10 +6,16 @@ on the unit's crank-angle axis (:func:`pumpjack_cli.core.cards.place_card`) once
 the placement's time fit gives at every sample.
 
 The crank speed of a uniform run is the card's own when its time stamps give one (a
-``--spm`` that disagrees by more than 2 % is an error that prints both), else
-``--spm``, else the motor's rated speed through the drive. A run is evaluated on the
+``--spm`` that disagrees by more than 2 % is an error that prints both), else the SPM
+the file states, else ``--spm``, else the motor's rated speed through the drive. An SPM
+the file states is checked against the time stamps too. A run is evaluated on the
 output grid (``--steps``) and on a fixed summary grid, so that the extremes a command
 reports do not depend on ``--steps``.
+
+A file of several strokes (a continuous recording, a hex file of several blocks) gives
+the card ``--stroke`` chooses: a stroke's number, the last (the default: the card a
+controller shows, the most recent), or the median card of all its strokes
+(:func:`median_card`).
 """
 
 from __future__ import annotations
@@ -22,7 +28,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..core.beam.card import card_load
+from ..core.beam.card import card_from_angles, card_load
 from ..core.cards import PlacedCard, place_card
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
@@ -30,17 +36,20 @@ from ..core.rods.plausibility import check_card_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
-from ..readers.cards import RawCard, read_card
+from ..readers.cards import RawCard, check_options, read_card
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
 
-#: --spm and the card's time stamps may differ by this fraction; the card's speed wins.
+#: --spm and the card's time stamps may differ by this fraction; the card's speed wins. So may
+#: the SPM a file states and its time stamps, or --spm and the SPM stated by a card without them.
 SPEED_TOLERANCE = 0.02
 #: Steps of the integration t = int dtheta / omega over one revolution.
 FINE_STEPS = 3600
 #: Crank-angle points per time sample when a card is put on a uniform time grid.
 RESAMPLE_FACTOR = 8
+#: The strokes ``--stroke`` may choose besides a number (from 1).
+STROKE_CHOICES = ("last", "median")
 #: Crank positions on which a card's plausibility is judged.
 PLAUSIBILITY_STEPS = 360
 
@@ -51,24 +60,57 @@ CRANK_MOTIONS = ("uniform", "card", "dynamic", "auto")
 
 
 @dataclass(frozen=True)
+class Reading(PlacedCard):
+    """A placed card (:class:`~pumpjack_cli.core.cards.PlacedCard`) with the pumping speed its
+    file states when it has no time stamps to measure one: ``stated_speed`` [rad/s] and the
+    file's line of it, None without (a card with time stamps has its stated SPM checked
+    against them instead)."""
+
+    stated_speed: float | None = None
+    stated_line: int | None = None
+
+
+def parse_stroke(text: str | None) -> int | str:
+    """The stroke ``--stroke`` chooses: a number from 1, ``last`` (also for None) or ``median``.
+
+    >>> parse_stroke("3"), parse_stroke(None), parse_stroke("Median")
+    (3, 'last', 'median')
+    """
+    choice = "last" if text is None else text.strip().lower()
+    if choice in STROKE_CHOICES:
+        return choice
+    if choice.isdigit() and int(choice) >= 1:
+        return int(choice)
+    raise CardError(f"--stroke {text!r}: a stroke's number (from 1), last or median")
+
+
+@dataclass(frozen=True)
 class CardSource:
-    """Where a card comes from: a path (``-`` for standard input), the units of columns
-    whose header names none (None: such a column is refused), and an optional column
-    mapping kind -> header (``--card-columns``, parsed)."""
+    """Where a card comes from and how it is read: a path (``-`` for standard input), the
+    units of columns whose file names none (None: such a column is refused), an optional
+    column mapping kind -> header (``--card-columns``, parsed), the format (None: told from
+    the content and the name), the points of a card block, and the stroke of a file of
+    several (:func:`parse_stroke`)."""
 
     path: Path
     units: str | None = None
     columns: Mapping[str, str] | None = None
+    format: str | None = None
+    points: int | None = None
+    stroke: int | str = "last"
 
-    def read(self, unit: UnitConfig, spm: float | None = None) -> PlacedCard:
-        """The card read, placed on the unit's crank-angle axis and checked against what the unit
-        and its rods can produce (:func:`plausible`, the one rule of every command); the
-        warnings are noted (:func:`~pumpjack_cli.errors.warn`). ``spm`` [1/min], the
-        ``--spm`` option, is the speed of a card without time stamps."""
-        placed = place(read_card(self.path, units=self.units, columns=self.columns), unit.geometry.mechanism())
-        for warning in placed.warnings + plausible(unit, placed, spm):
-            warn(warning)
-        return placed
+    def __post_init__(self):
+        check_options(self.format, self.units, self.points)
+
+    def raw(self) -> RawCard:
+        """The card file read (no unit yet): for a file of several strokes, the last, holding all."""
+        return read_card(self.path, self.format, self.units, self.columns, points=self.points)
+
+    def read(self, unit: UnitConfig, spm: float | None = None) -> Reading:
+        """The chosen card read, placed on the unit's crank-angle axis and checked against what
+        the unit and its rods can produce (:func:`noted`). ``spm`` [1/min], the ``--spm``
+        option, is the speed of a card without time stamps or a stated SPM."""
+        return noted(chosen(self.raw(), self.stroke, unit.geometry.mechanism()), unit, spm)
 
     @property
     def name(self) -> str:
@@ -76,20 +118,100 @@ class CardSource:
         return "<stdin>" if str(self.path) == "-" else self.path.name
 
 
-def place(raw: RawCard, mechanism: Mechanism) -> PlacedCard:
+def noted(reading: Reading, unit: UnitConfig, spm: float | None) -> Reading:
+    """The reading checked against what the unit and its rods can produce (:func:`plausible`,
+    the one rule of every command), its warnings noted (:func:`~pumpjack_cli.errors.warn`)."""
+    for warning in reading.warnings + plausible(unit, reading, spm):
+        warn(warning)
+    return reading
+
+
+def chosen(raw: RawCard, stroke: int | str, mechanism: Mechanism) -> Reading:
+    """The card ``stroke`` chooses among a file's strokes (a file of one card is its only
+    stroke), placed on ``mechanism``."""
+    strokes = raw.strokes or (raw,)
+    if stroke == "median" and raw.strokes:
+        return median_card(raw, mechanism)
+    if stroke in STROKE_CHOICES:
+        return place(strokes[-1], mechanism)
+    if not 1 <= int(stroke) <= len(strokes):
+        held = f"{len(strokes)} strokes" if raw.strokes else "one card, not a recording of several strokes"
+        raise CardError(f"{raw.source}: --stroke {stroke}: the file holds {held}")
+    return place(strokes[int(stroke) - 1], mechanism)
+
+
+def place(raw: RawCard, mechanism: Mechanism) -> Reading:
     """A raw card on the crank-angle axis of ``mechanism`` (:func:`~pumpjack_cli.core.cards.place_card`),
-    its messages in the file's own position unit."""
-    return place_card(mechanism, raw.load, crank_angle=raw.crank_angle, position=raw.position, time=raw.time,
-                      source=raw.source, position_unit=raw.column_units.get("position", ("m", 1.0)),
-                      reversed=raw.reversed, warnings=raw.warnings)
+    its messages in the file's own position unit, with the SPM the file states (:func:`stated`)."""
+    placed = place_card(mechanism, raw.load, crank_angle=raw.crank_angle, position=raw.position, time=raw.time,
+                        source=raw.source, position_unit=raw.column_units.get("position", ("m", 1.0)),
+                        reversed=raw.reversed, warnings=raw.warnings)
+    return stated(placed, raw)
 
 
-#: Crank speed assumed for the plausibility of a card without time stamps, --spm or drive
-#: [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
+def stated(placed: PlacedCard, raw: RawCard) -> Reading:
+    """``placed`` with the SPM ``raw``'s file states: checked against the speed of its time
+    stamps (refused beyond :data:`SPEED_TOLERANCE`, as ``--spm``), or kept as the card's
+    pumping speed when it has none."""
+    fields = {name: getattr(placed, name) for name in PlacedCard.__dataclass_fields__}
+    if "spm" not in raw.metadata:
+        return Reading(**fields)
+    line = raw.metadata_lines.get("spm")
+    speed = float(raw.metadata["spm"]) * math.pi / 30.0
+    if placed.speed is None:
+        return Reading(**fields, stated_speed=speed, stated_line=line)
+    _agree(speed, placed.speed, f"{raw.source}: line {line}: the stated SPM", "the card's time stamps",
+           "check the SPM line or the time column")
+    return Reading(**fields)
+
+
+def _periodic(theta: np.ndarray, angle: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """Per-sample ``values`` at crank angles ``angle`` [rad], interpolated periodically at ``theta``."""
+    order = np.argsort(angle)
+    return np.interp(theta, angle[order], values[order], period=2.0 * np.pi)
+
+
+def median_card(raw: RawCard, mechanism: Mechanism) -> Reading:
+    """The median card of a file's strokes, point by point on a common crank-angle grid.
+
+    Each stroke is placed on ``mechanism`` (its own time fit), its load interpolated
+    periodically on a grid of as many crank angles as the longest stroke has samples,
+    and the median taken at each angle; likewise the fitted crank speed and
+    acceleration of strokes with time stamps, whose mean speed is then 2 pi over the
+    period T = integral of dtheta / omega. The median follows the strokes' common shape
+    and ignores a stroke that departs from it (a gas pound, a glitch), which a mean would
+    smear into every angle.
+    """
+    placed = [place(stroke, mechanism) for stroke in raw.strokes]
+    theta = crank_grid(max(p.crank_angle.size for p in placed))
+    load = np.median([card_load(p.card, theta) for p in placed], axis=0)
+    common = {"card": card_from_angles(theta, load), "source": raw.source, "load": load, "crank_angle": theta,
+              "warnings": tuple(warning for p in placed for warning in p.warnings)}
+    if any(p.time is None for p in placed):
+        return stated(PlacedCard(**common), raw)
+    omega = np.median([_periodic(theta, p.crank_angle, p.crank_speed) for p in placed], axis=0)
+    alpha = np.median([_periodic(theta, p.crank_angle, p.crank_acceleration) for p in placed], axis=0)
+    elapsed = _elapsed(np.append(theta, 2.0 * np.pi), np.append(omega, omega[0]))
+    return stated(PlacedCard(**common, time=elapsed[:-1], speed=2.0 * np.pi / elapsed[-1], crank_speed=omega,
+                             crank_acceleration=alpha, fit_rms=max(p.fit_rms for p in placed),
+                             fit_rms_relative=max(p.fit_rms_relative for p in placed)), raw)
+
+
+def _agree(given: float, known: float, given_name: str, known_name: str, hint: str) -> None:
+    """Refuse two pumping speeds [rad/s] that differ by more than :data:`SPEED_TOLERANCE`,
+    printing both in strokes per minute."""
+    mismatch = given / known - 1.0
+    if abs(mismatch) > SPEED_TOLERANCE:
+        raise CardError(f"{given_name} {given * 30.0 / math.pi:.4g} disagrees with {known_name} "
+                        f"({known * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; {hint}")
+
+
+#: Crank speed assumed for the plausibility of a card without time stamps, stated SPM, --spm or
+#: drive [strokes/min]: the fast end of beam pumping, which makes the peak-load bound generous.
 FAST_PUMPING = 20.0
 
 
-def plausible(unit: UnitConfig, placed: PlacedCard, spm: float | None) -> tuple[str, ...]:
+def plausible(unit: UnitConfig, placed: Reading, spm: float | None) -> tuple[str, ...]:
     """Refuse a card the unit and its rods cannot have made, with the same one line for every
     command (:func:`~pumpjack_cli.core.rods.plausibility.check_card_loads`); the warning of a
     parted string, if any."""
@@ -97,6 +219,8 @@ def plausible(unit: UnitConfig, placed: PlacedCard, spm: float | None) -> tuple[
     theta = crank_grid(PLAUSIBILITY_STEPS)
     if placed.speed is not None:
         speed = placed.speed
+    elif placed.stated_speed is not None:
+        speed = placed.stated_speed
     elif spm is not None or unit.drive is None:
         speed = parse_quantity(f"{FAST_PUMPING if spm is None else spm} spm", "rotational_speed")
     else:
@@ -141,11 +265,7 @@ def check_speed(card_speed: float | None, spm_option: float | None, source: str 
             raise CardError(f"{name} {value!r}: not a positive speed")
     if card_speed is None or spm_option is None:
         return spm_option if card_speed is None else card_speed
-    mismatch = spm_option / card_speed - 1.0
-    if abs(mismatch) > SPEED_TOLERANCE:
-        raise CardError(f"--spm {spm_option * 30.0 / math.pi:.4g} disagrees with the time stamps of {source} "
-                        f"({card_speed * 30.0 / math.pi:.4g} strokes/min) by {100 * mismatch:+.1f} %; "
-                        f"drop --spm or check the card")
+    _agree(spm_option, card_speed, "--spm", f"the time stamps of {source}", "drop --spm or check the card")
     return card_speed
 
 
@@ -168,31 +288,39 @@ class CardRun:
         return 2.0 * np.pi / self.period
 
 
-def uniform_speed(unit: UnitConfig, reading: PlacedCard, spm: float | None) -> float:
-    """Crank speed [1/s] of a uniform run: the card's time stamps, else ``--spm``, else the drive."""
+def uniform_speed(unit: UnitConfig, reading: Reading, spm: float | None) -> float:
+    """Crank speed [1/s] of a uniform run: the card's time stamps, else the SPM its file
+    states, else ``--spm``, else the drive."""
     option = None if spm is None else parse_quantity(f"{spm} spm", "rotational_speed")
     speed = check_speed(reading.speed, option, reading.source)
+    if reading.stated_speed is not None:
+        if option is not None:
+            _agree(option, reading.stated_speed, "--spm", f"the SPM {reading.source} states on line "
+                   f"{reading.stated_line}", "drop --spm or check the card")
+        speed = reading.stated_speed
     return unit.crank_speed(None) if speed is None else speed
 
 
-def _card_motion(reading: PlacedCard, thetas: list[np.ndarray]) -> list[CardRun]:
+def _elapsed(theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
+    """Time [s] from crank angle 0 at each of the increasing crank angles ``theta`` [rad] from 0
+    (the last 2 pi: the period), t = integral of dtheta / omega, by the trapezoidal rule."""
+    rate = 1.0 / omega
+    return np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(theta))])
+
+
+def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:
     """The crank speed and acceleration fitted to the card's time stamps ([Takacs2016]), on each grid."""
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --crank-motion card needs a card with time stamps")
-    omega_s, alpha_s = reading.crank_speed, reading.crank_acceleration
-    order = np.argsort(reading.crank_angle)
-    angles = reading.crank_angle[order]
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
-    rate = 1.0 / np.interp(fine, angles, omega_s[order], period=2.0 * np.pi)
-    elapsed = np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(fine))])
-    return [CardRun(theta, np.interp(theta, fine, elapsed),
-                    np.interp(theta, angles, omega_s[order], period=2.0 * np.pi),
-                    np.interp(theta, angles, alpha_s[order], period=2.0 * np.pi), card_load(reading.card, theta),
+    elapsed = _elapsed(fine, _periodic(fine, reading.crank_angle, reading.crank_speed))
+    return [CardRun(theta, np.interp(theta, fine, elapsed), _periodic(theta, reading.crank_angle, reading.crank_speed),
+                    _periodic(theta, reading.crank_angle, reading.crank_acceleration), card_load(reading.card, theta),
                     float(elapsed[-1]), "card") for theta in thetas]
 
 
 def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
-              crank_motion: str) -> tuple[PlacedCard, list[CardRun]]:
+              crank_motion: str) -> tuple[Reading, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
     reading = source.read(unit, spm)
     thetas = [crank_grid(steps) for steps in grids]
@@ -232,7 +360,7 @@ class TimeCard:
 
 
 def time_card(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
-              crank_motion: str) -> tuple[PlacedCard, TimeCard]:
+              crank_motion: str) -> tuple[Reading, TimeCard]:
     """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
     from the card's time stamps or from the equation of motion) is resolved on a fine
     crank-angle grid and inverted, so a card of positions only is usable through the

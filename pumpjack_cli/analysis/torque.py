@@ -24,6 +24,7 @@ from ..core.beam.balance import balance_criteria, recommend_counterbalance
 from ..core.beam.card import Card
 from ..core.beam.counterbalance import (
     Counterbalance,
+    CounterbalanceModel,
     counterbalance_effect,
     counterweight_placement,
 )
@@ -65,7 +66,10 @@ class _Torques:
     net: np.ndarray
 
 
-def _torques(unit: UnitConfig, linkage, masses, balance: Counterbalance, run: CardRun, method: str) -> _Torques:
+def _torques(unit: UnitConfig, linkage, spatial_masses, masses, balance: CounterbalanceModel, run: CardRun,
+             method: str) -> _Torques:
+    """The torque terms of a run; the exact net torque too when ``spatial_masses`` (the masses of
+    a unit with the spatial model) are given."""
     parts = torque_components(linkage, run.crank_angle, run.load, balance,
                               beam_inertia=beam_group_inertia(linkage, masses) if masses else 0.0,
                               rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
@@ -73,8 +77,8 @@ def _torques(unit: UnitConfig, linkage, masses, balance: Counterbalance, run: Ca
     api = (parts.rod_load + parts.structural + parts.counterbalance + parts.articulating_inertia
            + parts.rotary_inertia)
     exact = None
-    if masses is not None:
-        basis = _exact_basis(unit.geometry.spatial(unit.name), masses, run.crank_angle.tobytes())
+    if spatial_masses is not None:
+        basis = _exact_basis(unit.geometry.spatial(unit.name), spatial_masses, run.crank_angle.tobytes())
         exact = basis.torque(run.load, run.crank_speed, run.crank_acceleration)
     return _Torques(run, parts, api, exact, exact if method == "exact" else api)
 
@@ -109,7 +113,7 @@ class CardTorque:
     """The torque analysis of a card: the card's own figures (speed, work, polished-rod
     power), the torque summary, columns on the output grid, plot panels, and what other
     analyses read of it: the net torque column of the present counterbalance (of the
-    recommended one when the present moment is unknown), its largest magnitude [N·m] on
+    recommended one when the present counterbalance is unknown), its largest magnitude [N·m] on
     the summary grid, and the gearbox rating's lines for a torque plot."""
 
     card_summary: tuple[Scalar, ...]
@@ -133,15 +137,19 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     if method == "exact" and masses is None:
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
                             f"(--method api needs only [counterbalance])")
-    balance, moment_known = unit.counterbalance_model()
-    out, dense = (_torques(unit, linkage, masses, balance, run, method) for run in runs)
+    spatial = getattr(unit.geometry, "spatial", None)
+    if method == "exact" and spatial is None:
+        raise PumpjackError(f"--method exact: the exact method is the spatial kinetostatics of the class I six-link "
+                            f"mechanism; unit {unit.name} is {unit.geometry.unit_class}: use --method api")
+    balance, balance_known = unit.counterbalance_model()
+    out, dense = (_torques(unit, linkage, masses if spatial else None, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
     parts = dense.components
     recommendation = recommend_counterbalance(
         criterion, linkage, theta, dense.run.load, balance, weights=dt, test_angle=TEST_ANGLE,
         extra_torque=dense.net - parts.rod_load - parts.structural - parts.counterbalance)
-    if recommendation.moment is None:
+    if recommendation.value is None:
         raise PumpjackError(f"--balance {criterion}: {recommendation.note}; try --balance min-peak or min-rms")
 
     def shifted(t: _Torques, value: float) -> np.ndarray:
@@ -150,27 +158,26 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
 
     work = card_work(linkage, card)
     frequency = 1.0 / out.run.period
-    summary = [Scalar("structural_unbalance", balance.structural_unbalance),
-               Scalar("crank_offset", balance.offset)]
-    current = dense.net if moment_known else None
-    if moment_known:
+    summary = [Scalar(name, value) for name, value in balance.summary()]
+    current = dense.net if balance_known else None
+    if balance_known:
         found = peak(theta, current)
-        summary += [Scalar("counterbalance_moment", balance.moment),
+        summary += [Scalar(balance.variable, balance.value),
                     Scalar("counterbalance_effect",
                            counterbalance_effect(linkage.motion(np.array([TEST_ANGLE])), balance)),
                     Scalar("peak_net_torque", found.value),
                     Scalar("peak_net_torque_crank_angle", found.crank_angle)]
         summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))
-    recommended = shifted(dense, recommendation.moment)
+    recommended = shifted(dense, recommendation.value)
     summary += [
-        Scalar("recommended_counterbalance_moment", recommendation.moment),
+        Scalar("recommended_" + balance.variable, recommendation.value),
         Scalar("recommended_counterbalance_effect", recommendation.counterbalance_effect),
         Scalar("recommended_peak_net_torque", peak(theta, recommended).value),
         Scalar("recommended_upstroke_peak_torque", recommendation.upstroke_peak),
         Scalar("recommended_downstroke_peak_torque", recommendation.downstroke_peak),
     ]
-    if masses is not None:
-        placement = counterweight_placement(recommendation.moment, masses,
+    if masses is not None and isinstance(balance, Counterbalance):
+        placement = counterweight_placement(recommendation.value, masses,
                                             unit.masses.counterweights.radius_range or (0.0, MAX_RADIUS))
         if placement.radius is not None:
             summary.append(Scalar("recommended_counterweight_radius", placement.radius))
@@ -190,12 +197,12 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     summary += _loading(rated, card.load.max(), linkage.stroke, current, recommended, theta)
     if dense.exact is not None:
         summary.append(Scalar("peak_exact_minus_api_torque", peak(theta, dense.exact - dense.api).value))
-    columns = _columns(linkage, out, balance, moment_known, shifted(out, recommendation.moment), rated)
-    headline = next(c for c in columns if c.name == ("net_torque" if moment_known else "recommended_net_torque"))
+    columns = _columns(linkage, out, balance_known, shifted(out, recommendation.value), rated)
+    headline = next(c for c in columns if c.name == ("net_torque" if balance_known else "recommended_net_torque"))
     levels = _rating_levels(rated)
     card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency), Scalar("card_work", work),
                     Scalar("polished_rod_power", work * frequency))
-    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(columns, levels, moment_known), headline,
+    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(columns, levels, balance_known), headline,
                       peak(theta, base).value, levels)
 
 
@@ -216,7 +223,7 @@ def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommend
     return found
 
 
-def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, recommended, rated: Ratings):
+def _columns(linkage, t: _Torques, balance_known: bool, recommended, rated: Ratings):
     run, parts = t.run, t.components
     m = linkage.motion(run.crank_angle)
     columns = [
@@ -229,7 +236,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
         Column("articulating_inertia_torque", parts.articulating_inertia),
         Column("rotary_inertia_torque", parts.rotary_inertia),
     ]
-    if moment_known:
+    if balance_known:
         columns += [Column("counterbalance_torque", parts.counterbalance),
                     Column("net_torque", t.net)]
     if t.exact is not None:
@@ -237,7 +244,7 @@ def _columns(linkage, t: _Torques, balance: Counterbalance, moment_known: bool, 
                     Column("exact_net_torque", t.exact),
                     Column("exact_minus_api_torque", t.exact - t.api)]
     columns.append(Column("recommended_net_torque", recommended))
-    if rated.gearbox_torque is not None and moment_known:
+    if rated.gearbox_torque is not None and balance_known:
         low, high = permissible_load(m.torque_factor, parts.structural + parts.counterbalance, rated.gearbox_torque)
         columns += [Column("permissible_load_min", _clip(low, run.load)),
                     Column("permissible_load_max", _clip(high, run.load))]
@@ -257,7 +264,7 @@ def _rating_levels(rated: Ratings) -> tuple[tuple[str, float], ...]:
                                                     ("", -rated.gearbox_torque))
 
 
-def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], moment_known: bool) -> tuple[Panel, ...]:
+def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], balance_known: bool) -> tuple[Panel, ...]:
     names = {c.name for c in columns}
     panels = []
     if "permissible_load_min" in names:
@@ -265,9 +272,9 @@ def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], moment
                             x="position", clip=True))
     else:
         panels.append(Panel("card", ("rod_load",), x="position"))
-    panels.append(Panel("net torque", ("net_torque",) if moment_known else ("recommended_net_torque",),
-                        ("recommended_net_torque",) if moment_known else (), levels=levels))
+    panels.append(Panel("net torque", ("net_torque",) if balance_known else ("recommended_net_torque",),
+                        ("recommended_net_torque",) if balance_known else (), levels=levels))
     panels.append(Panel("torque components", ("rod_load_torque", "structural_torque", "articulating_inertia_torque",
                                               "rotary_inertia_torque")
-                        + (("counterbalance_torque",) if moment_known else ())))
+                        + (("counterbalance_torque",) if balance_known else ())))
     return tuple(panels)

@@ -13,7 +13,8 @@ from ..analysis.batch.per_card import ANALYSES, Options
 from ..analysis.batch.run import run_batch
 from ..analysis.store_views import export_result, trend_result
 from ..errors import PumpjackError
-from ..options import CardUnitsOption, CatalogueOption, FormatOption, Output, OutputOption, UnitSystem, finite
+from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, CatalogueOption, FormatOption, Output,
+                       OutputOption, UnitSystem, finite)
 
 VERBS = ("run", "export", "trend")
 
@@ -51,6 +52,8 @@ def run(
         help="downhole: Gibbs' damping factor nu [default: the unit file's, else the energy balance]",
         min=0.0, max=2.0, callback=finite)] = None,
     card_units: CardUnitsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
     catalogue: CatalogueOption = None,
     workers: Annotated[int | None, typer.Option(help="local worker processes [default: every core]", min=1,
                                                 max=1024)] = None,
@@ -61,8 +64,8 @@ def run(
     chosen = tuple(name.strip() for name in analyses.split(",") if name.strip())
     if not chosen:
         raise PumpjackError("--analyses: name at least one of torque, downhole")
-    options = Options(chosen, method, balance, damping, card_units.value if card_units else None,
-                      None if catalogue is None else str(catalogue))
+    options = Options(chosen, method, balance, damping, card_units.value if card_units else None, card_format,
+                      card_points, None if catalogue is None else str(catalogue))
     progress = _progress() if _terminal() else None
     try:
         tally = run_batch(manifest, store, options, workers or default_workers(), scheduler,

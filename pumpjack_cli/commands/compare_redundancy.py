@@ -11,10 +11,11 @@ import typer
 from ..analysis.reactions import DEVIATIONS
 from ..analysis.reactions import compare_redundancy as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption,
-                       CrankMotion, CrankMotionOption, CardSpmOption, StepsOption, CatalogueOption, UnitArgument,
-                       UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 class PhaseMode(str, Enum):
     pin_bore = "pin-bore"
@@ -42,6 +43,9 @@ def compare_redundancy(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
     crank_motion: CrankMotionOption = CrankMotion.uniform,
@@ -84,5 +88,6 @@ def compare_redundancy(
             "crank_pin_clearance": crank_pin_clearance, "equalizer_pin_clearance": equalizer_pin_clearance}
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
-    sink.emit(run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    sink.emit(run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
                   given, given_joints), SHOWN)

@@ -10,10 +10,12 @@ import typer
 from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, CatalogueOption,
-                       UnitArgument, UnitsOption, UnitSystem, card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -28,6 +30,9 @@ def downhole(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     crank_motion: CrankMotionOption = CrankMotion.auto,
     method: Annotated[Method, typer.Option(
@@ -48,6 +53,7 @@ def downhole(
 
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, crank_motion.value, method.value,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -12,9 +12,11 @@ from ..analysis.dynamics import dynamics as run
 from ..config import load_unit
 from ..core.dynamics.periodic import DEFAULT_RTOL
 from ..errors import PumpjackError
-from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption,
-                       CatalogueOption, UnitArgument, UnitsOption, UnitSystem, card_source, finite, positive)
+from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
+                       UnitsOption, UnitSystem, card_source, finite, positive)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
          "inertia_torque")
@@ -36,6 +38,9 @@ def dynamics(
         dir_okay=False)] = None,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     rtol: Annotated[float, typer.Option(help="relative tolerance of the integration and of the periodicity",
                                         min=1e-13, max=1e-3, callback=finite)] = DEFAULT_RTOL,
     steps: Annotated[int | None, typer.Option(
@@ -67,7 +72,7 @@ def dynamics(
         for given, option in ((damping, "--damping"), (samples, "--samples")):
             if given is not None:
                 raise PumpjackError(f"{option} applies to --well-model wave")
-        source = None if card is None else card_source(card, card_units, card_columns)
+        source = None if card is None else card_source(card, card_units, card_columns, card_format, card_points, stroke)
         sink.emit(run(load_unit(unit, catalogue), source, rtol, DEFAULT_POINTS if steps is None else steps), SHOWN)
         return
     if card is not None:

@@ -8,9 +8,9 @@ import typer
 
 from ..analysis.inertia import inertia_error as run
 from ..config import load_any_unit
-from ..options import (finite, FormatOption, OutputOption, PlotOption, CatalogueOption, UnitArgument, UnitsOption,
-                       UnitSystem, Output, quantity)
+from ..options import finite, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN_LAWS = ("crank_angle", "time", "position", "velocity", "acceleration", "inertia_force")
 SHOWN_SUPPORT = ("crank_angle", "travel", "outer_edge_reaction", "inner_edge_reaction", "guide_friction",

@@ -8,9 +8,9 @@ import typer
 
 from ..analysis.kinematics import kinematics as run
 from ..config import load_unit
-from ..options import (SpmOption, FormatOption, OutputOption, PlotOption, CatalogueOption, UnitArgument, UnitsOption,
-                       UnitSystem, Output)
+from ..options import SpmOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN = ("crank_angle", "time", "position", "velocity", "acceleration", "torque_factor")
 

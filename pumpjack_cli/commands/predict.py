@@ -10,11 +10,12 @@ import typer
 from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
-from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption,
-                       CatalogueOption, UnitArgument, UnitsOption, UnitSystem, finite, positive, quantity)
+from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
+                       UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
-SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load", "net_torque")
+SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
 
 class CrankMotion(str, Enum):
@@ -68,4 +69,5 @@ def predict(
         gas_exponent=finite(gas_exponent),
     )
     result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor)
-    sink.emit(result, SHOWN)
+    torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
+    sink.emit(result, (*SHOWN, torque))

@@ -8,10 +8,11 @@ import typer
 
 from ..analysis.reactions import reactions as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption,
-                       CrankMotion, CrankMotionOption, CardSpmOption, StepsOption, CatalogueOption, UnitArgument,
-                       UnitsOption, UnitSystem, Output, card_source, quantity)
+from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
+                     CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "r12_y", "r45_y", "r05_y", "net_torque")
 
@@ -21,6 +22,9 @@ def reactions(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
     crank_motion: CrankMotionOption = CrankMotion.uniform,
@@ -41,6 +45,7 @@ def reactions(
     and d'Alembert inertia."""
     sink = Output(fmt, units, out, plot, what)
     radius = quantity(counterweight_radius, "length", "--counterweight-radius")
-    result = run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, steps, crank_motion.value, weights=not no_weights,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value, weights=not no_weights,
                  inertia=not no_inertia, counterweight_count=counterweight_count, counterweight_radius=radius)
     sink.emit(result, SHOWN)

@@ -9,10 +9,12 @@ import typer
 
 from ..analysis.torque import torque as run
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output,
-                       OutputOption, PlotOption, CrankMotion, CrankMotionOption, StepsOption, CatalogueOption,
-                       UnitArgument, UnitsOption, UnitSystem, card_source, finite)
+from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
+                       PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
+                       card_source, finite)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
          "permissible_load_max")
@@ -34,6 +36,9 @@ def torque(
     card: CardOption,
     card_units: CardUnitsOption = None,
     card_columns: CardColumnsOption = None,
+    card_format: CardFormatOption = None,
+    card_points: CardPointsOption = None,
+    stroke: StrokeOption = None,
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
     crank_motion: CrankMotionOption = CrankMotion.auto,
@@ -58,7 +63,8 @@ def torque(
     API 11E torque factors or the exact spatial model, the counterbalance that meets a
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_unit(unit, catalogue), card_source(card, card_units, card_columns), spm, steps, crank_motion.value,
+    source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    result = run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

@@ -26,21 +26,23 @@ from .unit_classes import UNIT_CLASSES, unit_class
 STROKE_TOLERANCE = 0.5 * INCH
 #: The API letters that hold the vertical offset (K, or H and G).
 _HEIGHT_LETTERS = ("H", "G", "K")
+#: The ``[geometry]`` key of the crank offset tau of the kinds that keep it there.
+OFFSET_KEY = "crank_offset"
 
 
-def _columns(row: CatalogueRow, loc: tuple) -> str:
-    """The catalogue column(s) of a schema error's location (``geometry.front_arm`` -> ``column A_in``);
-    the geometry as a whole is its letters' columns."""
+def _columns(columns: dict[str, str], loc: tuple) -> str:
+    """The catalogue column(s) of a schema error's location (``geometry.front_arm`` -> ``column A_in``),
+    ``columns`` the header of each key of the table; the geometry as a whole is its letters' columns."""
     path = field_path(loc)
     section, _, field = path.partition(".")
-    keys = [path]
+    keys = {path}
     if section == "geometry":
-        names = (field, *GEOMETRY_ALIASES.get(field, ()), *(_HEIGHT_LETTERS if field == "vertical_offset" else ()))
-        keys = [f"geometry.{name}" for name in names] if field else [
-            key for key in row.columns if key.startswith("geometry.") and key not in ("geometry.class", "geometry.rotation")]
-    found = [row.columns[key] for key in keys if key in row.columns]
+        names = ((field, *GEOMETRY_ALIASES.get(field, ()), *(_HEIGHT_LETTERS if field == "vertical_offset" else ()))
+                 if field else (*(name for aliases in GEOMETRY_ALIASES.values() for name in aliases), *_HEIGHT_LETTERS))
+        keys = {f"geometry.{name}" for name in names}
+    found = [header for key, header in columns.items() if key in keys]
     if not found:
-        return path
+        return f"{path} (no column of the catalogue gives it)"
     return f"column {found[0]}" if len(found) == 1 else f"columns {', '.join(found)}"
 
 
@@ -63,12 +65,32 @@ def _differs(difference: float | None) -> bool:
     return difference is not None and abs(difference) > STROKE_TOLERANCE
 
 
+def _offset_placed(row: CatalogueRow, kind: str) -> tuple[dict[str, Any], dict[str, str]]:
+    """The row's table and columns with the crank offset tau where the kind's schema keeps it: its
+    ``[geometry]`` :data:`OFFSET_KEY` if it has one (Mark II, reverse-mark), else ``[counterbalance]
+    phase``, which needs the structural unbalance B beside it (a ConfigError without)."""
+    balance = row.table.get("counterbalance", {})
+    if "phase" not in balance:
+        return row.table, row.columns
+    if OFFSET_KEY in UNIT_CLASSES[kind].model().model_fields:
+        table = {**row.table, "geometry": {**row.table["geometry"], OFFSET_KEY: balance["phase"]}}
+        rest = {key: value for key, value in balance.items() if key != "phase"}
+        table.pop("counterbalance")
+        table.update({"counterbalance": rest} if rest else {})
+        moved = {"counterbalance.phase": f"geometry.{OFFSET_KEY}"}
+        return table, {moved.get(key, key): header for key, header in row.columns.items()}
+    if "structural_unbalance" not in balance:
+        raise ConfigError(f"{row.place}: column {row.columns['counterbalance.phase']}: a crank offset needs the "
+                          f"structural unbalance B of the same [counterbalance]")
+    return row.table, row.columns
+
+
 def catalogue_unit(row: CatalogueRow):
     """The unit of a catalogue row, validated by the unit-file schema (a ConfigError names the
     file, line and column); a warning when its exact stroke is off the published one by more
     than :data:`STROKE_TOLERANCE`."""
-    row_class(row)
-    unit = parse_unit(row.table, row.place, lambda loc: _columns(row, loc))
+    table, columns = _offset_placed(row, row_class(row))
+    unit = parse_unit(table, row.place, lambda loc: _columns(columns, loc))
     stroke = unit.geometry.mechanism().stroke
     difference = stroke_difference(row, stroke)
     if _differs(difference):
@@ -89,7 +111,7 @@ def catalogue_listing(catalogue: Catalogue) -> list[dict[str, Any]]:
         try:
             stroke = UNIT_CLASSES[kind].stroke(row.table["geometry"])
         except ValueError as exc:
-            raise ConfigError(f"{row.place}: {_columns(row, ('geometry',))}: {exc}") from None
+            raise ConfigError(f"{row.place}: {_columns(row.columns, ('geometry',))}: {exc}") from None
         difference = stroke_difference(row, stroke)
         check = "not published" if difference is None else "differs" if _differs(difference) else "ok"
         listed.append({"name": row.name, "designation": row.designation, "crank_hole": str(row.hole),

@@ -83,12 +83,13 @@ def canonical_geometry(data: dict[str, Any]) -> dict[str, Any]:
 
 
 def linkage_of(geometry: dict[str, Any]) -> Linkage:
-    """The planar linkage of a ``[geometry]`` table as written in a file (any spelling)."""
+    """The planar class I linkage of a ``[geometry]`` table as written in a file (any spelling);
+    clockwise when the table states no rotation (a kind with one rotation only)."""
     fields = canonical_geometry(geometry)
     lengths = {name: parse_quantity(fields[name], "length") for name in GEOMETRY_ALIASES}
     spatial = {name: parse_quantity(fields[name], "length") if name in fields else None
                for name in ("crank_half_spacing", "equalizer_half_length")}
-    return beam_linkage(**lengths, rotation=ROTATION_SIGNS[fields["rotation"]], **spatial)
+    return beam_linkage(**lengths, rotation=ROTATION_SIGNS[fields.get("rotation", "clockwise")], **spatial)
 
 
 def slider_crank_of(crank_radius: Any, rod_length: Any, offset: Any = 0.0, rotation: str = "counterclockwise"):

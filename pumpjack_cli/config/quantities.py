@@ -34,6 +34,7 @@ Torque = Annotated[float, _quantity("torque")]
 WeightPerLength = Annotated[float, _quantity("weight_per_length")]
 AreaMoment = Annotated[float, _quantity("area_moment")]
 Area = Annotated[float, _quantity("area")]
+Volume = Annotated[float, _quantity("volume")]
 RotationalStiffness = Annotated[float, _quantity("rotational_stiffness")]
 #: Plain numbers without a unit; strict so that ``true`` is not read as 1.
 Number = Annotated[float, Strict()]

@@ -39,9 +39,20 @@ class UnitClass:
         return getattr(importlib.import_module(f".{module}", __package__), name)
 
 
+def four_bar_stroke(geometry: dict) -> float:
+    """The exact stroke [m] of a beam unit's letters: the class I four-bar's, which is also the
+    class III four-bar's of the same letters (the mirror identity,
+    :mod:`pumpjack_cli.core.beam.class_three`)."""
+    return linkage_of(geometry).stroke
+
+
 #: The kinds of beam unit, by their ``[geometry] class``.
 UNIT_CLASSES: dict[str, UnitClass] = {
-    "conventional": UnitClass("conventional:ConventionalGeometry", ("C",), lambda g: linkage_of(g).stroke),
+    "conventional": UnitClass("conventional:ConventionalGeometry", ("C",), four_bar_stroke),
+    "mark-ii": UnitClass("mark_ii:MarkIIGeometry", ("M",), four_bar_stroke),
+    "reverse-mark": UnitClass("reverse_mark:ReverseMarkGeometry", ("RM",), four_bar_stroke),
+    "air-balanced": UnitClass("air_balanced:AirBalancedGeometry", ("A",), four_bar_stroke),
+    "beam-balanced": UnitClass("beam_balanced:BeamBalancedGeometry", ("B",), four_bar_stroke),
 }
 DEFAULT_CLASS = "conventional"
 

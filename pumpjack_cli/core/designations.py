@@ -46,13 +46,13 @@ INCH = 0.0254
 API = "API Spec 11E"
 GOST = "GOST 5866-76"
 
-#: API Spec 11E unit-type letters ([Guo2007] p. 12/163).
-API_CLASSES = {"C": "conventional", "M": "Mark II", "A": "air-balanced", "B": "beam-balanced"}
+#: API Spec 11E unit-type letters ([Guo2007] p. 12/163), and RM for Lufkin's reverse-mark units ([LufkinRM]).
+API_CLASSES = {"C": "conventional", "M": "Mark II", "A": "air-balanced", "B": "beam-balanced", "RM": "reverse-mark"}
 
 _DASH = r"\s*[-\u2013\u2014]+\s*"
 _NUMBER = r"[0-9]+(?:[.,][0-9]+)?"
 _API = re.compile(
-    rf"^(?P<cls>[A-Z]){_DASH}(?P<reducer>(?P<prefix>P?)(?P<torque>{_NUMBER})(?P<letter>[A-Z]?))"
+    rf"^(?P<cls>RM|[A-Z]){_DASH}(?P<reducer>(?P<prefix>P?)(?P<torque>{_NUMBER})(?P<letter>[A-Z]?))"
     rf"{_DASH}(?P<structure>{_NUMBER}){_DASH}(?P<stroke>{_NUMBER})$",
     re.IGNORECASE,
 )

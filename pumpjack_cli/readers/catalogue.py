@@ -54,7 +54,7 @@ COLUMNS: dict[str, Field] = {
     "R": Field("length", ("geometry", "R"), "crank radius of the hole"),
     "stroke": Field("length", None, "published polished-rod stroke of the hole"),
     "B": Field("force", ("counterbalance", "structural_unbalance"), "structural unbalance"),
-    "tau": Field("angle", ("counterbalance", "phase"), "crank offset angle"),
+    "tau": Field("angle", ("counterbalance", "phase"), "crank offset angle (a kind may keep it in [geometry])"),
     "gearbox_torque": Field("torque", ("rating", "gearbox_torque"), "gearbox torque rating"),
     "structure_load": Field("force", ("rating", "structure_load"), "structure load rating"),
     "max_stroke": Field("length", ("rating", "max_stroke"), "maximum stroke rating"),
@@ -244,9 +244,6 @@ def _row(cells: dict[_Column, str], columns: list[_Column], line: int, source: s
     hole = given["crank_hole"][1]
     if not re.fullmatch(r"[0-9]+", hole) or int(hole) < 1:
         raise ConfigError(f"{source}: line {line}: column crank_hole: {hole!r} is not a whole number from 1")
-    if "tau" in given and "B" not in given:
-        raise ConfigError(f"{source}: line {line}: column {given['tau'][0].header}: a crank offset needs the "
-                          f"structural unbalance B of the same [counterbalance]")
     designation = given["designation"][1]
     table["name"] = f"{designation}/{int(hole)}"
     headers = {}

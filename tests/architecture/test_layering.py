@@ -2,7 +2,7 @@
 
 Layers (docs/architecture.md): core <- config <- analysis (run layer) <- render <- commands.
 The core imports nothing of the layers above it and no I/O or validation library; the
-file readers (readers/) import only errors, quantities and text_input of this package;
+file readers (readers/) import only errors, quantities, text_input and names of this package;
 commands never import each other; ``--help``, ``--version`` and ``units`` import
 neither numpy nor a unit model.
 """
@@ -66,8 +66,10 @@ def test_layers_import_only_downwards(layer, path):
     assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
 
 
-#: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other.
-READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cli.text_input", "pumpjack_cli.readers")
+#: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other
+#: (names: the numpy-free catalogue of output names, so that a card reader knows the tool's own outputs).
+READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cli.text_input", "pumpjack_cli.names",
+                  "pumpjack_cli.readers")
 
 
 @pytest.mark.parametrize("path", _modules("readers"), ids=lambda p: p.name)
@@ -83,14 +85,15 @@ def test_tests_do_not_import_command_modules(path):
     assert not {name for name in _imports(path) if name.startswith("pumpjack_cli.commands")}
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"]])
+@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"],
+                                  ["units", "--catalogue", str(REPO_ROOT / "samples" / "catalogue.csv"), "-f", "csv"]])
 def test_startup_imports_no_numpy_and_no_unit_model(argv):
     probe = (
         "import sys, io, contextlib\n"
         "from pumpjack_cli.cli import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"
         f"    code = main({argv!r})\n"
-        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pumpjack_cli.config.beam_unit',\n"
+        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pydantic', 'pumpjack_cli.config.beam_unit',\n"
         "                           'pumpjack_cli.config.slider_crank') if m in sys.modules)\n"
         "print(code, heavy)\n"
     )

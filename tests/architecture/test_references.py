@@ -143,7 +143,7 @@ def seed_documents() -> list[Path]:
     files = [REPO_ROOT / "README.md", *sorted((REPO_ROOT / "docs").glob("*.md"))]
     files += sorted((REPO_ROOT / "pumpjack_cli").rglob("*.py"))
     files += sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.is_file() and p.suffix != ".pyc")
-    files += sorted(p for p in (REPO_ROOT / "samples").iterdir() if p.is_file())
+    files += sorted(p for p in (REPO_ROOT / "samples").iterdir() if p.is_file() and p.suffix != ".bin")  # no text
     return [p for p in files if p != REFERENCES]
 
 

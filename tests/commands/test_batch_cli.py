@@ -268,14 +268,14 @@ def test_an_internal_fault_on_one_card_is_an_error_row_not_a_stop(run_cli, tmp_p
     from pumpjack_cli.analysis.batch import per_card
 
     rows = field(tmp_path, 3)
-    real = per_card._CardOnce.read
+    real = per_card._PlacedOnce.read
 
     def faulty(self, unit, spm):
         if self.name == rows[1][2]:
             raise ZeroDivisionError("simulated")
         return real(self, unit, spm)
 
-    monkeypatch.setattr(per_card._CardOnce, "read", faulty)
+    monkeypatch.setattr(per_card._PlacedOnce, "read", faulty)
     store = tmp_path / "r.sqlite"
     code, out, err = run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")
     assert code == 0, err

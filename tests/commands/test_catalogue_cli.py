@@ -140,9 +140,12 @@ def test_units_lists_the_catalogue_as_json_and_a_table(run_cli):
     code, out, err = run_cli("units", "--catalogue", SAMPLE, "-f", "json")
     assert (code, err) == (0, "")
     series = json.loads(out)["series"]
-    assert series["name"] == [f"{d}/{h}" for d in ("C-114D-133-54", "C-80D-133-48") for h in (1, 2, 3)]
-    assert series["published_stroke_m"] == series["stroke_difference_m"] == [None] * 6
-    assert series["stroke_check"] == ["not published"] * 6
+    assert series["name"] == [f"{d}/{h}" for d in ("C-114D-133-54", "C-80D-133-48", "M-912D-365-168") for h in (1, 2, 3)]
+    assert series["published_stroke_m"][:6] == series["stroke_difference_m"][:6] == [None] * 6
+    # [LufkinM912]'s 168, 149 and 130 in, exactly converted
+    assert series["published_stroke_m"][6:] == [168 * INCH, 149 * INCH, 130 * INCH]
+    assert series["stroke_check"] == ["not published"] * 6 + ["ok", "ok", "differs"]
+    assert series["unit_class"] == ["conventional"] * 6 + ["mark-ii"] * 3
     # the listing's strokes are the kinematics' (two code paths; 1e-12 relative for the summation order)
     code, kin, _ = run_cli("kinematics", "C-114D-133-54/2", "--catalogue", SAMPLE, "--spm", "8", "--steps", "8",
                            "-f", "json")
@@ -150,6 +153,16 @@ def test_units_lists_the_catalogue_as_json_and_a_table(run_cli):
     code, table, err = run_cli("units", "--catalogue", SAMPLE, "-f", "table")
     assert (code, err) == (0, "")
     assert f"Units of {SAMPLE}" in table and "C-80D-133-48/3" in table and "not published" in table
+
+
+def test_a_sample_hole_whose_printed_stroke_is_off_warns_when_used(run_cli):
+    """M-912D-365-168 hole 3: exact 130.83 in, printed 130 in ([LufkinM912]); hole 2 is within 0.5 in."""
+    code, _, err = run_cli("kinematics", "M-912D-365-168/3", "--catalogue", SAMPLE, "--spm", "6", "-f", "csv")
+    assert code == 0 and err == (f"pumpjack: warning: {SAMPLE}: line 13: M-912D-365-168/3: the exact stroke 130.83 in "
+                                 f"(3.3230 m) differs from the published 130.00 in by +0.83 in, more than 0.5 in: check "
+                                 f"the letters, R_in and the stroke\n")
+    code, _, err = run_cli("kinematics", "m-912d-365-168/2", "--catalogue", SAMPLE, "--spm", "6", "-f", "csv")
+    assert (code, err) == (0, "")
 
 
 def test_units_without_a_catalogue_lists_the_bundled_units(run_cli):

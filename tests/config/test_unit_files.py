@@ -22,8 +22,10 @@ from pumpjack_cli.errors import ConfigError, PumpjackError
 from helpers import REPO_ROOT, SK8_API_YAML, SK8_TOML
 
 CONFIG_SUFFIXES = (".toml", ".yaml", ".yml", ".json")
+#: Unit files shipped (the dynamometer cards in samples/, <unit>-card.*, are no unit files).
 SHIPPED_FILES = sorted(
-    p for folder in ("configs", "samples") for p in (REPO_ROOT / folder).iterdir() if p.suffix in CONFIG_SUFFIXES
+    p for folder in ("configs", "samples") for p in (REPO_ROOT / folder).iterdir()
+    if p.suffix in CONFIG_SUFFIXES and not p.stem.endswith("-card")
 )
 BUNDLED_FILES = sorted(p for p in (REPO_ROOT / "configs").iterdir() if p.suffix in CONFIG_SUFFIXES)
 

@@ -2,7 +2,8 @@
 
 A stored row is keyed by (well, card digest, analysis, options hash); the digests are
 SHA-256 of the files' bytes, so a changed card, unit file or rod-string file is analysed
-again and an unchanged one is skipped, whatever its name or time stamp.
+again and an unchanged one is skipped, whatever its name or time stamp. The rows of a
+file of several strokes have the stroke's number after the digest (``<sha256>#07``).
 """
 
 from __future__ import annotations
@@ -59,3 +60,10 @@ def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) ->
                        "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest},
                       sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
+
+
+def with_files(done: set[tuple[str, str, str, str]]) -> set[tuple[str, str, str, str]]:
+    """The store's keys, and for each stroke's row (digest ``<sha256>#<stroke>``) its file's key:
+    a file of several strokes, stored in one transaction, is done when its strokes are."""
+    return done | {(well, digest.partition("#")[0], analysis, options) for well, digest, analysis, options in done
+                   if "#" in digest}

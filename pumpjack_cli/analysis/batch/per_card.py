@@ -4,11 +4,17 @@ The units are loaded once per worker process and the exact torque's responses on
 unit and grid (:func:`..torque._exact_basis`), so the per-card work is the card's own.
 :func:`analyse_chunk` is what every executor runs (a local process or a Dask worker): jobs
 in, plain data out.
+
+A file of several strokes (a continuous recording, a hex file of several blocks) is read
+once and each stroke analysed as a card of its own: its outcomes carry the stroke's number,
+which :func:`card_fields` folds into the stored card's name and key (``docs/batch.md``).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
+from datetime import datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -39,25 +45,55 @@ class Options:
     damping: float | None = None
     #: Units of card columns whose header names none ("si", "field"); None refuses them.
     card_units: str | None = None
+    #: The cards' format (None: told from each file) and the points of a card block (None: 200).
+    card_format: str | None = None
+    card_points: int | None = None
     #: The operator's catalogue file whose units the manifest may name (DESIGNATION/HOLE), if any.
     catalogue: str | None = None
 
+    def __post_init__(self):
+        from ...readers.cards import check_options
+
+        check_options(self.card_format, self.card_units, self.card_points)
+
     def for_analysis(self, analysis: str) -> dict:
-        """The options that change an analysis' result (for the options hash; without
-        --card-units the hash is that of a store written before the option existed)."""
+        """The options that change an analysis' result (for the options hash; a card option
+        not given leaves the hash that of a store written before the option existed)."""
         chosen = {"method": self.method, "balance": self.balance} if analysis == "torque" else {"damping": self.damping}
-        return chosen if self.card_units is None else {**chosen, "card_units": self.card_units}
+        cards = {"card_units": self.card_units, "card_format": self.card_format, "card_points": self.card_points}
+        return {**chosen, **{name: value for name, value in cards.items() if value is not None}}
 
 
 @dataclass(frozen=True)
 class Outcome:
-    """One analysis of one card: ``ok`` with the summary (SI, suffixed names) or ``error`` with the message."""
+    """One analysis of one card: ``ok`` with the summary (SI, suffixed names) or ``error`` with
+    the message; for a stroke of a file of several, its number (zero-padded to the count's
+    width, so that the strokes sort in order) and its time stamp."""
 
     analysis: str
     status: str
     error: str
     warnings: str
     summary: dict
+    stroke: str = ""
+    timestamp: str = ""
+
+
+def card_fields(job: Job, digest: str, outcome: dict) -> dict:
+    """The stored card's name, key and time stamp of an outcome (:func:`analyse` as plain data):
+    a stroke's number follows its file's path and digest after ``#``."""
+    stroke = f"#{outcome['stroke']}" if outcome["stroke"] else ""
+    return {"card": job.card + stroke, "card_sha256": digest + stroke, "timestamp": outcome["timestamp"]}
+
+
+def stroke_time(base: str, start: object) -> str:
+    """The time stamp of a stroke that starts ``start`` seconds into its recording (None: a card
+    without time stamps): ``base`` (ISO 8601) plus ``start``, or ``base`` as it is."""
+    try:
+        when = datetime.fromisoformat(base)
+    except ValueError:
+        return base
+    return base if start is None else (when + timedelta(seconds=float(start))).isoformat(timespec="milliseconds")
 
 
 _UNITS: dict = {}
@@ -71,9 +107,9 @@ def _catalogue(path: str | None):
     return None if path is None else _CATALOGUES[path]
 
 
-def _unit(job: Job, catalogue: str | None):
-    """The unit of a job with its overrides, loaded once per process; the warnings of loading it
-    (a catalogue unit's stroke) are given again for every card."""
+def _unit(job: Job, catalogue: str | None) -> tuple[UnitConfig, tuple[str, ...]]:
+    """The unit of a job with its overrides, loaded once per process, and the warnings of loading
+    it (a catalogue unit's stroke), for every card that uses it."""
     key = (job.unit, job.counterbalance_moment, job.rod_string, catalogue)
     if key not in _UNITS:
         from ...config import load_unit
@@ -85,10 +121,7 @@ def _unit(job: Job, catalogue: str | None):
             if job.rod_string is not None:
                 unit = _with_rod_string(unit, job.rod_string)
         _UNITS[key] = unit, tuple(noted)
-    unit, noted = _UNITS[key]
-    for text in noted:
-        warn(text)
-    return unit
+    return _UNITS[key]
 
 
 def _with_moment(unit: UnitConfig, moment: float):
@@ -116,48 +149,70 @@ def _with_rod_string(unit: UnitConfig, path: str):
         raise PumpjackError(f"{path}: rod_string: {str(exc).splitlines()[-1].strip()}") from None
 
 
-class _CardOnce:
-    """A card source read once for all the analyses of a card (duck-typed CardSource)."""
+class _PlacedOnce:
+    """A raw card placed once for all the analyses of a card (duck-typed CardSource)."""
 
-    def __init__(self, path: str, units: str | None):
-        from ..card_runs import CardSource
-
-        self.source = CardSource(Path(path), units)
-        self.name = self.source.name
+    def __init__(self, raw, name: str):
+        self.raw, self.name = raw, name
         self._reading = None
 
     def read(self, unit, spm=None):
+        from ..card_runs import noted, place
+
         if self._reading is None:
-            self._reading = self.source.read(unit, spm)
+            self._reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
         return self._reading
 
 
-def analyse(job: Job, options: Options) -> list[Outcome]:
-    """Every analysis of one card, each as the single command runs it; never raises for a
-    problem of the card or the unit."""
+def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
+    """(status, error, value) of ``compute()``: never raises for a problem of the card or the unit."""
+    try:
+        return "ok", "", compute()
+    except PumpjackError as exc:
+        return "error", " ".join(str(exc).split()), None
+    except MemoryError:
+        return "error", "not enough memory for this card", None
+    except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
+        return "error", f"internal error ({type(exc).__name__}: {' '.join(str(exc).split())}); please report it", None
+
+
+def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
+    """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
     from ..downhole import downhole
     from ..torque import torque
 
-    card = _CardOnce(job.card, options.card_units)
+    unit, noted = _unit(job, options.catalogue)  # loaded once per process
+    for text in noted:
+        warn(text)
+    if analysis == "torque":
+        result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
+    else:
+        result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
+    check_finite(result)
+    return converted_summary(result, "si")
+
+
+def analyse(job: Job, options: Options) -> list[Outcome]:
+    """Every analysis of one card, each as the single command runs it, or of every stroke of a
+    file of several; never raises for a problem of the card or the unit."""
+    from ..card_runs import CardSource
+
+    source = CardSource(Path(job.card), options.card_units, None, options.card_format, options.card_points)
+    status, error, raw = _attempt(lambda: (_unit(job, options.catalogue), source.raw())[1])  # the unit first
+    if raw is None:
+        return [Outcome(analysis, status, error, "", {}, "", job.timestamp) for analysis in options.analyses]
+    base = job.timestamp or str(raw.metadata.get("timestamp", ""))
+    strokes = raw.strokes or (raw,)
+    width = len(str(len(strokes)))
     outcomes = []
-    for analysis in options.analyses:
-        with collected_warnings() as noted:
-            try:
-                unit = _unit(job, options.catalogue)
-                if analysis == "torque":
-                    result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
-                else:
-                    result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
-                check_finite(result)
-                status, error, summary = "ok", "", converted_summary(result, "si")
-            except PumpjackError as exc:
-                status, error, summary = "error", " ".join(str(exc).split()), {}
-            except MemoryError:
-                status, error, summary = "error", "not enough memory for this card", {}
-            except Exception as exc:  # noqa: BLE001 - a fault of this program on one card must not stop a field
-                status, error, summary = "error", (f"internal error ({type(exc).__name__}: "
-                                                   f"{' '.join(str(exc).split())}); please report it"), {}
-        outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary))
+    for number, stroke in enumerate(strokes, 1):
+        label = f"{number:0{width}d}" if raw.strokes else ""
+        timestamp = stroke_time(base, stroke.metadata.get("start")) if raw.strokes else base
+        card = _PlacedOnce(stroke, source.name)
+        for analysis in options.analyses:
+            with collected_warnings() as noted:
+                status, error, summary = _attempt(lambda: _summary(analysis, job, card, options))
+            outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary or {}, label, timestamp))
     return outcomes
 
 

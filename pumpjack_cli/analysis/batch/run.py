@@ -11,8 +11,8 @@ from ...readers.catalogue import Catalogue, read_catalogue
 from ...readers.manifest import Job, read_manifest
 from ...readers.store import Store
 from .executors import in_process, on_dask, on_pool
-from .keys import card_digest, options_hash, unit_digest
-from .per_card import ANALYSES, Options
+from .keys import card_digest, options_hash, unit_digest, with_files
+from .per_card import ANALYSES, Options, card_fields
 
 #: Cards per task handed to a worker.
 CHUNK = 16
@@ -78,7 +78,7 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
     catalogue = None if options.catalogue is None else read_catalogue(Path(options.catalogue))
     store = Store(store_path)
     try:
-        pending = _pending(jobs, options, store.done(), catalogue)
+        pending = _pending(jobs, options, with_files(store.done()), catalogue)
         indices = list(pending)
         chunks = [[(i, asdict(jobs[i])) for i in indices[k:k + CHUNK]] for k in range(0, len(indices), CHUNK)]
         settings = asdict(options)
@@ -89,8 +89,7 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
             nonlocal finished
             for index, outcomes in results:
                 job, key = jobs[index], pending[index]
-                rows = [{"well": job.well, "card": job.card, "card_sha256": key.card_digest,
-                         "timestamp": job.timestamp, "unit": job.unit, "analysis": o["analysis"],
+                rows = [{"well": job.well, **card_fields(job, key.card_digest, o), "unit": job.unit, "analysis": o["analysis"],
                          "options_sha256": key.hashes[o["analysis"]], "status": o["status"], "error": o["error"],
                          "warnings": o["warnings"], "summary": o["summary"]}
                         for o in outcomes if o["analysis"] in key.wanted]

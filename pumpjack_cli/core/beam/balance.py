@@ -298,16 +298,17 @@ def min_peak_moment(base: np.ndarray, sine: np.ndarray) -> float:
 
 @dataclass(frozen=True)
 class BalanceRecommendation:
-    """The counterbalance moment a criterion asks for and the loading it gives (SI).
+    """The value of the balancing variable a criterion asks for and the loading it gives (SI).
 
-    ``moment`` M [N·m] (None when the criterion cannot be met, ``note`` says why);
+    ``value`` (crank counterweights: the moment M [N·m]; a beam weight [N]; an air pressure
+    [Pa]; None when the criterion cannot be met, ``note`` says why);
     ``peak_net_torque`` max |T| [N·m]; ``upstroke_peak``, ``downstroke_peak``: the
     largest T of each stroke [N·m]; ``rms_torque`` [N·m]; ``counterbalance_effect``
     CBE [N] at the test angle; B and tau are those given.
     """
 
     criterion: str
-    moment: float | None
+    value: float | None
     peak_net_torque: float | None
     upstroke_peak: float | None
     downstroke_peak: float | None
@@ -319,8 +320,9 @@ class BalanceRecommendation:
 def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray,
                              balance: CounterbalanceModel, *, extra_torque: np.ndarray | float = 0.0,
                              weights: np.ndarray | None = None, test_angle: float = math.pi / 2) -> BalanceRecommendation:
-    """The value of the balancing variable (crank counterweights: the moment M) that meets
-    ``criterion`` for a card, the structure and the rest of the counterbalance kept.
+    """The value of the balancing variable (crank counterweights: the moment M; a beam weight;
+    an air pressure) that meets ``criterion`` for a card, the structure and the rest of the
+    counterbalance kept; the value is at least 0.
 
     The net torque T(theta; x) = TF W + T_s + T_c(x) + T_extra is affine in the variable x,
     T_c(x) = c0 + x g (:class:`.counterbalance.CounterbalanceModel`; crank counterweights: T = TF (W - B) + T_extra -
@@ -374,17 +376,18 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
         raise TorqueError("balance: the weights must be finite, >= 0, not all 0, one per crank angle")
     up = upstroke_mask(linkage, theta)
     note = ""
+    name = balance.variable.replace("_", " ")
     if criterion == "equal-peaks":
         moment = equal_peaks_moment(base, sine, up)
         if moment is None:
             u, d, _, _ = _peaks(_strokes(base, sine, up), 0.0)
             return BalanceRecommendation(criterion, None, None, None, None, None, None,
-                                         f"no counterbalance moment M >= 0 makes the stroke peaks equal "
-                                         f"(at M = 0 the upstroke peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)")
+                                         f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke peak is "
+                                         f"{u:.6g} N·m, the downstroke peak {d:.6g} N·m)")
     elif criterion == "min-rms":
         moment = min_rms_moment(base, sine, weights)
         if moment < 0:
-            note = f"the RMS torque is least at M = {moment:.6g} N·m < 0; M = 0 is the best counterbalance"
+            note = f"the RMS torque is least at a {name} of {moment:.6g} {balance.symbol} < 0; 0 is the best counterbalance"
             moment = 0.0
     else:
         moment = min_peak_moment(base, sine)

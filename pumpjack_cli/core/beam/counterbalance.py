@@ -79,10 +79,32 @@ class CounterbalanceModel(Protocol):
         """The same counterbalance with the balancing variable at ``value``."""
         ...
 
+    @property
+    def variable(self) -> str:
+        """The balancing variable's output name (``names.py``): ``counterbalance_moment``,
+        ``beam_counterweight``, ``air_pressure``; the recommendation is ``recommended_`` + it."""
+        ...
+
+    @property
+    def symbol(self) -> str:
+        """The SI unit of the balancing variable, for messages (``N·m``, ``N``, ``Pa``)."""
+        ...
+
+    def summary(self) -> tuple[tuple[str, float], ...]:
+        """The fixed figures of the structure and counterbalance to report, by output name."""
+        ...
+
 
 class Counterbalance(NamedTuple):
     """Crank counterweights: structural unbalance B [N], maximum counterbalance moment M [N·m]
     (the balancing variable), crank offset tau [rad]; a :class:`CounterbalanceModel`.
+
+    ``tail`` False (class I): the counterweights ride on the crank pin's arm and
+    T_c = -M sin(theta - tau), tau their lag behind the pin ([API11E]). ``tail`` True
+    (class III, Mark II): they ride on the crank's tail, the arm opposite the pin, and
+    T_c = +M sin(theta + tau), tau their lead ahead of the tail in the direction of rotation
+    (``docs/conventions.md``: the sign that makes a catalogue's positive Mark II offset the
+    well-balanced one).
 
     >>> import numpy as np
     >>> from pumpjack_cli.core.beam.geometry import Linkage
@@ -90,28 +112,51 @@ class Counterbalance(NamedTuple):
     >>> balance = Counterbalance(1000.0, 50e3, 0.0)
     >>> float(balance.counterbalance_torque(m)[0]), float(balance.torque_per_value(m)[0])
     (-50000.0, -1.0)
+    >>> float(balance._replace(tail=True).counterbalance_torque(m)[0])
+    50000.0
     """
 
     structural_unbalance: float
     moment: float
     offset: float = 0.0
+    tail: bool = False
 
     @property
     def value(self) -> float:
         """M [N·m]."""
         return self.moment
 
+    @property
+    def variable(self) -> str:
+        """``counterbalance_moment``."""
+        return "counterbalance_moment"
+
+    @property
+    def symbol(self) -> str:
+        """``N·m``."""
+        return "N·m"
+
+    def summary(self) -> tuple[tuple[str, float], ...]:
+        """B [N] and tau [rad]."""
+        return (("structural_unbalance", self.structural_unbalance), ("crank_offset", self.offset))
+
     def structural_torque(self, motion: Motion) -> np.ndarray:
         """-TF B [N·m] ([API11E])."""
         return -motion.torque_factor * self.structural_unbalance
 
     def counterbalance_torque(self, motion: Motion) -> np.ndarray:
-        """-M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004])."""
-        return -self.moment * np.sin(motion.crank_angle - self.offset)
+        """-M sin(theta - tau), on the tail +M sin(theta + tau) [N·m] ([API11E]; [Rowlan2004])."""
+        return self.moment * self.torque_per_value(motion)
 
     def torque_per_value(self, motion: Motion) -> np.ndarray:
-        """-sin(theta - tau) [N·m per N·m]."""
-        return -np.sin(motion.crank_angle - self.offset)
+        """:meth:`per_moment` at the motion's crank angles [N·m per N·m]."""
+        return self.per_moment(motion.crank_angle)
+
+    def per_moment(self, crank_angle: np.ndarray) -> np.ndarray:
+        """-sin(theta - tau), on the tail +sin(theta + tau) [-]."""
+        if self.tail:
+            return np.sin(crank_angle + self.offset)
+        return -np.sin(crank_angle - self.offset)
 
     def with_value(self, value: float) -> Counterbalance:
         """The counterweights with the moment M = ``value`` [N·m]."""
@@ -124,8 +169,10 @@ def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: f
     B = -g [(m_eq + 2 m_p) x_eq + m_b x_b + m_h x_h] / A: the beam group level (psi = 0),
     both pitmans hanging whole from the equalizer pins at the equalizer bearing x_eq (-C
     on a class I unit), the beam body and horsehead centres of mass at x_b, x_h, all
-    measured from the centre bearing towards the well. M exp(-i tau) = g (2 m_a r_a + m_cw r_cw
-    exp(i phi)): both crank arms in line with the pin, all counterweights at phase phi.
+    measured from the centre bearing towards the well. M exp(i alpha) = g (2 m_a r_a + m_cw r_cw
+    exp(i phi)): both crank arms in line with the pin, all counterweights at phase phi ahead of
+    it; tau = -alpha on a class I unit, and on a class III unit, whose counterweights ride on
+    the crank's tail, tau = alpha - pi, their lead ahead of the tail (:class:`Counterbalance`).
 
     Parameters
     ----------
@@ -153,7 +200,7 @@ def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: f
     >>> from pumpjack_cli.core.beam.geometry import Linkage
     >>> lk = Linkage(4.0, 2.5, 1.0, 3.0, 2.2, 3.0)
     >>> m = MassModel(0, 0, 0, 1000.0, 1.0, 0.0, 0, 0, 0, 0, 0, 0, 100.0, 2.0, 0, 0, 0, 0)
-    >>> [round(v, 2) for v in counterbalance_from_masses(lk, m)]
+    >>> [round(v, 2) for v in counterbalance_from_masses(lk, m)[:3]]
     [-490.33, 9806.65, 0.0]
     """
     moment = ((masses.equalizer_mass + 2.0 * masses.pitman_mass) * linkage.equalizer_arm
@@ -162,8 +209,10 @@ def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: f
     weights = masses.counterweight_mass * masses.counterweight_radius
     x = arms + weights * math.cos(masses.counterweight_phase)
     y = weights * math.sin(masses.counterweight_phase)
-    offset = 0.0 - math.atan2(y, x)
-    return Counterbalance(-gravity * moment / linkage.horsehead_arm, gravity * math.hypot(x, y), offset)
+    lead = math.atan2(y, x)     # the resultant's angle ahead of the pin, in the direction of rotation
+    tail = linkage.lever_class == "III"
+    offset = (lead % (2.0 * math.pi)) - math.pi if tail else 0.0 - lead
+    return Counterbalance(-gravity * moment / linkage.horsehead_arm, gravity * math.hypot(x, y), offset, tail)
 
 
 #: API RP 11L's allowance over the mean of the up- and downstroke static loads in its

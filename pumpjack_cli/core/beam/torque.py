@@ -59,7 +59,8 @@ def _finite(name: str, *arrays: np.ndarray) -> None:
 
 def api_net_torque(crank_angle: np.ndarray, torque_factor: np.ndarray, rod_load: np.ndarray,
                    balance: Counterbalance) -> np.ndarray:
-    """Net gearbox torque T = TF (W - B) - M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004]).
+    """Net gearbox torque T = TF (W - B) - M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004]);
+    on a class III crank (``balance.tail``) T = TF (W - B) + M sin(theta + tau).
 
     Parameters
     ----------
@@ -90,7 +91,7 @@ def api_net_torque(crank_angle: np.ndarray, torque_factor: np.ndarray, rod_load:
     """
     theta = np.asarray(crank_angle, dtype=float)
     _finite("API net torque", theta, torque_factor, rod_load)
-    return torque_factor * (rod_load - balance.structural_unbalance) - balance.moment * np.sin(theta - balance.offset)
+    return torque_factor * (rod_load - balance.structural_unbalance) + balance.moment * balance.per_moment(theta)
 
 
 @dataclass(frozen=True)

@@ -1,37 +1,35 @@
-"""Delimited-text cards: comma-, semicolon- or tab-separated columns under a header line.
+"""Delimited-text cards: comma-, semicolon- or tab-separated columns under a header line,
+after an optional metadata preamble.
 
 Three layouts: ``crank_angle, load``; ``position, load``; ``time, position, load``.
-Units, delimiters, decimal commas, encodings, index columns, column mapping, limits and
-every refusal are specified in ``docs/cards.md``; every refusal is a one-line
-:class:`~pumpjack_cli.errors.CardError` naming the file (``<stdin>`` for ``-``), the
-line and the column. The reader puts the rows in time order and drops the repeated
-closing sample of a closed position card; it knows no unit (no stroke, no kinematics).
+Units, delimiters, decimal commas, encodings, index columns, column mapping, the
+preamble, this tool's own CSV outputs, limits and every refusal are specified in
+``docs/cards.md``; every refusal is a one-line :class:`~pumpjack_cli.errors.CardError`
+naming the file (``<stdin>`` for ``-``), the line and the column. The reader puts the
+rows in time order and drops the repeated closing sample of a closed position card; it
+knows no unit (no stroke, no kinematics): a stated stroke is checked against the
+positions' own range only.
 """
 
 from __future__ import annotations
 
-import io
 import re
-from dataclasses import dataclass
+from datetime import datetime
 from itertools import repeat
 
 import numpy as np
 
 from ...errors import CardError
-from .raw import KINDS, LAYOUT_TEXT, LAYOUTS, UNITS, RawCard, show, unit_of
+from ...quantities import UNIT_SPELLINGS
+from .raw import (DEFAULT_UNITS, DELIMITERS, KINDS, LAYOUT_TEXT, LAYOUTS, MAX_POINTS, MIN_POINTS,
+                  STATED_STROKE_TOLERANCE, UNITS, CardFile, Column, RawCard, assemble, in_si, is_content, show,
+                  stated_spm, unit_of, written_card)
 
 #: File name endings read as delimited text without looking at the content.
 EXTENSIONS = (".csv", ".tsv", ".txt")
-MIN_POINTS = 8
-MAX_POINTS = 100_000
 #: Lines of any kind (points, comments, blanks), counted before the text is split.
 MAX_LINES = 2 * MAX_POINTS
 MAX_COLUMNS = 64
-#: Largest magnitude of a load [N] and a position [m] in a card, far beyond any pumping
-#: unit (the largest API Spec 11E structure rating is below 0.3 MN, the longest stroke
-#: below 10 m): a larger number is a wrong unit or a corrupt file, refused by its line
-#: before it can overflow the computation.
-LIMITS = {"load": (1e7, "10 MN"), "position": (1e3, "1 km")}
 
 _KIND_OF_NAME = {name: kind for kind, (names, _) in KINDS.items() for name in names}
 #: Index or sample-number columns, ignored ('#' is read as 'no'); so are unnamed columns.
@@ -39,28 +37,32 @@ _INDEX_NAMES = {"index", "idx", "i", "n", "no", "nr", "num", "number", "sample",
                 "point", "point_no", "point_number", "pt"}
 _KNOWN_TEXT = ("known: crank_angle/angle/theta, time/t, position/displacement/pos, load/force/prl/polished_rod_load/rod_load, "
                "index columns (index, sample, n, #, point); map others with --card-columns position=...,load=...[,time=...]")
-_DELIMITERS = ("\t", ";", ",")
 _DELIMITER_NAMES = {"\t": "tab", ";": "semicolon", ",": "comma"}
 _UNIT_AT_END = re.compile(r"^(.*?)\s*(?:[\[(]\s*([^\[\]()]*?)\s*[\])]|,\s*([^,]+?))\s*$")
 
+#: Preamble keys (folded as column names are: case, spaces, dots and dashes; '/' as '_') -> canonical key.
+PREAMBLE_KEYS = {
+    "well": "well", "well_name": "well", "wellname": "well", "well_id": "well",
+    "date": "date", "date_time": "timestamp", "datetime": "timestamp", "timestamp": "timestamp",
+    "time_stamp": "timestamp", "time": "time",
+    "spm": "spm", "strokes_per_minute": "spm", "pumping_speed": "spm", "stroke_rate": "spm",
+    "stroke": "stroke", "stroke_length": "stroke", "surface_stroke": "stroke",
+    "units": "units", "unit_system": "units",
+}
+_PREAMBLE_TEXT = "Well Name, Date, Time, SPM, Stroke, Units"
+#: Unit systems a preamble's Units line may name -> the --card-units they mean.
+_UNIT_SYSTEMS = {"si": "si", "metric": "si", "field": "field", "oilfield": "field", "english": "field",
+                 "imperial": "field", "us": "field"}
+#: A time of day (the value of a preamble's Time line; a header's first column may be "time").
+_CLOCK = re.compile(r"^\d{1,2}:\d{2}(?::\d{2}(?:\.\d+)?)?$")
+_LENGTH = re.compile(r"^([0-9]*\.?[0-9]+(?:[eE][+-]?[0-9]+)?)\s*(\S*)$")
 
-@dataclass(frozen=True)
-class _Column:
-    values: np.ndarray
-    unit: str
-    factor: float
 
-
-def _is_content(line: str) -> bool:
-    """Neither blank nor a comment; '#' directly followed by a delimiter is the index column '#'."""
-    text = line.strip()
-    return bool(text) and (not text.startswith("#") or text[1:2] in _DELIMITERS)
-
-
-def recognises(text: str) -> bool:
-    """True when the first line that is not a comment or blank holds a comma, semicolon or tab."""
-    header = next((line for line in io.StringIO(text) if _is_content(line)), "")
-    return any(d in header for d in _DELIMITERS)
+def recognises(file: CardFile) -> bool:
+    """True when the first line after the preamble that is not a comment or blank holds a
+    comma, semicolon or tab."""
+    header = next((line for line in file.content_lines() if _preamble_entry(line) is None), "")
+    return any(d in header for d in DELIMITERS)
 
 
 def _split_unit(cell: str) -> tuple[str, str | None]:
@@ -106,6 +108,9 @@ def _header(cells: list[str], line: int, source: str, default_units: str | None,
     """Used columns: kind -> (column index, unit label, factor to SI)."""
     found: dict[str, list[tuple[int, str, float]]] = {}
     prefix = f"{source}: line {line}"
+    written = None if mapping is not None else written_card([cell.strip().strip('"').strip() for cell in cells])
+    if written is not None:
+        return written
     if mapping is None:
         for j, cell in enumerate(cells):
             named = _column(cell, default_units, prefix, j + 1)
@@ -127,33 +132,13 @@ def _header(cells: list[str], line: int, source: str, default_units: str | None,
 
 
 def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.ndarray:
-    """One column's cells as finite floats, or a one-line error at the first culprit."""
+    """One column's cells as floats, or a one-line error at the first cell that is not a number."""
     try:
-        values = np.fromiter(map(float, cells), dtype=float, count=len(cells))
+        return np.fromiter(map(float, cells), dtype=float, count=len(cells))
     except ValueError:
         i = next(i for i, cell in enumerate(cells) if not _is_float(cell))
         what = "is empty" if not cells[i].strip() else f"{show(cells[i].strip())} is not a number"
         raise CardError(f"{source}: line {lines[i]}: {kind} {what}") from None
-    bad = ~np.isfinite(values)
-    if bad.any():
-        i = int(np.argmax(bad))
-        raise CardError(f"{source}: line {lines[i]}: {kind} is {cells[i].strip()[:40]}, not a finite number")
-    return values
-
-
-def _bounded(values: np.ndarray, kind: str, lines: np.ndarray, cells: list[str], unit: str,
-             source: str) -> np.ndarray:
-    """The column's SI values if none is beyond its kind's :data:`LIMITS`, else a one-line
-    error at the first culprit."""
-    if kind not in LIMITS:
-        return values
-    limit, shown = LIMITS[kind]
-    beyond = np.abs(values) > limit
-    if beyond.any():
-        i = int(np.argmax(beyond))
-        raise CardError(f"{source}: line {lines[i]}: {kind} {cells[i].strip()[:40]} {unit} is beyond {shown}: "
-                        f"not a polished-rod {kind}; check the column's unit")
-    return values
 
 
 def _is_float(cell: str) -> bool:
@@ -164,21 +149,135 @@ def _is_float(cell: str) -> bool:
     return True
 
 
-def _parse(text: str, source: str, default_units: str | None,
-           mapping: dict[str, str] | None) -> tuple[dict[str, _Column], np.ndarray]:
-    """The used columns of a card's text, in SI, and the line number of each row."""
+def _preamble_entry(line: str) -> tuple[str, str, str | None, str] | None:
+    """(canonical key, key as written, unit written with the key, value) of a preamble line
+    (``key,value``, ``key;value``, ``key<tab>value`` or ``key: value`` with a key of
+    :data:`PREAMBLE_KEYS`), None for any other line (the header). A ``time`` line is one
+    only when its value is a time of day: ``time,position,load`` is a header."""
+    text = line.strip()
+    delimiter = next((d for d in DELIMITERS if d in text), None)
+    splits = [text.partition(delimiter)] if delimiter else []
+    for key, separator, value in [*splits, text.partition(":")]:
+        if not separator:
+            continue
+        name, unit = _split_unit(key)
+        canonical = PREAMBLE_KEYS.get(_name_key(name.replace("/", "_")).lower())
+        value = value.strip().rstrip(delimiter or "").strip().strip('"').strip()
+        if canonical is not None and (canonical != "time" or _CLOCK.match(value)):
+            return canonical, key.strip(), unit, value
+    return None
+
+
+def _stated_stroke(value: str, unit: str | None, default_units: str | None, where: str) -> float:
+    """A stated stroke [m]: "144 in", or a bare number in the key's unit ("Stroke (in)") or the
+    card's units."""
+    found = _LENGTH.match(value)
+    written = (found.group(2) or unit) if found else None
+    if written is None and found and default_units is not None:
+        written = DEFAULT_UNITS[default_units]["length"]
+    key = UNIT_SPELLINGS.get(str(written).lower().rstrip("."), str(written).lower().rstrip("."))
+    if found is None or float(found.group(1)) <= 0:
+        raise CardError(f"{where}: Stroke {show(value)} is not a length (e.g. 144 in or 3.66 m)")
+    if written is None:
+        raise CardError(f"{where}: Stroke {show(value)} names no unit: write it (144 in, 3.66 m) or give Units or "
+                        f"--card-units si or field")
+    if key not in UNITS["length"]:
+        raise CardError(f"{where}: Stroke {show(value)} has unit {written!r}, not a unit of length "
+                        f"({', '.join(UNITS['length'])})")
+    return float(found.group(1)) * UNITS["length"][key]
+
+
+def _preamble(entries: list[tuple[int, tuple[str, str, str | None, str]]], source: str,
+              card_units: str | None) -> tuple[dict[str, object], dict[str, int], str | None]:
+    """The metadata of the preamble's lines (canonical keys), the line of each, and the units of
+    columns whose header names none (``--card-units``, else the preamble's Units)."""
+    given: dict[str, tuple[int, str, str | None, str]] = {}
+    for line, (canonical, key, unit, value) in entries:
+        where = f"{source}: line {line}"
+        if canonical in given:
+            raise CardError(f"{where}: {key} given twice (line {given[canonical][0]})")
+        if not value:
+            raise CardError(f"{where}: {key} is empty")
+        given[canonical] = (line, key, unit, value)
+    metadata: dict[str, object] = {}
+    lines: dict[str, int] = {}
+    if "units" in given:
+        line, key, _, value = given["units"]
+        system = _UNIT_SYSTEMS.get(value.lower())
+        if system is None:
+            raise CardError(f"{source}: line {line}: {key} {show(value)}: use si or field")
+        if card_units is not None and card_units != system:
+            raise CardError(f"{source}: line {line}: {key} {value}, but --card-units {card_units}")
+        metadata["units"], lines["units"], card_units = system, line, system
+    if "well" in given:
+        metadata["well"], lines["well"] = given["well"][3], given["well"][0]
+    if "spm" in given:
+        line, _, unit, value = given["spm"]
+        metadata["spm"] = stated_spm(value if unit is None else f"{value} {unit}", f"{source}: line {line}")
+        lines["spm"] = line
+    if "stroke" in given:
+        line, _, unit, value = given["stroke"]
+        metadata["stroke"] = _stated_stroke(value, unit, card_units, f"{source}: line {line}")
+        lines["stroke"] = line
+    stamp = given.get("timestamp") or given.get("date")
+    if "time" in given and (stamp is None or "timestamp" in given):
+        raise CardError(f"{source}: line {given['time'][0]}: a Time goes with a Date line (YYYY-MM-DD)")
+    if stamp is not None:
+        line, key, _, value = stamp
+        text = value if "time" not in given else f"{value} {given['time'][3]}"
+        try:
+            when = datetime.fromisoformat(text)
+        except ValueError:
+            raise CardError(f"{source}: line {line}: {key} {show(text)} is not a date and time "
+                            f"(YYYY-MM-DD HH:MM[:SS], ISO 8601)") from None
+        metadata["timestamp"], lines["timestamp"] = when.isoformat(), line
+    return metadata, lines, card_units
+
+
+def _check_stroke(metadata: dict[str, object], lines: dict[str, int], columns: dict[str, Column],
+                  source: str) -> None:
+    """Refuse positions whose range differs from the stated stroke by more than
+    :data:`STATED_STROKE_TOLERANCE` (5 %, as the unit's stroke check)."""
+    if "stroke" not in metadata or "position" not in columns:
+        return
+    position = columns["position"]
+    stated, span = float(metadata["stroke"]), float(np.ptp(position.values))
+    mismatch = span / stated - 1.0
+    if abs(mismatch) > STATED_STROKE_TOLERANCE:
+        raise CardError(f"{source}: line {lines['stroke']}: stated stroke {stated / position.factor:.4g} "
+                        f"{position.unit}, but the positions span {span / position.factor:.4g} {position.unit} "
+                        f"({100 * mismatch:+.1f} %); check the stroke or the position column's unit")
+
+
+def read(file: CardFile) -> RawCard:
+    """The raw card of a delimited text (see :func:`pumpjack_cli.readers.cards.read_card`): the
+    used columns in SI, the line of each row, the preamble's statements as ``metadata``.
+
+    Rows in reverse time order are turned back (one warning); a position card closed by
+    repeating its first sample loses the repeat.
+    """
+    text, source = file.text, file.source
     if text.count("\n") >= MAX_LINES:
         raise CardError(f"{source}: more than {MAX_LINES} lines; a card file has at most {MAX_LINES}")
     lines = text.split("\n")
-    kept = [i for i, line in enumerate(lines) if _is_content(line)]
+    kept = [i for i, line in enumerate(lines) if is_content(line)]
+    entries = []
+    for i in kept:
+        entry = _preamble_entry(lines[i])
+        if entry is None:
+            break
+        entries.append((i + 1, entry))
+    kept = kept[len(entries):]
+    metadata, stated_lines, default_units = _preamble(entries, source, file.units)
     if not kept:
         raise CardError(f"{source}: empty card")
     header_line = kept[0] + 1
     header = lines[kept[0]]
-    delimiter = next((d for d in _DELIMITERS if d in header), None)
+    delimiter = next((d for d in DELIMITERS if d in header), None)
     if delimiter is None:
-        raise CardError(f"{source}: line {header_line}: no comma, semicolon or tab in the header {show(header.strip())}; "
-                        f"a card has named columns, e.g. position_in,load_lbf")
+        hint = f" (a preamble line? its keys are {_PREAMBLE_TEXT})" if ":" in header else ""
+        raise CardError(f"{source}: line {header_line}: no comma, semicolon or tab in the header {show(header.strip())}"
+                        f"{hint}; a card has named columns, e.g. position_in,load_lbf")
     if header.count(delimiter) >= MAX_COLUMNS:
         raise CardError(f"{source}: line {header_line}: {header.count(delimiter) + 1} columns; "
                         f"a card file has at most {MAX_COLUMNS}")
@@ -186,7 +285,7 @@ def _parse(text: str, source: str, default_units: str | None,
     if all(_is_float(cell.replace(",", ".")) for cell in cells):
         raise CardError(f"{source}: line {header_line}: numbers where the header should be; "
                         f"the first line names the columns, e.g. position_in,load_lbf")
-    used = _header(cells, header_line, source, default_units, mapping)
+    used = _header(cells, header_line, source, default_units, file.columns)
     rows = [lines[i] for i in kept[1:]]
     numbers = np.array(kept[1:], dtype=int) + 1
     if len(rows) > MAX_POINTS:
@@ -204,12 +303,15 @@ def _parse(text: str, source: str, default_units: str | None,
     columns = {kind: flat[j::len(cells)] for kind, (j, _, _) in used.items()}
     if delimiter != ",":
         columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
-    values = {kind: _Column(_bounded(_numbers(columns[kind], kind, numbers, source) * factor, kind, numbers,
-                                     columns[kind], unit, source), unit, factor)
-              for kind, (_, unit, factor) in used.items()}
+    values = {}
+    for kind, (_, unit, factor) in used.items():
+        cells = columns[kind]
+        values[kind] = Column(in_si(_numbers(cells, kind, numbers, source), kind, unit, factor,
+                                    lambda i: f"{source}: line {numbers[i]}", lambda i: cells[i].strip()[:40]), unit, factor)
     if len(rows) < MIN_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
-    return values, numbers
+    _check_stroke(metadata, stated_lines, values, source)
+    return assemble(source, values, numbers, metadata=metadata, metadata_lines=stated_lines)
 
 
 def _decimal_commas(columns: dict[str, list[str]], used: dict[str, tuple[int, str, float]], numbers: np.ndarray,
@@ -226,40 +328,3 @@ def _decimal_commas(columns: dict[str, list[str]], used: dict[str, tuple[int, st
                         f"has a comma but line {numbers[i2]}: {k2} {show(columns[k2][i2].strip())} a point; "
                         f"cannot tell the decimal mark in this {delimiter}-separated file (thousands separators?)")
     return {kind: [cell.replace(",", ".") for cell in cells] for kind, cells in columns.items()}
-
-
-def _time_order(time: np.ndarray, lines: np.ndarray, column: _Column, source: str) -> bool:
-    """True if the rows are in reverse time order; refuse repeated or unordered time stamps."""
-    steps = np.diff(time)
-    if np.any(steps == 0):
-        i = int(np.argmax(steps == 0)) + 1
-        raise CardError(f"{source}: line {lines[i]}: time {time[i] / column.factor:.6g} {column.unit} repeats "
-                        f"line {lines[i - 1]}; duplicated time stamps")
-    if np.all(steps < 0):
-        return True
-    if np.any(steps < 0):
-        raise CardError(f"{source}: line {lines[int(np.argmax(steps < 0)) + 1]}: time does not increase")
-    return False
-
-
-def read(text: str, source: str, default_units: str | None, mapping: dict[str, str] | None) -> RawCard:
-    """The raw card of a delimited text (see :func:`pumpjack_cli.readers.cards.read_card`).
-
-    Rows in reverse time order are turned back (one warning); a position card closed by
-    repeating its first sample loses the repeat.
-    """
-    columns, lines = _parse(text, source, default_units, mapping)
-    units = {kind: (column.unit, column.factor) for kind, column in columns.items()}
-    load = columns["load"].values
-    if "crank_angle" in columns:
-        return RawCard(source, load, lines, crank_angle=columns["crank_angle"].values, column_units=units)
-    time = columns["time"].values if "time" in columns else None
-    position = columns["position"].values
-    backwards = time is not None and _time_order(time, lines, columns["time"], source)
-    if np.allclose(position[0], position[-1]) and np.allclose(load[0], load[-1]):
-        position, load, lines = position[:-1], load[:-1], lines[:-1]  # a closed card repeats its first point
-        time = None if time is None else time[:-1]
-    if backwards:
-        position, load, time, lines = position[::-1], load[::-1], time[::-1], lines[::-1]
-    warnings = (f"{source}: rows listed in reverse time order; read in time order",) if backwards else ()
-    return RawCard(source, load, lines, time, position, column_units=units, reversed=backwards, warnings=warnings)

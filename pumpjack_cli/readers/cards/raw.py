@@ -1,21 +1,27 @@
-"""The raw card every card reader returns, and the column kinds and layouts they share.
+"""The raw card every card reader returns, and the column kinds, layouts, limits and checks they share.
 
 A raw card is what a file says, in SI, before any unit is involved: the columns of one
-of three layouts, the source line of every sample for messages, and what the reader
-noticed. Putting it on a unit's crank-angle axis is
+of three layouts, the source line of every sample for messages, what the file states
+about the well, and what the reader noticed. Putting it on a unit's crank-angle axis is
 :func:`pumpjack_cli.core.cards.place_card`.
 """
 
 from __future__ import annotations
 
+import io
 import math
-from collections.abc import Iterable
-from dataclasses import dataclass, field
+import re
+from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
 from ...errors import CardError
-from ...quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, UNIT_SPELLINGS
+from ...names import written_names
+from ...quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, UNIT_SPELLINGS, output_unit
+from ...text_input import decode_text
 
 #: Column kinds: accepted names and dimension.
 KINDS = {
@@ -42,6 +48,26 @@ DEFAULT_UNITS = {
 }
 LAYOUTS = ({"crank_angle", "load"}, {"position", "load"}, {"time", "position", "load"})
 LAYOUT_TEXT = "a card has crank_angle and load, position and load, or time, position and load"
+#: Column delimiters of delimited text, in the order a header is searched for them.
+DELIMITERS = ("\t", ";", ",")
+MIN_POINTS = 8
+MAX_POINTS = 100_000
+#: Largest magnitude of a load [N] and a position [m] in a card, far beyond any pumping
+#: unit (the largest API Spec 11E structure rating is below 0.3 MN, the longest stroke
+#: below 10 m): a larger number is a wrong unit or a corrupt file, refused by its line
+#: before it can overflow the computation.
+LIMITS = {"load": (1e7, "10 MN"), "position": (1e3, "1 km")}
+#: A stroke the file states may differ from its positions' range by this fraction, as a
+#: card's stroke may from the unit's (``core.cards.STROKE_ERROR``); beyond, it is refused.
+STATED_STROKE_TOLERANCE = 0.05
+#: Pumping speeds a file may state [1/min], the range of ``--spm``.
+SPM_RANGE = (0.1, 60.0)
+#: The surface card among the columns this tool writes (``predict``, ``downhole``, ``torque``
+#: with ``-f csv`` or ``-f json``): output name -> column kind ...
+_WRITTEN_KINDS = {"time": "time", "position": "position", "rod_load": "load", "crank_angle": "crank_angle"}
+#: ... and the layouts taken, the first the table holds: the time card, else positions, else angles.
+_WRITTEN_LAYOUTS = (("time", "position", "load"), ("position", "load"), ("crank_angle", "load"))
+_SPM = re.compile(r"^([0-9]*\.?[0-9]+(?:[eE][+-]?[0-9]+)?)\s*(?:spm|1/min|/min|strokes/min)?$", re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -68,10 +94,20 @@ class RawCard:
     reversed : bool
         True when the rows were read in reverse to put them in time order.
     metadata : dict
-        What the file says about the well and the measurement (well name, date, pumping
-        speed, stroke); empty when the format has no such preamble.
+        What the file states about the well and the measurement, by canonical key:
+        ``well`` (text), ``timestamp`` (ISO 8601 text), ``spm`` [1/min], ``stroke`` [m],
+        ``units`` (``"si"`` or ``"field"``); a stroke of a recording adds ``start``, the
+        time of its first sample [s]. Empty when the file states nothing.
+    metadata_lines : dict
+        The file's line of each metadata key (for messages).
     warnings : tuple of str
         One line for each thing the reader noticed and mended.
+    strokes : tuple of RawCard
+        Every card of a file that holds several, in the file's order: the strokes of a
+        continuous recording (:mod:`.recording`), the lines of a hex file, each named
+        "<file> stroke k" (k from 1) in messages. The raw card itself is then the last
+        of them (what a controller shows) under the file's name; empty for a file of
+        one card.
     """
 
     source: str
@@ -83,7 +119,55 @@ class RawCard:
     column_units: dict[str, tuple[str, float]] = field(default_factory=dict)
     reversed: bool = False
     metadata: dict[str, object] = field(default_factory=dict)
+    metadata_lines: dict[str, int] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    strokes: tuple[RawCard, ...] = ()
+
+
+@dataclass(frozen=True)
+class CardFile:
+    """What a reader reads: a card file's content as read, its name for messages, and the
+    card options (``--card-units``, ``--card-columns`` as a mapping, ``--card-points``)."""
+
+    data: bytes | str
+    source: str
+    units: str | None = None
+    columns: dict[str, str] | None = None
+    points: int | None = None
+
+    @cached_property
+    def text(self) -> str:
+        """The content as UTF-8 text (LF line ends, no byte-order mark); content that is not
+        text is refused in one line naming its line."""
+        return decode_text(self.data, self.source, CardError)
+
+    @cached_property
+    def is_text(self) -> bool:
+        """Whether the content is UTF-8 text."""
+        try:
+            self.text
+        except CardError:
+            return False
+        return True
+
+    def content_lines(self) -> Iterator[str]:
+        """The lines that are neither blank nor ``#`` comments, lazily (none for binary content)."""
+        return (line for line in io.StringIO(self.text if self.is_text else "") if is_content(line))
+
+
+def is_content(line: str) -> bool:
+    """Neither blank nor a comment; '#' directly followed by a delimiter is the index column '#'."""
+    text = line.strip()
+    return bool(text) and (not text.startswith("#") or text[1:2] in DELIMITERS)
+
+
+@dataclass(frozen=True)
+class Column:
+    """One column as read: values in SI, the unit as written and its factor to SI."""
+
+    values: np.ndarray
+    unit: str
+    factor: float
 
 
 def show(text: str, limit: int = 40) -> str:
@@ -139,3 +223,109 @@ def parse_card_columns(text: str) -> dict[str, str]:
             raise CardError(f"--card-columns: {show(kind.strip())} is not kind=header "
                             f"(e.g. position=Pos (in),load=PRL,time=Time)")
     return checked_columns((kind, header) for kind, _, header in pairs)
+
+
+def in_si(numbers: np.ndarray, kind: str, unit: str, factor: float, where: Callable[[int], str],
+          written: Callable[[int], str]) -> np.ndarray:
+    """A column's numbers (as written, in ``unit``) in SI, if every one is finite and within its
+    kind's :data:`LIMITS`; else one line at the first culprit, ``where(i)`` naming the file and
+    its place ("card.csv: line 7") and ``written(i)`` the value as the file writes it."""
+    bad = ~np.isfinite(numbers)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise CardError(f"{where(i)}: {kind} is {written(i)}, not a finite number")
+    values = numbers * factor
+    if kind in LIMITS:
+        limit, shown = LIMITS[kind]
+        beyond = np.abs(values) > limit
+        if beyond.any():
+            i = int(np.argmax(beyond))
+            raise CardError(f"{where(i)}: {kind} {written(i)} {unit} is beyond {shown}: not a polished-rod {kind}; "
+                            f"check the column's unit")
+    return values
+
+
+def count_points(points: int, source: str) -> None:
+    """Refuse a card of fewer than :data:`MIN_POINTS` or more than :data:`MAX_POINTS` points."""
+    if points < MIN_POINTS:
+        raise CardError(f"{source}: {points} points; a card needs at least {MIN_POINTS}")
+    if points > MAX_POINTS:
+        raise CardError(f"{source}: {points} points; a card has at most {MAX_POINTS}")
+
+
+def written_card(names: list[str]) -> dict[str, tuple[int, str, float]] | None:
+    """The surface card's columns in a table this tool wrote (``pumpjack predict -f csv``):
+    kind -> (index, unit, factor to SI). The time card (time, position, rod_load) is taken
+    when the table has it, else positions or crank angles with rod_load; every other
+    column is ignored. None when a name is not one the tool writes or the table holds no
+    surface card (a user's table, read by its own rules)."""
+    known = written_names()
+    if not names or not all(name in known for name in names):
+        return None
+    found: dict[str, tuple[int, str, float]] = {}
+    for j, name in enumerate(names):
+        base, quantity, system = known[name]
+        kind = _WRITTEN_KINDS.get(base)
+        if kind is not None and kind not in found:
+            unit = output_unit(quantity, system)
+            found[kind] = (j, unit.label, 1.0 / unit.scale)
+    layout = next((layout for layout in _WRITTEN_LAYOUTS if set(layout) <= set(found)), None)
+    return None if layout is None else {kind: found[kind] for kind in layout}
+
+
+def stated_spm(value: object, where: str) -> float:
+    """A pumping speed a file states [1/min]: a number, or a text "7.8" or "7.8 spm" (also
+    1/min, strokes/min), within :data:`SPM_RANGE`; else one line, ``where`` naming the file
+    and line."""
+    text = str(value).strip()
+    found = None if isinstance(value, bool) else _SPM.match(text)
+    if found is None:
+        raise CardError(f"{where}: SPM {show(text)} is not a number of strokes per minute (e.g. 7.8 or 7.8 spm)")
+    spm = float(found.group(1))
+    if not SPM_RANGE[0] <= spm <= SPM_RANGE[1]:
+        raise CardError(f"{where}: SPM {spm:g} is outside {SPM_RANGE[0]:g} .. {SPM_RANGE[1]:g} strokes per minute")
+    return spm
+
+
+def _time_order(time: np.ndarray, lines: np.ndarray, column: Column, source: str) -> bool:
+    """True if the rows are in reverse time order; refuse repeated or unordered time stamps."""
+    steps = np.diff(time)
+    if np.any(steps == 0):
+        i = int(np.argmax(steps == 0)) + 1
+        raise CardError(f"{source}: line {lines[i]}: time {time[i] / column.factor:.6g} {column.unit} repeats "
+                        f"line {lines[i - 1]}; duplicated time stamps")
+    if np.all(steps < 0):
+        return True
+    if np.any(steps < 0):
+        raise CardError(f"{source}: line {lines[int(np.argmax(steps < 0)) + 1]}: time does not increase")
+    return False
+
+
+def assemble(source: str, columns: dict[str, Column], lines: np.ndarray, **stated) -> RawCard:
+    """The raw card of one layout's columns (SI) and the line of every row: rows in reverse time
+    order are turned back (one warning), a position card closed by repeating its first sample
+    loses the repeat. ``stated`` are the file's ``metadata`` and ``metadata_lines``."""
+    units = {kind: (column.unit, column.factor) for kind, column in columns.items()}
+    load = columns["load"].values
+    if "crank_angle" in columns:
+        return RawCard(source, load, lines, crank_angle=columns["crank_angle"].values, column_units=units, **stated)
+    time = columns["time"].values if "time" in columns else None
+    position = columns["position"].values
+    backwards = time is not None and _time_order(time, lines, columns["time"], source)
+    if np.allclose(position[0], position[-1]) and np.allclose(load[0], load[-1]):
+        position, load, lines = position[:-1], load[:-1], lines[:-1]  # a closed card repeats its first point
+        time = None if time is None else time[:-1]
+    if backwards:
+        position, load, time, lines = position[::-1], load[::-1], time[::-1], lines[::-1]
+    warnings = (f"{source}: rows listed in reverse time order; read in time order",) if backwards else ()
+    return RawCard(source, load, lines, time, position, column_units=units, reversed=backwards, warnings=warnings,
+                   **stated)
+
+
+def several(cards: Sequence[RawCard]) -> RawCard:
+    """The raw card of a file of several cards: the last, with every one, named "<file> stroke
+    k" (k from 1), in ``strokes``; a single card as it is."""
+    if len(cards) == 1:
+        return cards[0]
+    named = tuple(replace(card, source=f"{card.source} stroke {k}") for k, card in enumerate(cards, 1))
+    return replace(cards[-1], strokes=named)

@@ -62,7 +62,7 @@ def test_counterbalance_moment_equals_kinetostatic_gravity_of_crank_group(name, 
     counterweights, in line with the pin, help the gearbox while the pin descends."""
     spatial, masses = unit(name)
     crank = crank_only(masses, phase)
-    b, m, tau = counterbalance_from_masses(spatial.planar, crank)
+    b, m, tau, _ = counterbalance_from_masses(spatial.planar, crank)
     assert b == 0.0
     exact = static_exact(spatial, crank, np.zeros_like(THETA))
     assert np.max(np.abs(exact - (-m * np.sin(THETA - tau)))) <= 1e-9 * m
@@ -76,7 +76,7 @@ def test_crank_offset_sign_is_the_lag_of_the_counterweights():
     """Counterweights alone at phase phi ahead of the pin give tau = -phi (lag = -lead)."""
     lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     masses = dataclasses.replace(ZERO, counterweight_mass=1000.0, counterweight_radius=1.0, counterweight_phase=0.25)
-    _, m, tau = counterbalance_from_masses(lk, masses)
+    _, m, tau, _ = counterbalance_from_masses(lk, masses)
     assert tau == pytest.approx(-0.25, abs=1e-15) and m == pytest.approx(1000.0 * G, rel=1e-15)
 
 
@@ -126,7 +126,7 @@ def test_exact_equals_api_without_masses(name):
     with a crank speed (no mass, no inertia)."""
     spatial, _ = unit(name)
     load = card_like(THETA)
-    assert counterbalance_from_masses(spatial.planar, ZERO) == (0.0, 0.0, 0.0)
+    assert counterbalance_from_masses(spatial.planar, ZERO) == (0.0, 0.0, 0.0, False)
     both = compare_methods(spatial, ZERO, THETA, load, crank_speed=1.2, crank_acceleration=0.05)
     peak = np.max(np.abs(both.api))
     assert np.max(np.abs(both.api - both.exact)) <= 1e-9 * peak

@@ -98,11 +98,11 @@ def test_recommendation_on_a_square_card():
     results = {c: recommend_counterbalance(c, lk, theta, w, bal) for c in balance_criteria()}
     tf = lk.front_arm * m.beam_rate
     for r in results.values():
-        torque = tf * w - r.moment * np.sin(theta)
+        torque = tf * w - r.value * np.sin(theta)
         assert r.peak_net_torque == pytest.approx(np.max(np.abs(torque)), rel=1e-12)
         assert r.rms_torque == pytest.approx(math.sqrt(np.mean(torque**2)), rel=1e-12)
     assert results["equal-peaks"].upstroke_peak == pytest.approx(results["equal-peaks"].downstroke_peak, rel=1e-12)
-    assert results["min-peak"].moment == pytest.approx(results["equal-peaks"].moment, rel=1e-9)
+    assert results["min-peak"].value == pytest.approx(results["equal-peaks"].value, rel=1e-9)
     assert results["min-rms"].rms_torque < results["min-peak"].rms_torque
 
 
@@ -119,8 +119,8 @@ def rear_heavy_case():
 def test_recommendation_without_solution_says_why():
     lk, theta, w, bal = rear_heavy_case()
     r = recommend_counterbalance("equal-peaks", lk, theta, w, bal)
-    assert r.moment is None and r.peak_net_torque is None
-    assert "no counterbalance moment M >= 0 makes the stroke peaks equal" in r.note
+    assert r.value is None and r.peak_net_torque is None
+    assert "no counterbalance moment >= 0 makes the stroke peaks equal" in r.note
     with pytest.raises(TorqueError, match="unknown balance criterion 'best'"):
         recommend_counterbalance("best", lk, theta, w, bal)
 
@@ -128,8 +128,8 @@ def test_recommendation_without_solution_says_why():
 def test_min_rms_below_zero_is_clamped_with_a_note():
     lk, theta, w, bal = rear_heavy_case()
     r = recommend_counterbalance("min-rms", lk, theta, w, bal)
-    assert r.moment == 0.0 and "< 0" in r.note
-    assert recommend_counterbalance("min-peak", lk, theta, w, bal).moment == 0.0
+    assert r.value == 0.0 and "< 0" in r.note
+    assert recommend_counterbalance("min-peak", lk, theta, w, bal).value == 0.0
 
 
 def test_counterweight_radius_by_hand():

@@ -94,7 +94,7 @@ def test_optimisers_agree_with_brute_force_scans(name):
     for criterion in balance_criteria():
         result = recommend_counterbalance(criterion, linkage, THETA, w, bal)
         scanned = zoom_scan(objectives[criterion], 0.0, hi)
-        assert result.moment == pytest.approx(scanned, rel=1e-6), criterion
+        assert result.value == pytest.approx(scanned, rel=1e-6), criterion
         peak = float(np.max(np.abs(base - scanned * sine)))
         assert result.peak_net_torque == pytest.approx(peak, rel=1e-6), criterion
     equal = recommend_counterbalance("equal-peaks", linkage, THETA, w, bal)

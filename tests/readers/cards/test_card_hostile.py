@@ -142,7 +142,10 @@ CASES += [
     ("shuffled-positions", numeric_card("time_s,position_m,load_n", [np.arange(180) * 0.03,
                                                                       np.random.default_rng(3).permutation(rod(np.linspace(0, 6.28, 180))[0]),
                                                                       np.linspace(4e4, 5e4, 180)]),
-     "the time stamps do not fit this unit's motion"),
+     "samples; a stroke needs at least 8 (positions that turn every few samples are not a recording)"),
+    ("positions-reversed-in-blocks", numeric_card("time_s,position_m,load_n", [
+        np.arange(180) * 0.03, np.concatenate([block[::-1] for block in np.split(rod(np.linspace(0, 6.28, 180))[0], 18)]),
+        np.where(rod(np.linspace(0, 6.28, 180))[1] > 0, 52e3, 40e3)]), "the time stamps do not fit this unit's motion"),
     ("crank-turning-back", time_card(0.6 * np.arange(180) * 0.05 + 1.2 * np.sin(0.6 * np.arange(180) * 0.05),
                                      np.arange(180) * 0.05), "turn backwards at times"),
     ("three-quarter-turn", time_card(np.linspace(0.0, 1.5 * math.pi, 150), np.linspace(0.0, 7.5, 150)),

@@ -43,9 +43,11 @@ def test_the_format_is_told_from_content_or_name_else_the_default(tmp_path):
     path = tmp_path / "card.dynamometer"
     path.write_text(SK8_CARD.read_text(encoding="utf-8"), encoding="utf-8")
     assert np.array_equal(read_card(path).position, POSITION)
-    assert cards._format_of("no delimiter here\n", "card.xyz") == cards.DEFAULT_FORMAT
-    assert cards._format_of("no delimiter here\n", "card.csv") == "delimited"
-    with pytest.raises(CardError, match="^card format 'xml': use delimited$"):
+    text = cards.CardFile(b"no delimiter here\n", "card")
+    assert cards._format_of(text, "card.xyz") == cards.DEFAULT_FORMAT
+    assert cards._format_of(text, "card.csv") == "delimited"
+    assert cards._format_of(text, "card.bin") == "binary"
+    with pytest.raises(CardError, match="^--card-format 'xml': use json, hex, binary, delimited$"):
         read_card(path, format="xml")
 
 
