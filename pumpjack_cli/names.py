@@ -308,11 +308,23 @@ SECTIONS: tuple[Section, ...] = (
           "off the crank pins, downward positive", "B"),
         E("counterbalance_moment", "torque", "present counterbalance: largest moment of cranks and counterweights",
           "M"),
-        E("crank_offset", "angle", "lag of the counterweights' resultant behind the crank pin", "τ"),
+        E("crank_offset", "angle", "crank offset: the lag of the counterweights' resultant behind the crank pin "
+          "(class I), its lead ahead of the crank's tail (class III, docs/conventions.md)", "τ"),
+        E("beam_counterweight", "force", "present weight of the beam counterweight (beam-balanced unit)", "W_cb"),
+        E("beam_counterweight_arm", "length", "the beam counterweight's distance from the centre bearing along "
+          "the beam, towards the well positive"),
+        E("air_pressure", "pressure", "present gauge pressure of the air cylinder at its stated position "
+          "(air-balanced unit)", "p_r"),
+        E("air_piston_area", "area", "piston area of the air cylinder", "A_c"),
+        E("air_bottom_volume", "gas_volume", "gas volume of the air cylinder at the bottom of the stroke", "V_b"),
+        E("air_cylinder_lever", "length", "the air cylinder's pin on the beam from the centre bearing, towards "
+          "the well positive", "d"),
+        E("air_exponent", "ratio", "polytropic exponent of the air cylinder's gas", "n"),
         E("counterbalance_effect", "force", "present counterbalance effect: the polished-rod load the "
           "counterbalance holds with the cranks horizontal, B + M sin(90° − τ)/TF(90°)", "CBE"),
         E("structural_torque", "torque", "torque of the structural unbalance, −TF B", "−TF B"),
-        E("counterbalance_torque", "torque", "torque of the counterbalance, −M sin(θ − τ)", "−M sin(θ − τ)"),
+        E("counterbalance_torque", "torque", "torque of the counterbalance: crank counterweights −M sin(θ − τ) "
+          "(class III: +M sin(θ + τ)), a beam counterweight or an air cylinder through TF", "T_c"),
         E("articulating_inertia_torque", "torque", "inertia torque of the beam group (through TF) ([Takacs2016])"),
         E("rotary_inertia_torque", "torque", "inertia torque of cranks and counterweights, I_r α ([Takacs2016])"),
         E("api_net_torque", "torque", "net gearbox torque by the API 11E torque-factor method"),
@@ -325,6 +337,10 @@ SECTIONS: tuple[Section, ...] = (
         E("peak_net_torque_crank_angle", "angle", "crank angle of the largest |net gearbox torque|"),
         E("recommended_counterbalance_moment", "torque", "the counterbalance moment M that meets the balance "
           "criterion (--balance)"),
+        E("recommended_beam_counterweight", "force", "the beam counterweight that meets the balance criterion "
+          "(--balance)"),
+        E("recommended_air_pressure", "pressure", "the air cylinder's gauge pressure at its stated position that "
+          "meets the balance criterion (--balance)"),
         E("recommended_counterbalance_effect", "force", "counterbalance effect of the recommended counterbalance, "
           "cranks horizontal"),
         E("recommended_peak_net_torque", "torque", "largest |net gearbox torque| with the recommended "

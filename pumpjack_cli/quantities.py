@@ -227,6 +227,8 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "pressure": {"si": OutputUnit("Pa", "pa", 1.0), "field": OutputUnit("psi", "psi", INCH**2 / POUND_FORCE)},
     "stress": {"si": OutputUnit("MPa", "mpa", 1e-6), "field": OutputUnit("psi", "psi", INCH**2 / POUND_FORCE)},
     "volume": {"si": OutputUnit("m³", "m3", 1.0), "field": OutputUnit("bbl", "bbl", 1 / BARREL)},
+    "gas_volume": {"si": OutputUnit("m³", "m3", 1.0), "field": OutputUnit("ft³", "ft3", 1 / FOOT**3)},
+    "area": {"si": OutputUnit("m²", "m2", 1.0), "field": OutputUnit("in²", "in2", 1 / INCH**2)},
     "flow_rate": {"si": OutputUnit("m³/d", "m3_d", 86400.0), "field": OutputUnit("bbl/d", "bbl_d", 86400.0 / BARREL)},
     "torque": {"si": OutputUnit("N·m", "n_m", 1.0), "field": OutputUnit("lbf·in", "lbf_in", 1 / (POUND_FORCE * INCH))},
     "percent": {"si": OutputUnit("%", "percent", 100.0), "field": OutputUnit("%", "percent", 100.0)},

@@ -74,3 +74,15 @@ def polished_rod_position(linkage, theta: np.ndarray) -> np.ndarray:
 def sk8_rod_position(samples: int) -> np.ndarray:
     """SK8-3,5-4000's polished-rod position at ``samples`` equal crank steps from crank angle 0."""
     return polished_rod_position(SK8_LINKAGE, np.arange(samples) * 2 * np.pi / samples)
+
+
+def zoom_scan(objective, lo: float, hi: float, rounds: int = 12, points: int = 401) -> float:
+    """Brute force: evaluate on a dense grid of the balancing variable, keep +-2 steps around the best, repeat.
+
+    For a function that is unimodal near its minimum every window holds the minimiser,
+    and each round shrinks the window 100-fold."""
+    for _ in range(rounds):
+        grid = np.linspace(lo, hi, points)
+        k = int(np.argmin(objective(grid)))
+        lo, hi = grid[max(k - 2, 0)], grid[min(k + 2, points - 1)]
+    return float(grid[k])

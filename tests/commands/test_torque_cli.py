@@ -133,14 +133,19 @@ def test_recommended_counterbalance_by_a_scan_of_m(torque, criterion):
                                                                          rel=1e-6)
 
 
-def test_mark_ii_is_refused_by_name(run_cli, tmp_path):
+def test_a_mark_ii_designation_reads_the_geometry_as_a_mark_ii(run_cli, tmp_path):
+    """The designation's letter names the kind: a conventional file relabelled M- is read with the
+    Mark II schema (which turns counterclockwise only), and a class key that contradicts it is refused."""
     text = (REPO_ROOT / "configs" / "c-80d-133-48.toml").read_text(encoding="utf-8")
     unit = tmp_path / "mark.toml"
     unit.write_text(text.replace('designation = "C-80D-133-48"', 'designation = "M-912D-427-192"'), encoding="utf-8")
     code, out, err = run_cli("torque", unit, "--card", sample_card("c-80d-133-48"))
     assert code == 2 and out == "" and err.count("\n") == 1
-    assert "geometry: the designation 'M-912D-427-192' names a Mark II unit, a kind of unit this version does not " \
-           "model" in err
+    assert "geometry.rotation: Input should be 'counterclockwise'" in err
+    unit.write_text(text.replace('designation = "C-80D-133-48"', 'designation = "M-912D-427-192"')
+                    .replace("[geometry]", '[geometry]\nclass = "conventional"'), encoding="utf-8")
+    code, out, err = run_cli("torque", unit, "--card", sample_card("c-80d-133-48"))
+    assert code == 2 and "class 'conventional' contradicts the designation 'M-912D-427-192'" in err
 
 
 def test_exact_method_needs_masses(run_cli):

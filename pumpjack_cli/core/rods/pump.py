@@ -73,7 +73,7 @@ def discharge_pressure(pump_depth: float, fluid_density: float, tubing_head_pres
     produced fluid over the pump's true vertical depth L [m] ([API11L]).
 
     >>> round(discharge_pressure(1530.0, 820.0, 0.0, 9.81))
-    12307338
+    12307626
     """
     return tubing_head_pressure + fluid_density * gravity * pump_depth
 

@@ -25,7 +25,7 @@ from pumpjack_cli.core.beam.torque import api_net_torque
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.readers.cards import read_card
 
-from helpers import sample_card
+from helpers import sample_card, zoom_scan
 
 #: unit -> (card units, strokes per minute the card was made at: samples/make_cards.py;
 #: SK8 runs at the motor's rated speed, pi 1460 / (30 x 37.18 x 3.6) = 1.1422 1/s)
@@ -43,18 +43,6 @@ def bundled(name: str):
     linkage = config.geometry.mechanism()
     reading = place(read_card(sample_card(name), units=CARDS[name][0]), linkage)
     return linkage, config.masses.model(), reading.card
-
-
-def zoom_scan(objective, lo: float, hi: float, rounds: int = 12, points: int = 401) -> float:
-    """Brute force: evaluate on a dense grid of M, keep +-2 steps around the best, repeat.
-
-    For a function that is unimodal near its minimum every window holds the minimiser,
-    and each round shrinks the window 100-fold."""
-    for _ in range(rounds):
-        grid = np.linspace(lo, hi, points)
-        k = int(np.argmin(objective(grid)))
-        lo, hi = grid[max(k - 2, 0)], grid[min(k + 2, points - 1)]
-    return float(grid[k])
 
 
 def torques(base: np.ndarray, sine: np.ndarray, moments: np.ndarray) -> np.ndarray:
