@@ -16,7 +16,9 @@ from __future__ import annotations
 
 import csv
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 from typing import Any
 
@@ -67,6 +69,7 @@ _BY_FOLDED = {name.casefold(): name for name in COLUMNS}
 #: A unit to show in a header that lacks one, per dimension.
 _EXAMPLE_UNITS = {"length": "in", "force": "lbf", "angle": "deg", "torque": "lbf_in"}
 _NUMBER = re.compile(r"^[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
+_WHOLE = re.compile(r"^[0-9]+$")
 _HOLE_SPEC = re.compile(r"^(?P<designation>[^/\\]+)/(?P<hole>[0-9]+)$")
 
 
@@ -112,15 +115,22 @@ class Catalogue:
     source: str
     rows: tuple[CatalogueRow, ...]
 
+    @cached_property
+    def _holes(self) -> dict[str, list[CatalogueRow]]:
+        """The rows of each designation (:func:`designation_key`), in the file's order."""
+        found: dict[str, list[CatalogueRow]] = {}
+        for row in self.rows:
+            found.setdefault(designation_key(row.designation), []).append(row)
+        return found
+
     def find(self, spec: str) -> CatalogueRow | None:
         """The row ``spec`` names (``DESIGNATION/HOLE``, or a designation with one hole), None when
         the catalogue has no such designation; a ConfigError for a hole it does not have or a
         designation of several holes without one."""
         found = _HOLE_SPEC.match(spec.strip())
         designation, hole = (found["designation"], int(found["hole"])) if found else (spec, None)
-        key = designation_key(designation)
-        rows = [row for row in self.rows if designation_key(row.designation) == key]
-        if not rows:
+        rows = self._holes.get(designation_key(designation))
+        if rows is None:
             return None
         holes = ", ".join(str(row.hole) for row in rows)
         if hole is None and len(rows) > 1:
@@ -144,17 +154,17 @@ def read_catalogue(path: Path) -> Catalogue:
     if not lines:
         raise ConfigError(f"{source}: empty: a unit catalogue is a header line ({', '.join(REQUIRED)}, ...) "
                           f"and a row per unit and crank hole")
-    header_line, header = lines[0]
-    columns = _header(_cells(header, header_line, source), header_line, source)
+    split = _split(lines, source)
+    header_line, header = next(split)
+    columns = _header(header, header_line, source)
     rows: list[CatalogueRow] = []
     seen: dict[tuple[str, int], int] = {}
-    for number, line in lines[1:]:
-        cells = _cells(line, number, source)
+    for number, cells in split:
         if len(cells) != len(columns):
             hint = ' (a cell holding a comma is quoted: "SK8-3,5-4000")' if len(cells) > len(columns) else ""
             raise ConfigError(f"{source}: line {number}: {len(cells)} cells for the header's {len(columns)} "
                               f"columns{hint}")
-        row = _row(dict(zip(columns, cells)), columns, number, source)
+        row = _row(zip(columns, cells), number, source)
         key = (designation_key(row.designation), row.hole)
         if key in seen:
             raise ConfigError(f"{source}: line {number}: {row.name} is given twice (lines {seen[key]} and {number})")
@@ -165,11 +175,17 @@ def read_catalogue(path: Path) -> Catalogue:
     return Catalogue(source, tuple(rows))
 
 
-def _cells(line: str, number: int, source: str) -> list[str]:
-    try:
-        return [cell.strip() for cell in next(csv.reader([line], strict=True))]
-    except csv.Error as exc:
-        raise ConfigError(f"{source}: line {number}: not valid CSV: {exc}") from None
+def _split(lines: list[tuple[int, str]], source: str) -> Iterator[tuple[int, list[str]]]:
+    """(line number, stripped cells) of each line: one CSV row a line (no cell holds a line break)."""
+    reader = csv.reader((line for _, line in lines), strict=True)
+    for index, (number, _) in enumerate(lines, start=1):
+        try:
+            cells = next(reader)
+        except csv.Error as exc:
+            raise ConfigError(f"{source}: line {number}: not valid CSV: {exc}") from None
+        if reader.line_num != index:
+            raise ConfigError(f"{source}: line {number}: not valid CSV: a quoted cell is not closed on its line")
+        yield number, [cell.strip() for cell in cells]
 
 
 @dataclass(frozen=True)
@@ -225,12 +241,11 @@ def _column(cell: str, number: int, where: str) -> _Column:
     return _Column(name, unit, cell)
 
 
-def _row(cells: dict[_Column, str], columns: list[_Column], line: int, source: str) -> CatalogueRow:
-    """A row as a unit file's table."""
+def _row(cells: Iterable[tuple[_Column, str]], line: int, source: str) -> CatalogueRow:
+    """A row, its cells by column, as a unit file's table."""
     table: dict[str, Any] = {}
     given: dict[str, tuple[_Column, str]] = {}
-    for column in columns:
-        value = cells[column]
+    for column, value in cells:
         if not value:
             if column.name in REQUIRED:
                 raise ConfigError(f"{source}: line {line}: column {column.header} is empty")
@@ -242,7 +257,7 @@ def _row(cells: dict[_Column, str], columns: list[_Column], line: int, source: s
             value = f"{value} {column.unit}"
         given[column.name] = (column, value)
     hole = given["crank_hole"][1]
-    if not re.fullmatch(r"[0-9]+", hole) or int(hole) < 1:
+    if not _WHOLE.match(hole) or int(hole) < 1:
         raise ConfigError(f"{source}: line {line}: column crank_hole: {hole!r} is not a whole number from 1")
     designation = given["designation"][1]
     table["name"] = f"{designation}/{int(hole)}"

@@ -321,6 +321,8 @@ HOSTILE = [
     (HEADER + "\n" + GOOD + "\n# a comment\n" + GOOD.replace("C-80D", "c-80d"),
      "{file}: line 4: c-80d-133-48/1 is given twice (lines 2 and 4)"),
     (HEADER + '\n"C-80D-133-48,1,cw', "{file}: line 2: not valid CSV"),
+    (HEADER + '\n"C-80D\n-133-48"' + GOOD[12:], "{file}: line 2: not valid CSV: a quoted cell is not closed on its "
+                                                "line"),
 ]
 
 
