@@ -59,7 +59,7 @@ def reactions(unit: UnitConfig, card: CardSource, spm: float | None, steps: int,
     :data:`SUMMARY_STEPS`, refined between its points, whatever ``steps``.
     """
     masses = unit.mass_model(counterweight_count, counterweight_radius)
-    spatial = unit.geometry.spatial(unit.name)
+    spatial = unit.spatial()
     reading, runs = card_runs(unit, spatial.planar, card, spm, (steps, SUMMARY_STEPS), crank_motion)
     r, dense = (joint_reactions("rational", spatial, masses, run.crank_angle, run.crank_speed, run.crank_acceleration, run.load,
                                 weights=weights, inertia=inertia).reactions for run in runs)
@@ -115,7 +115,7 @@ def compare_redundancy(unit: UnitConfig, card: CardSource, spm: float | None, st
     errors = with_options(unit.deviations, given_deviations)
     pins = with_options(unit.joints, given_joints or {})
     masses = unit.mass_model()
-    ideal = unit.geometry.spatial(unit.name)
+    ideal = unit.spatial()
     actual = errors.apply(ideal)
     _, runs = card_runs(unit, ideal.planar, card, spm, (steps, REDUNDANCY_SUMMARY_STEPS), crank_motion)
 

@@ -78,7 +78,7 @@ def _torques(unit: UnitConfig, linkage, spatial_masses, masses, balance: Counter
            + parts.rotary_inertia)
     exact = None
     if spatial_masses is not None:
-        basis = _exact_basis(unit.geometry.spatial(unit.name), spatial_masses, run.crank_angle.tobytes())
+        basis = _exact_basis(unit.spatial(), spatial_masses, run.crank_angle.tobytes())
         exact = basis.torque(run.load, run.crank_speed, run.crank_acceleration)
     return _Torques(run, parts, api, exact, exact if method == "exact" else api)
 
@@ -137,10 +137,9 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     if method == "exact" and masses is None:
         raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
                             f"(--method api needs only [counterbalance])")
-    spatial = getattr(unit.geometry, "spatial", None)
-    if method == "exact" and spatial is None:
-        raise PumpjackError(f"--method exact: the exact method is the spatial kinetostatics of the class I six-link "
-                            f"mechanism; unit {unit.name} is {unit.geometry.unit_class}: use --method api")
+    spatial = hasattr(unit.geometry, "spatial")
+    if method == "exact" and masses is not None:
+        unit.spatial()          # refuses a kind without the spatial model
     balance, balance_known = unit.counterbalance_model()
     out, dense = (_torques(unit, linkage, masses if spatial else None, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle

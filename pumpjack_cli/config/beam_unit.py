@@ -260,6 +260,16 @@ class UnitConfig(Section):
 
         return Ratings(pick("gearbox_torque"), pick("structure_load"), pick("max_stroke"))
 
+    def spatial(self) -> SpatialLinkage:
+        """The spatial six-link model of the unit ([Spatial7SK12]): the class I unit's, with its pin
+        spacings; another kind says it has none."""
+        build = getattr(self.geometry, "spatial", None)
+        if build is None:
+            raise ConfigError(f"unit {self.name} is a {self.geometry.unit_class} unit; the spatial kinetostatics "
+                              f"(reactions, compare-redundancy, torque --method exact) models the class I "
+                              f"six-link mechanism of conventional units")
+        return build(self.name)
+
     def well_limits(self) -> WellLimits | None:
         """What the rods and the fluid column of the ``[well]`` can produce, for the plausibility of
         a card (:mod:`~pumpjack_cli.core.rods.plausibility`); None without a ``[well]``."""

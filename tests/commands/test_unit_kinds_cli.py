@@ -9,7 +9,7 @@ import sqlite3
 
 import pytest
 
-from helpers import sample_card
+from helpers import REPO_ROOT, sample_card
 
 KINDS = {"m-912d-365-168": "mark-ii", "air-balanced-example": "air-balanced"}
 
@@ -59,3 +59,19 @@ def test_units_lists_the_new_kinds(run_cli):
     code, out, err = run_cli("units", "-f", "json")
     assert code == 0
     assert set(KINDS) <= set(json.loads(out)["series"]["name"])
+
+
+def test_the_spatial_model_is_refused_for_a_class_three_unit_with_masses(run_cli, tmp_path):
+    """With link masses a Mark II runs the API torque with its inertia terms; the spatial
+    kinetostatics (reactions, torque --method exact) is the class I unit's and says so."""
+    conventional = (REPO_ROOT / "configs" / "c-114d-133-54.toml").read_text(encoding="utf-8")
+    masses = conventional[conventional.index("[masses.crank_arm]"):conventional.index("# ILLUSTRATIVE well")]
+    mark = (REPO_ROOT / "configs" / "m-912d-365-168.toml").read_text(encoding="utf-8")
+    unit = tmp_path / "mark.toml"
+    unit.write_text(mark.replace("[counterbalance]", masses + "\n[counterbalance]"), encoding="utf-8")
+    card = sample_card("m-912d-365-168")
+    code, out, err = run_cli("torque", unit, "--card", card, "-f", "json")
+    assert code == 0, err
+    for argv in (("reactions", unit, "--card", card), ("torque", unit, "--card", card, "--method", "exact")):
+        code, out, err = run_cli(*argv)
+        assert code == 2 and err.count("\n") == 1 and "is a mark-ii unit; the spatial kinetostatics" in err, err
