@@ -56,7 +56,7 @@ def row_class(row: CatalogueRow) -> str:
         raise ConfigError(f"{row.place}: column {column}: {exc}") from None
 
 
-def stroke_difference(row: CatalogueRow, stroke: float) -> float | None:
+def _stroke_difference(row: CatalogueRow, stroke: float) -> float | None:
     """The exact ``stroke`` [m] minus the row's published stroke [m]; None when none is published."""
     return None if row.stroke is None else stroke - row.stroke
 
@@ -73,10 +73,11 @@ def _offset_placed(row: CatalogueRow, kind: str) -> tuple[dict[str, Any], dict[s
     if "phase" not in balance:
         return row.table, row.columns
     if OFFSET_KEY in UNIT_CLASSES[kind].model().model_fields:
-        table = {**row.table, "geometry": {**row.table["geometry"], OFFSET_KEY: balance["phase"]}}
+        table = {key: value for key, value in row.table.items() if key != "counterbalance"}
+        table["geometry"] = {**row.table["geometry"], OFFSET_KEY: balance["phase"]}
         rest = {key: value for key, value in balance.items() if key != "phase"}
-        table.pop("counterbalance")
-        table.update({"counterbalance": rest} if rest else {})
+        if rest:
+            table["counterbalance"] = rest
         moved = {"counterbalance.phase": f"geometry.{OFFSET_KEY}"}
         return table, {moved.get(key, key): header for key, header in row.columns.items()}
     if "structural_unbalance" not in balance:
@@ -92,9 +93,9 @@ def catalogue_unit(row: CatalogueRow):
     table, columns = _offset_placed(row, row_class(row))
     unit = parse_unit(table, row.place, lambda loc: _columns(columns, loc))
     stroke = unit.geometry.mechanism().stroke
-    difference = stroke_difference(row, stroke)
+    difference = _stroke_difference(row, stroke)
     if _differs(difference):
-        column = row.columns.get("geometry.R", "R")
+        column = row.columns["geometry.R"]
         warn(f"{row.place}: {row.name}: the exact stroke {stroke / INCH:.2f} in ({stroke:.4f} m) differs from the "
              f"published {row.stroke / INCH:.2f} in by {difference / INCH:+.2f} in, more than "
              f"{STROKE_TOLERANCE / INCH:g} in: check the letters, {column} and the stroke")
@@ -112,7 +113,7 @@ def catalogue_listing(catalogue: Catalogue) -> list[dict[str, Any]]:
             stroke = UNIT_CLASSES[kind].stroke(row.table["geometry"])
         except ValueError as exc:
             raise ConfigError(f"{row.place}: {_columns(row.columns, ('geometry',))}: {exc}") from None
-        difference = stroke_difference(row, stroke)
+        difference = _stroke_difference(row, stroke)
         check = "not published" if difference is None else "differs" if _differs(difference) else "ok"
         listed.append({"name": row.name, "designation": row.designation, "crank_hole": str(row.hole),
                        "unit_class": kind, "stroke": stroke, "published_stroke": row.stroke,
