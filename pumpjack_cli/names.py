@@ -321,7 +321,8 @@ SECTIONS: tuple[Section, ...] = (
           "the well positive", "d"),
         E("air_exponent", "ratio", "polytropic exponent of the air cylinder's gas", "n"),
         E("counterbalance_effect", "force", "present counterbalance effect: the polished-rod load the "
-          "counterbalance holds with the cranks horizontal, B + M sin(90° − τ)/TF(90°)", "CBE"),
+          "structure and counterbalance hold with the cranks horizontal on the upstroke (90°, a Mark II's 270°): "
+          "−(T_s + T_c)/TF there; for class I crank counterweights B + M sin(90° − τ)/TF(90°)", "CBE"),
         E("structural_torque", "torque", "torque of the structural unbalance, −TF B", "−TF B"),
         E("counterbalance_torque", "torque", "torque of the counterbalance: crank counterweights −M sin(θ − τ) "
           "(class III: +M sin(θ + τ)), a beam counterweight or an air cylinder through TF", "T_c"),
@@ -342,7 +343,7 @@ SECTIONS: tuple[Section, ...] = (
         E("recommended_air_pressure", "pressure", "the air cylinder's gauge pressure at its stated position that "
           "meets the balance criterion (--balance)"),
         E("recommended_counterbalance_effect", "force", "counterbalance effect of the recommended counterbalance, "
-          "cranks horizontal"),
+          "cranks horizontal on the upstroke"),
         E("recommended_peak_net_torque", "torque", "largest |net gearbox torque| with the recommended "
           "counterbalance"),
         E("recommended_{stroke_part}_peak_torque", "torque", "largest net gearbox torque of the {stroke_part} with "

@@ -7,6 +7,7 @@ of the six-link mechanism ([Spatial7SK12]) when the pin spacings are given.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field
@@ -23,6 +24,10 @@ if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.masses import MassModel
     from ..core.beam.spatial import SpatialLinkage
     from .beam_unit import CounterbalanceConfig
+
+
+#: Largest difference between the crank offset of the counterweight blocks and the one stated [rad].
+OFFSET_TOLERANCE = math.radians(0.5)
 
 
 class ConventionalGeometry(BeamLetters):
@@ -79,6 +84,11 @@ def crank_counterweights(mechanism: Mechanism, given: CounterbalanceConfig | Non
         return (Counterbalance(given.structural_unbalance, given.moment or 0.0, tau, mechanism.lever_class == "III"),
                 given.moment is not None)
     if masses is not None:
-        return counterbalance_from_masses(mechanism, masses), True
+        found = counterbalance_from_masses(mechanism, masses)
+        if offset is not None and abs(math.remainder(found.offset - offset, 2.0 * math.pi)) > OFFSET_TOLERANCE:
+            raise ConfigError(f"[masses] counterweights put the crank offset at {math.degrees(found.offset):.4g} deg, "
+                              f"[geometry] crank_offset says {math.degrees(offset):.4g} deg: give the blocks' phase "
+                              f"that matches (docs/units.md)")
+        return found, True
     raise ConfigError("neither [counterbalance] nor [masses]: give at least [counterbalance] structural_unbalance "
                       "(and moment for the present net torque)")

@@ -1,9 +1,11 @@
 """Schema of the ``[geometry]`` of a reverse-mark (phased-crank) unit: a class I lever with phased counterweights.
 
-Conventional geometry with the rear working centre shifted (the crank shaft farther behind
-the centre bearing than the equalizer, I > C, for the longer upstroke), the counterweights
-offset from the crank pin by the crank offset angle tau, turning clockwise with the well to
-the right only ([LufkinRM]); the four-bar is :class:`~pumpjack_cli.core.beam.geometry.Linkage`.
+Conventional geometry with the rear working centre shifted forward ([LufkinRM]: the crank
+shaft towards the well from under the equalizer, I < C, which makes the clockwise upstroke
+take less than half a turn; ``docs/units.md`` says what could not be checked), the
+counterweights offset from the crank pin by the crank offset angle tau, turning clockwise
+with the well to the right only ([LufkinRM]); the four-bar is
+:class:`~pumpjack_cli.core.beam.geometry.Linkage`.
 """
 
 from __future__ import annotations
