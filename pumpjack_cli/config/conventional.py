@@ -16,7 +16,7 @@ from ..core.beam.geometry import Linkage, beam_linkage
 from ..errors import ConfigError
 from .geometry_names import ROTATION_SIGNS
 from .letters import BeamLetters
-from .quantities import Length, at_least
+from .quantities import Angle, Length, at_least
 
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.counterbalance import Counterbalance
@@ -65,6 +65,20 @@ class ConventionalGeometry(BeamLetters):
         from ..core.beam.spatial import SpatialLinkage
 
         return SpatialLinkage(self.mechanism(), self.crank_half_spacing, self.equalizer_half_length)
+
+
+class PhasedCrankGeometry(BeamLetters):
+    """The letters of a kind whose crank counterweights are phased by a crank offset (Mark II,
+    reverse-mark): ``crank_offset`` and the counterweights it places."""
+
+    crank_offset: Angle = Field(
+        ge=-1.0, le=1.0, description="tau: crank offset angle as catalogues print it: on class I units the lag of "
+        "the counterweights behind the crank pin in T = TF (W - B) - M sin(theta - tau), on class III units their "
+        "lead ahead of the crank's tail in T = TF (W - B) + M sin(theta + tau) (docs/units.md) [rad]")
+
+    def counterbalance(self, given: CounterbalanceConfig | None, masses: MassModel | None) -> tuple[Counterbalance, bool]:
+        """Crank counterweights with the crank offset (:func:`crank_counterweights`)."""
+        return crank_counterweights(self.mechanism(), given, masses, self.crank_offset)
 
 
 def crank_counterweights(mechanism: Mechanism, given: CounterbalanceConfig | None, masses: MassModel | None,
