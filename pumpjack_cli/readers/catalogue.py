@@ -57,6 +57,19 @@ COLUMNS: dict[str, Field] = {
     "stroke": Field("length", None, "published polished-rod stroke of the hole"),
     "B": Field("force", ("counterbalance", "structural_unbalance"), "structural unbalance"),
     "tau": Field("angle", ("counterbalance", "phase"), "crank offset angle (a kind may keep it in [geometry])"),
+    "beam_counterweight": Field("force", ("geometry", "beam_counterweight"), "beam-balanced: the beam counterweight"),
+    "beam_counterweight_arm": Field("length", ("geometry", "beam_counterweight_arm"),
+                                    "beam-balanced: the counterweight's distance behind the centre bearing"),
+    "air_piston_area": Field("area", ("geometry", "air_cylinder", "piston_area"), "air-balanced: piston area"),
+    "air_piston_diameter": Field("length", ("geometry", "air_cylinder", "piston_diameter"),
+                                 "air-balanced: piston diameter"),
+    "air_bottom_volume": Field("volume", ("geometry", "air_cylinder", "bottom_volume"),
+                               "air-balanced: gas volume at the bottom of the stroke"),
+    "air_lever": Field("length", ("geometry", "air_cylinder", "lever"),
+                       "air-balanced: the piston rod's pin on the beam, from the centre bearing"),
+    "air_pressure": Field("pressure", ("geometry", "air_cylinder", "pressure"), "air-balanced: gauge pressure"),
+    "air_pressure_position": Field("length", ("geometry", "air_cylinder", "pressure_position"),
+                                   "air-balanced: polished-rod position of the stated pressure"),
     "gearbox_torque": Field("torque", ("rating", "gearbox_torque"), "gearbox torque rating"),
     "structure_load": Field("force", ("rating", "structure_load"), "structure load rating"),
     "max_stroke": Field("length", ("rating", "max_stroke"), "maximum stroke rating"),
@@ -67,7 +80,8 @@ REQUIRED = ("designation", "crank_hole", "rotation", "A", "C", "I", "P", "R")
 HEIGHTS = (("K",), ("H", "G"))
 _BY_FOLDED = {name.casefold(): name for name in COLUMNS}
 #: A unit to show in a header that lacks one, per dimension.
-_EXAMPLE_UNITS = {"length": "in", "force": "lbf", "angle": "deg", "torque": "lbf_in"}
+_EXAMPLE_UNITS = {"length": "in", "force": "lbf", "angle": "deg", "torque": "lbf_in", "area": "in2",
+                  "volume": "ft3", "pressure": "psi"}
 _NUMBER = re.compile(r"^[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
 _WHOLE = re.compile(r"^[0-9]+$")
 _HOLE_SPEC = re.compile(r"^(?P<designation>[^/\\]+)/(?P<hole>[0-9]+)$")

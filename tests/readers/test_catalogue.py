@@ -403,3 +403,24 @@ def test_a_kind_the_registry_lacks_is_refused_by_the_listing_and_the_schema(tmp_
     for refuse in (lambda: catalogue_unit(catalogue.rows[0]), lambda: catalogue_listing(catalogue)):
         with pytest.raises(ConfigError, match=f"^{catalogue.source}: line 2: column {column}: {message}"):
             refuse()
+
+
+def test_air_balanced_and_beam_balanced_rows_carry_their_counterbalance(tmp_path):
+    """The kinds that balance otherwise than with crank counterweights take their keys from
+    their own columns: the air cylinder's and the beam counterweight's."""
+    from pumpjack_cli.core.beam.air_balanced import AirCylinder
+    from pumpjack_cli.core.beam.beam_balanced import BeamCounterweight
+
+    header = (HEADER + ",air_piston_diameter_in,air_bottom_volume_ft3,air_lever_in,air_pressure_psi,"
+              "beam_counterweight_lbf,beam_counterweight_arm_in")
+    path = field(tmp_path, "A-228D-213-86,1,ccw,120,70,70,100,140,45,24.5,,-500,,12,7,50,230,,",
+                 "B-80D-133-48,1,cw,64,64,64,74.5,116,41,24,,440,,,,,,6000,60", header=header)
+    air, beam = (catalogue_unit(row).counterbalance_model() for row in read_catalogue(path).rows)
+    cylinder, known = air
+    assert isinstance(cylinder, AirCylinder) and known
+    assert cylinder.piston_area == pytest.approx(math.pi * (12 * INCH) ** 2 / 4, rel=1e-12)
+    assert cylinder.bottom_volume == pytest.approx(7 * (12 * INCH) ** 3, rel=1e-12)
+    assert cylinder.lever == pytest.approx(50 * INCH, rel=1e-12)
+    weight, known = beam
+    assert isinstance(weight, BeamCounterweight) and known
+    assert weight.arm == pytest.approx(-60 * INCH, rel=1e-12)
