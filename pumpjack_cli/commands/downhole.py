@@ -15,6 +15,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
 
@@ -48,6 +49,7 @@ def downhole(
     friction_coefficient: FrictionCoefficientOption = None,
     guide_limit: GuideLimitOption = None,
     profile: ProfileOption = False,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -60,6 +62,6 @@ def downhole(
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
     options = deviation(survey, friction_coefficient, guide_limit, profile)
-    result = run(load_unit(unit), source, spm, crank_motion.value, None if method is None else method.value,
+    result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, None if method is None else method.value,
                  damping, samples, service_factor, options)
     sink.emit(result, profile_shown(result.columns) if profile else SHOWN)

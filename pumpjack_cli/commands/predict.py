@@ -15,6 +15,7 @@ from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFa
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
 from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
+from ..options import CatalogueOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -52,6 +53,7 @@ def predict(
     friction_coefficient: FrictionCoefficientOption = None,
     guide_limit: GuideLimitOption = None,
     profile: ProfileOption = False,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -72,7 +74,7 @@ def predict(
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
     )
-    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor,
+    result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor,
                  deviation=deviation(survey, friction_coefficient, guide_limit, profile))
     if profile:
         sink.emit(result, profile_shown(result.columns))
