@@ -405,8 +405,8 @@ SECTIONS: tuple[Section, ...] = (
         E("chamber_pressure", "pressure", "pressure in the pump chamber below the plunger", "p_c"),
         E("static_stretch", "length", "F_o times the compliance of rods and (unanchored) tubing"),
         E("damping_dissipation", "energy", "work of the rods' damping per cycle, ∫∫ c m u_t² dx dt"),
-        E("rod_energy_residual", "ratio", "(surface card work − pump card work − damping dissipation) / surface "
-          "card work"),
+        E("rod_energy_residual", "ratio", "(surface card work − pump card work − damping dissipation − drag work "
+          "in a deviated well) / surface card work"),
         E("machine_energy_residual", "ratio", "(motor work − polished-rod work) / motor work over a cycle of the "
           "coupled solution"),
         E("cycles", "count", "cycles marched to the periodic state"),
