@@ -180,6 +180,45 @@ def parse_quantity(value: object, dimension: str, require_unit: bool = False) ->
     return number * units[unit]
 
 
+#: Significant digits of a converted output value: the most a float64 keeps through a decimal
+#: round trip (DBL_DIG of C's float.h; IEEE 754 binary64 has a 53-bit significand, 15.95 digits).
+SIGNIFICANT_DIGITS = 15
+
+
+def significant(values, digits: int = SIGNIFICANT_DIGITS):
+    """A float or a numpy array rounded to ``digits`` significant digits (zeros, non-finite
+    values and magnitudes whose power of ten is not exact in binary are left as they are).
+
+    The array is rounded as the float is, n = round(x 10^k) and n / 10^k with 10^k exact
+    (|k| <= 22), so that the quotient is the float nearest to the decimal.
+
+    >>> significant(699999.9999999999), significant(0.30000000000000004), significant(1.0000000000000002e-05)
+    (700000.0, 0.3, 1e-05)
+    """
+    if isinstance(values, (float, int)):
+        value = float(values)
+        if value == 0.0 or not math.isfinite(value):
+            return value
+        return float(f"{value:.{digits}g}")
+    import numpy as np   # an array: numpy is already loaded
+
+    x = np.asarray(values, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        magnitude = np.abs(x)
+        usable = np.isfinite(x) & (magnitude > 0)
+        power = np.zeros(x.shape, dtype=int)
+        power[usable] = (digits - 1) - np.floor(np.log10(magnitude[usable])).astype(int)
+        usable &= np.abs(power) <= 22
+        out = x.copy()
+        up = usable & (power >= 0)
+        scale = 10.0 ** np.abs(power[up])
+        out[up] = np.round(x[up] * scale) / scale
+        down = usable & (power < 0)
+        scale = 10.0 ** np.abs(power[down])
+        out[down] = np.round(x[down] / scale) * scale
+    return out
+
+
 @dataclass(frozen=True)
 class OutputUnit:
     """How one quantity is shown: a label, a column-name suffix, a scale from SI and,
@@ -196,14 +235,26 @@ class OutputUnit:
 
         Rounding (angles) is round-half-even at ``decimals``, computed as numpy's
         ``around`` does (scale, round to integer, unscale) for floats and arrays alike.
+        A value that is scaled (any other unit than the SI one it is computed in) is kept
+        to :data:`SIGNIFICANT_DIGITS` significant digits, so that the last-bit noise of
+        the conversion is not shown (700000 lbf·in read from a unit file comes back as
+        700000.0, not 699999.9999999999); a value shown in its SI unit is unchanged. A
+        negative zero comes back as 0.0.
+
+        >>> torque = OUTPUT_QUANTITIES["torque"]["field"]
+        >>> torque.convert(700000 * POUND_FORCE * INCH), OUTPUT_QUANTITIES["force"]["si"].convert(-0.0)
+        (700000.0, 0.0)
         """
         shown = si_values * self.scale
-        if self.decimals is None:
-            return shown
-        factor = 10.0**self.decimals
-        if isinstance(shown, float):
-            return round(shown * factor) / factor
-        return shown.round(self.decimals)
+        if self.decimals is not None:
+            factor = 10.0**self.decimals
+            if isinstance(shown, float):
+                shown = round(shown * factor) / factor
+            else:
+                shown = shown.round(self.decimals)
+        elif self.scale != 1.0:
+            shown = significant(shown)
+        return shown + 0.0   # -0.0 + 0.0 is +0.0 (IEEE 754, round to nearest)
 
 
 _DEGREES = OutputUnit("deg", "deg", 180 / math.pi, decimals=9)
