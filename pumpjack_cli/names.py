@@ -346,10 +346,26 @@ SECTIONS: tuple[Section, ...] = (
           "recommended moment"),
         E("card_work", "energy", "work on the rods per cycle (the card's area)"),
         E("polished_rod_power", "power", "polished-rod power: card work × cycles per second", "PRHP"),
-        E("rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time", "T_rms"),
-        E("cyclic_load_factor", "ratio", "T_rms / T_mean ([DurhamLockard1988])", "CLF"),
+        E("{stroke_part}_peak_torque", "torque", "largest net gearbox torque of the {stroke_part}, present "
+          "counterbalance"),
+        E("rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time, present counterbalance",
+          "T_rms"),
+        E("cyclic_load_factor", "ratio", "T_rms / T_mean, present counterbalance ([DurhamLockard1988])", "CLF"),
         E("rms_motor_power", "power", "motor power for the RMS net torque at the mean speed, over the drive "
-          "efficiency ([DurhamLockard1988])"),
+          "efficiency, present counterbalance ([DurhamLockard1988])"),
+        E("nema_motor_size", "power", "the smallest standard NEMA motor rating that covers rms_motor_power "
+          "([NEMAMG1])"),
+        E("motor_energy", "daily_energy", "energy the motor gives a day (over the motor efficiency: takes), present "
+          "counterbalance: the work the gearbox does while it drives the unit, nothing credited back while the "
+          "unit drives it"),
+        E("energy_cost", "daily_cost", "cost of motor_energy a day at --electricity-price"),
+        E("recommended_rms_net_torque", "torque", "RMS (equivalent) net gearbox torque, recommended counterbalance"),
+        E("recommended_cyclic_load_factor", "ratio", "T_rms / T_mean, recommended counterbalance"),
+        E("recommended_rms_motor_power", "power", "motor power by the RMS rule, recommended counterbalance"),
+        E("recommended_nema_motor_size", "power", "standard NEMA motor rating that covers "
+          "recommended_rms_motor_power"),
+        E("recommended_motor_energy", "daily_energy", "motor energy a day with the recommended counterbalance"),
+        E("recommended_energy_cost", "daily_cost", "cost of recommended_motor_energy a day at --electricity-price"),
         E("gearbox_rating", "torque", "gearbox peak torque rating (designation or [rating])"),
         E("structure_rating", "force", "structure (polished-rod load) rating (designation or [rating])"),
         E("max_stroke", "length", "maximum stroke of the unit (designation or [rating])"),

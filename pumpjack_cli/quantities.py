@@ -27,6 +27,9 @@ KILOGRAM_FORCE = 9.80665
 HORSEPOWER = 745.69987158227022
 #: Oil barrel, 42 US gallons of 231 in^3 [NIST811].
 BARREL = 42 * 231 * INCH**3
+#: Kilowatt hour [J] and day [s] ([NIST811]).
+KWH = 3.6e6
+DAY = 86400.0
 
 #: Accepted input units for each dimension: normalised unit text -> factor to SI.
 INPUT_UNITS: dict[str, dict[str, float]] = {
@@ -287,6 +290,10 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "count": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
     "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
     "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
+    # energy per day (SI: J a day) in kWh a day in both systems, as electricity is billed
+    "daily_energy": {"si": OutputUnit("kWh/d", "kwh_d", 1 / KWH), "field": OutputUnit("kWh/d", "kwh_d", 1 / KWH)},
+    # money per day in the currency of the price given (--electricity-price)
+    "daily_cost": {"si": OutputUnit("money/d", "per_day", 1.0), "field": OutputUnit("money/d", "per_day", 1.0)},
     "rotational_stiffness": {
         "si": OutputUnit("N·m/rad", "n_m_rad", 1.0),
         "field": OutputUnit("lbf·in/rad", "lbf_in_rad", 1 / (POUND_FORCE * INCH)),
