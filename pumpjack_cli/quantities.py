@@ -103,7 +103,7 @@ _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "m
 SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "moment_of_inertia": "kg·m²",
              "rotational_speed": "rad/s", "angle": "rad", "rotational_stiffness": "N·m/rad", "power": "W",
              "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
-             "pressure": "Pa", "weight_per_length": "N/m"}
+             "pressure": "Pa", "weight_per_length": "N/m", "volume": "m³"}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 
