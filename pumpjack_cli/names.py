@@ -498,6 +498,28 @@ def written_names() -> dict[str, tuple[str, str, str]]:
             for name, (quantity, _) in catalogue().items() for system in UNIT_SYSTEMS}
 
 
+#: Abbreviations and symbols a name spells in lower case, as words write them.
+_SPELLED = {"rms": "RMS", "api": "API", "cbe": "CBE", "nema": "NEMA", "spm": "SPM", "m05": "M_R05", "m01": "M_R01",
+            "m12": "M_R12", "m13": "M_R13", "m24": "M_R24", "m34": "M_R34", "omega1": "ω1", "two": "two-",
+            "series4": "series to the 4th harmonic", "series6": "series to the 6th harmonic"}
+
+
+def words(name: str) -> str:
+    """An output name in words for a legend or an axis: underscores as spaces, symbols as
+    written (R12, RMS, M_R05).
+
+    >>> words("r12_y_rational"), words("recommended_net_torque"), words("velocity_two_term")
+    ('R12 y rational', 'recommended net torque', 'velocity two-term')
+    """
+    parts = []
+    for part in name.split("_"):
+        if re.fullmatch(r"r\d\d", part):
+            parts.append(part.upper())
+        else:
+            parts.append(_SPELLED.get(part, part))
+    return " ".join(parts).replace("two- term", "two-term")
+
+
 def _cell(text: str) -> str:
     return text.replace("|", "\\|")
 

@@ -68,14 +68,32 @@ class Scalar:
 @dataclass(frozen=True)
 class Curve:
     """A further curve of a plot panel: two column names (x, y), or explicit SI values of
-    one ``quantity`` on both axes (e.g. points of a Goodman diagram); ``style`` is a
-    matplotlib format ("-", "--", "o")."""
+    one ``quantity`` on both axes (e.g. points of a Goodman diagram), or of ``quantity`` on
+    x and ``y_quantity`` on y; NaN values break the line. ``style`` is a matplotlib format
+    ("-", "--", "o"), ``color`` a matplotlib colour (None: the next of the cycle). The
+    ``label`` may hold ``{}`` placeholders, one per ``label_values`` pair (quantity, SI
+    value), which the renderer fills in the plot's unit system (a strength on psi axes is
+    written in psi)."""
 
     label: str
     x: str | tuple[float, ...]
     y: str | tuple[float, ...]
     quantity: str | None = None
     style: str = "-"
+    y_quantity: str | None = None
+    color: str | None = None
+    label_values: tuple[tuple[str, float], ...] = ()
+
+
+@dataclass(frozen=True)
+class Mark:
+    """A vertical line on every plot panel whose x axis is the column ``column``: ``value``
+    (SI) and its ``label`` (the dead positions: crank angles, or the ends of the stroke on
+    a card)."""
+
+    label: str
+    column: str
+    value: float
 
 
 @dataclass(frozen=True)
@@ -83,9 +101,10 @@ class Panel:
     """One plot panel: solid curves and dashed curves (column names) against the column
     ``x`` (default: the first column), and horizontal lines at ``levels`` ((label, SI
     value) pairs in the quantity of the first solid curve, e.g. a rating). With ``clip``
-    the vertical range follows the solid curves (half their range beyond each side), so
-    that a dashed bound that grows without limit does not hide them. ``curves`` are drawn
-    too; a panel of curves only names its x axis ``x_label``."""
+    the vertical range follows the solid curves and the nearest approach of the others,
+    so that a bound that grows without limit does not hide them. ``curves`` are drawn
+    too; a panel of curves only names its x axis ``x_label``. Legends name the columns in
+    words (:func:`~pumpjack_cli.names.words`) unless ``labels`` give (column, label) pairs."""
 
     title: str
     solid: tuple[str, ...]
@@ -95,16 +114,19 @@ class Panel:
     clip: bool = False
     curves: tuple[Curve, ...] = ()
     x_label: str | None = None
+    labels: tuple[tuple[str, str], ...] = ()
 
 
 @dataclass(frozen=True)
 class Result:
-    """Everything a command outputs: a title, summary values, columns and plot panels, SI."""
+    """Everything a command outputs: a title, summary values, columns and plot panels, SI;
+    ``marks``, the vertical lines of its plots (the dead positions)."""
 
     title: str
     summary: tuple[Scalar, ...]
     columns: tuple[Column, ...]
     panels: tuple[Panel, ...] = ()
+    marks: tuple[Mark, ...] = ()
 
     def column(self, name: str) -> Column:
         """The column called ``name``."""

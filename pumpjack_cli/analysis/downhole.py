@@ -31,6 +31,7 @@ from ..core.rods.downhole import (
 from ..errors import DownholeError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
+from .inputs import dead_position_marks
 from .rods import goodman_panel, taper_summary
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
@@ -114,4 +115,4 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
         goodman_panel(string, loads, service_factor),
     )
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
-    return Result(title, tuple(summary), columns, panels)
+    return Result(title, tuple(summary), columns, panels, dead_position_marks(linkage))

@@ -26,7 +26,7 @@ from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
-from .inputs import crank_columns, extreme_scalars
+from .inputs import crank_columns, dead_position_marks, extreme_scalars, motor_levels
 from .rods import goodman_panel, taper_summary
 from .torque import SUMMARY_STEPS, card_torque
 
@@ -286,9 +286,11 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
+        panels.insert(2, Panel("motor torque", ("motor_torque",), x="crank_angle",
+                               levels=motor_levels(unit.machine(elastic_rods=True).motor)))
     title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
              f"damping {found.damping:.3g}")
-    return Result(title, tuple(summary), tuple(columns), tuple(panels))
+    return Result(title, tuple(summary), tuple(columns), tuple(panels), dead_position_marks(unit.geometry.mechanism()))
 
 
 def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None) -> Result:
@@ -312,8 +314,9 @@ def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None) -> Resu
         Column("gravity_torque", both.gravity_torque),
         Column("net_torque", both.net_torque),
     )
-    panels = (Panel("crank speed omega1", ("crank_speed",)), Panel("motor torque", ("motor_torque",)),
+    panels = (Panel("crank speed ω1", ("crank_speed",)),
+              Panel("motor torque", ("motor_torque",), levels=motor_levels(unit.machine(elastic_rods=True).motor)),
               Panel("polished-rod load", ("rod_load",)))
     return Result(f"{unit.name}: dynamics, elastic rods (wave model), damping {found.damping:.3g}",
-                  tuple(summary), columns, panels)
+                  tuple(summary), columns, panels, dead_position_marks(unit.geometry.mechanism()))
 

@@ -28,6 +28,7 @@ from ..core.beam.counterbalance import (
     CounterbalanceModel,
     counterbalance_effect,
     counterweight_placement,
+    upstroke_mask,
 )
 from ..core.beam.loading import card_work, cyclic_load_factor, driving_work, stroke_peaks
 from ..core.beam.torque import (
@@ -45,9 +46,9 @@ from ..core.motors import nema_motor_size
 from ..core.sampling import extremes, peak
 from ..errors import PumpjackError, warn
 from ..quantities import DAY, HORSEPOWER, INCH
-from ..results import Column, Panel, Result, Scalar
+from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import crank_columns, extreme_scalars
+from .inputs import crank_columns, dead_position_marks, extreme_scalars
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -110,9 +111,10 @@ def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, cr
     energy = dataclasses.replace(energy or Energy(), drive_efficiency=drive_efficiency)
     reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), crank_motion)
     found = card_torque(unit, reading.card, runs, method, criterion, energy=energy)
-    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank_motion, "
+    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank motion, "
              f"balance {criterion}")
-    return Result(title, found.card_summary + found.summary, found.columns, found.panels)
+    return Result(title, found.card_summary + found.summary, found.columns, found.panels,
+                  dead_position_marks(unit.geometry.mechanism()))
 
 
 def check_options(method: str, criterion: str) -> None:
@@ -220,7 +222,8 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
                     Scalar("min_rod_load_crank_angle", float(card.crank_angle[low])),
                     Scalar("card_work", work),
                     Scalar("polished_rod_power", work * frequency))
-    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(columns, levels, balance_known), headline,
+    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(linkage, out.run, columns, levels,
+                                                                            balance_known), headline,
                       peak(theta, base).value, levels)
 
 
@@ -316,14 +319,31 @@ def _rating_levels(rated: Ratings) -> tuple[tuple[str, float], ...]:
                                                     ("", -rated.gearbox_torque))
 
 
-def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], balance_known: bool) -> tuple[Panel, ...]:
+def _permissible_branches(linkage, run: CardRun, columns: list[Column]) -> tuple[Curve, ...]:
+    """The permissible load diagram ([GaultSWPSC]) against the polished-rod position, in its
+    upstroke and downstroke branches (NaN off the branch), each with its upper and lower bound."""
+    by_name = {c.name: c.values for c in columns}
+    position = linkage.motion(run.crank_angle).rod_position
+    up = upstroke_mask(linkage, run.crank_angle)
+    curves = []
+    for stroke, mask, colour in (("upstroke", up, "tab:green"), ("downstroke", ~up, "tab:orange")):
+        x = tuple(np.where(mask, position, np.nan).tolist())
+        for bound, style, words in (("max", "--", "largest"), ("min", ":", "smallest")):
+            y = tuple(np.where(mask, by_name[f"permissible_load_{bound}"], np.nan).tolist())
+            curves.append(Curve(f"{stroke}: {words} permissible load", x, y, quantity="length", y_quantity="force",
+                                style=style, color=colour))
+    return tuple(curves)
+
+
+def _panels(linkage, run: CardRun, columns: list[Column], levels: tuple[tuple[str, float], ...],
+            balance_known: bool) -> tuple[Panel, ...]:
     names = {c.name for c in columns}
     panels = []
     if "permissible_load_min" in names:
-        panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),
-                            x="position", clip=True))
+        panels.append(Panel("card and permissible loads", ("rod_load",), x="position", clip=True,
+                            curves=_permissible_branches(linkage, run, columns), labels=(("rod_load", "card"),)))
     else:
-        panels.append(Panel("card", ("rod_load",), x="position"))
+        panels.append(Panel("card", ("rod_load",), x="position", labels=(("rod_load", "card"),)))
     panels.append(Panel("net torque", ("net_torque",) if balance_known else ("recommended_net_torque",),
                         ("recommended_net_torque",) if balance_known else (), levels=levels))
     panels.append(Panel("torque components", ("rod_load_torque", "structural_torque", "articulating_inertia_torque",
