@@ -189,11 +189,11 @@ SIGNIFICANT_DIGITS = 15
 
 
 def significant(values, digits: int = SIGNIFICANT_DIGITS):
-    """A float or a numpy array rounded to ``digits`` significant digits (zeros, non-finite
-    values and magnitudes whose power of ten is not exact in binary are left as they are).
+    """A float or a numpy array rounded to ``digits`` significant digits, as ``f"{x:.15g}"``
+    rounds (zeros and non-finite values are left as they are).
 
-    The array is rounded as the float is, n = round(x 10^k) and n / 10^k with 10^k exact
-    (|k| <= 22), so that the quotient is the float nearest to the decimal.
+    An array is rounded without leaving numpy where 10^k is exact (k <= 22): n = round(x 10^k)
+    of the exact product, and n / 10^k, the float nearest to the decimal.
 
     >>> significant(699999.9999999999), significant(0.30000000000000004), significant(1.0000000000000002e-05)
     (700000.0, 0.3, 1e-05)
@@ -211,15 +211,37 @@ def significant(values, digits: int = SIGNIFICANT_DIGITS):
         usable = np.isfinite(x) & (magnitude > 0)
         power = np.zeros(x.shape, dtype=int)
         power[usable] = (digits - 1) - np.floor(np.log10(magnitude[usable])).astype(int)
-        usable &= np.abs(power) <= 22
+        exact = usable & (power >= 0) & (power <= 22)   # 10^k exact: the vectorised rounding
         out = x.copy()
-        up = usable & (power >= 0)
-        scale = 10.0 ** np.abs(power[up])
-        out[up] = np.round(x[up] * scale) / scale
-        down = usable & (power < 0)
-        scale = 10.0 ** np.abs(power[down])
-        out[down] = np.round(x[down] / scale) * scale
+        scale = 10.0 ** power[exact]
+        out[exact] = _round_product(x[exact], scale) / scale
+    for i in np.flatnonzero(usable & ~exact):   # below 1e-8 or above 1e15: rare, one at a time
+        out.flat[i] = float(f"{float(x.flat[i]):.{digits}g}")
     return out
+
+
+def _round_product(x, scale):
+    """round(x scale) of the exact product (not of its float): the product split into the float
+    p and its error e (Dekker's two-product, by Veltkamp's splitting), so that a product within
+    an ulp of a half is rounded as the exact value is, half to even. Arrays."""
+    import numpy as np
+
+    def split(a):
+        c = 134217729.0 * a   # 2^27 + 1
+        high = c - (c - a)
+        return high, a - high
+
+    p = x * scale
+    xh, xl = split(x)
+    sh, sl = split(scale)
+    e = ((xh * sh - p) + xh * sl + xl * sh) + xl * sl
+    n = np.round(p)
+    rest = (p - n) + e   # exact: p - n is exact for |p| < 2^52
+    n = np.where(rest > 0.5, n + 1.0, np.where(rest < -0.5, n - 1.0, n))
+    tie = rest == 0.5
+    n = np.where(tie & (np.mod(n, 2.0) == 1.0), n + 1.0, n)
+    tie = rest == -0.5
+    return np.where(tie & (np.mod(n, 2.0) == 1.0), n - 1.0, n)
 
 
 @dataclass(frozen=True)
@@ -290,6 +312,9 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     "count": {"si": OutputUnit("1", "", 1.0), "field": OutputUnit("1", "", 1.0)},
     "power": {"si": OutputUnit("W", "w", 1.0), "field": OutputUnit("hp", "hp", 1 / HORSEPOWER)},
     "energy": {"si": OutputUnit("J", "j", 1.0), "field": OutputUnit("ft·lbf", "ft_lbf", 1 / (POUND_FORCE * FOOT))},
+    # a depth in a well: m, or feet as oilfield documents write it (a length on a unit is in inches)
+    "depth": {"si": OutputUnit("m", "m", 1.0), "field": OutputUnit("ft", "ft", 1 / FOOT)},
+    "density": {"si": OutputUnit("kg/m³", "kg_m3", 1.0), "field": OutputUnit("lb/ft³", "lb_ft3", FOOT**3 / POUND_MASS)},
     # energy per day (SI: J a day) in kWh a day in both systems, as electricity is billed
     "daily_energy": {"si": OutputUnit("kWh/d", "kwh_d", 1 / KWH), "field": OutputUnit("kWh/d", "kwh_d", 1 / KWH)},
     # money per day in the currency of the price given (--electricity-price)

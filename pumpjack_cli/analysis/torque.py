@@ -258,7 +258,7 @@ def _loading(name: str, rated: Ratings, peak_load: float, stroke: float, current
              theta) -> list[Scalar]:
     """Loading against the ratings that are known (fractions, shown in %); a warning when the
     geometry's exact stroke exceeds the rated maximum stroke."""
-    found = []
+    found = [Scalar("stroke", stroke)]
     if rated.gearbox_torque is not None:
         found.append(Scalar("gearbox_rating", rated.gearbox_torque))
         if current is not None:
