@@ -16,13 +16,13 @@ from __future__ import annotations
 
 import datetime
 import hashlib
-import shlex
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .. import __version__
 from ..errors import PumpjackError, collected_warnings, warn
+from ..quantities import KWH
 from ..results import Figure, Note, Page, Quantities, Result, Section, SideBySide, Table, Values
 from .card_runs import CardSource
 
@@ -51,7 +51,7 @@ class ReportOptions:
     samples: int | None = None
     service_factor: float = 1.0
     energy: object | None = None
-    command: tuple[str, ...] = ()
+    system: str = "si"
 
 
 def sha256(path: Path) -> str:
@@ -238,10 +238,32 @@ def _production_section(downhole_result: Result | None) -> Section:
     return Section("production", dict(SECTIONS)["production"], tuple(blocks))
 
 
+def _options_text(card: CardSource, options: ReportOptions, system: str) -> str:
+    """The options that made the numbers, in words (the defaults said as such)."""
+    from .torque import Energy
+
+    energy = options.energy or Energy()
+    price = "none" if energy.price is None else f"{energy.price * KWH:g} per kWh"
+    parts = [f"units {system}", f"torque method {options.method}", f"balance {options.balance}",
+             f"crank motion {options.crank_motion}",
+             f"spm {'from the card' if options.spm is None else format(options.spm, 'g')}",
+             f"steps {options.steps}", f"downhole method {options.downhole_method}",
+             f"damping {'from the unit file or the energy balance' if options.damping is None else format(options.damping, 'g')}",
+             f"samples {'the default' if options.samples is None else options.samples}",
+             f"service factor {options.service_factor:g}", f"drive efficiency {energy.drive_efficiency:g}",
+             f"motor efficiency {energy.motor_efficiency:g}", f"electricity price {price}",
+             f"card stroke {card.stroke}"]
+    parts += [f"card {name} {value}" for name, value in (("units", card.units), ("format", card.format),
+                                                         ("points", card.points)) if value is not None]
+    if card.columns:
+        parts.append("card columns " + ",".join(f"{k}={v}" for k, v in card.columns.items()))
+    return "; ".join(parts)
+
+
 def _provenance_section(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportOptions) -> Section:
     now = datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat()
     rows = (("tool", f"pumpjack {__version__}"), ("unit file", str(unit_file)), ("unit file SHA-256", sha256(unit_file)),
             ("card file", str(card.path)), ("card file SHA-256", sha256(card.path)),
-            ("command", shlex.join(("pumpjack", *options.command))), ("generated (UTC)", now))
+            ("options", _options_text(card, options, options.system)), ("generated (UTC)", now))
     return Section("provenance", dict(SECTIONS)["provenance"],
                    (Table((("item", "text"), ("value", "text")), rows),))

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import sys
 from typing import Annotated
 
 import typer
@@ -57,6 +56,6 @@ def report(
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
     energy = Energy(drive_efficiency, motor_efficiency, None if electricity_price is None else electricity_price / KWH)
     options = ReportOptions(spm, crank_motion.value, method.value, balance.value, damping, downhole_method.value, steps,
-                            samples, service_factor, energy, tuple(sys.argv[1:]))
+                            samples, service_factor, energy, units.value)
     page, _ = run(load_unit(unit), unit_path(unit), source, options)
     sink.emit(page)
