@@ -338,6 +338,7 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("torque.md", "| claim | check | test |"): "test list",
     ("validation.md", None): "what each test checks against which source",
     ("README.md", "| bundled unit | source |"): "unit names and sources",
+    ("report.md", "| section | what it shows | from |"): "the page's layout",
 }
 
 
