@@ -63,6 +63,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
     "end": {"top": "top", "bottom": "bottom"},
     "stroke_part": {"upstroke": "upstroke", "downstroke": "downstroke"},
     "analysis": {"torque": "torque", "downhole": "downhole"},
+    "balance": {"": "present", "recommended_": "recommended"},
 }
 _PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
@@ -348,24 +349,19 @@ SECTIONS: tuple[Section, ...] = (
         E("polished_rod_power", "power", "polished-rod power: card work × cycles per second", "PRHP"),
         E("{stroke_part}_peak_torque", "torque", "largest net gearbox torque of the {stroke_part}, present "
           "counterbalance"),
-        E("rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time, present counterbalance",
-          "T_rms"),
-        E("cyclic_load_factor", "ratio", "T_rms / T_mean, present counterbalance ([DurhamLockard1988])", "CLF"),
-        E("rms_motor_power", "power", "motor power for the RMS net torque at the mean speed, over the drive "
-          "efficiency, present counterbalance ([DurhamLockard1988])"),
-        E("nema_motor_size", "power", "the smallest standard NEMA motor rating that covers rms_motor_power "
-          "([NEMAMG1])"),
-        E("motor_energy", "daily_energy", "energy the motor gives a day (over the motor efficiency: takes), present "
-          "counterbalance: the work the gearbox does while it drives the unit, nothing credited back while the "
-          "unit drives it"),
-        E("energy_cost", "daily_cost", "cost of motor_energy a day at --electricity-price"),
-        E("recommended_rms_net_torque", "torque", "RMS (equivalent) net gearbox torque, recommended counterbalance"),
-        E("recommended_cyclic_load_factor", "ratio", "T_rms / T_mean, recommended counterbalance"),
-        E("recommended_rms_motor_power", "power", "motor power by the RMS rule, recommended counterbalance"),
-        E("recommended_nema_motor_size", "power", "standard NEMA motor rating that covers "
-          "recommended_rms_motor_power"),
-        E("recommended_motor_energy", "daily_energy", "motor energy a day with the recommended counterbalance"),
-        E("recommended_energy_cost", "daily_cost", "cost of recommended_motor_energy a day at --electricity-price"),
+        E("{balance}rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time, {balance} "
+          "counterbalance", "T_rms"),
+        E("{balance}cyclic_load_factor", "ratio", "T_rms / T_mean, {balance} counterbalance ([DurhamLockard1988])",
+          "CLF"),
+        E("{balance}rms_motor_power", "power", "motor power for the RMS net torque at the mean speed, over the drive "
+          "efficiency, {balance} counterbalance ([DurhamLockard1988])"),
+        E("{balance}nema_motor_size", "power", "the smallest standard NEMA motor rating that covers the motor power "
+          "by the RMS rule, {balance} counterbalance ([NEMAMG1])"),
+        E("{balance}motor_energy", "daily_energy", "energy the motor gives a day (over the motor efficiency: takes), "
+          "{balance} counterbalance: the work the gearbox does while it drives the unit, nothing credited back "
+          "while the unit drives it"),
+        E("{balance}energy_cost", "daily_cost", "cost of the motor energy a day at --electricity-price, {balance} "
+          "counterbalance"),
         E("gearbox_rating", "torque", "gearbox peak torque rating (designation or [rating])"),
         E("structure_rating", "force", "structure (polished-rod load) rating (designation or [rating])"),
         E("max_stroke", "length", "maximum stroke of the unit (designation or [rating])"),

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from enum import Enum
 from typing import Annotated
 
 import typer
@@ -15,8 +16,13 @@ from ..options import (CardColumnsOption, CardFormatOption, CardOption, CardPoin
 from ..quantities import KWH
 from ..readers.unit_files import unit_path
 from ..render import PageOutput
-from .downhole import Method as DownholeMethod
-from .torque import Balance, Method
+from ..analysis.downhole import downhole_methods
+from ..analysis.torque import balance_criteria, torque_methods
+
+#: The choices of `torque` and `downhole`, from the analyses' registries (commands never import each other).
+Method = Enum("Method", {name: name for name in torque_methods()}, module=__name__, type=str)
+Balance = Enum("Balance", {name: name for name in balance_criteria()}, module=__name__, type=str)
+DownholeMethod = Enum("DownholeMethod", {name: name for name in downhole_methods()}, module=__name__, type=str)
 
 
 def report(
@@ -30,10 +36,10 @@ def report(
     spm: CardSpmOption = None,
     steps: StepsOption = 360,
     crank_motion: CrankMotionOption = CrankMotion.auto,
-    method: Annotated[Method, typer.Option(help="torque method, as `pumpjack torque --method`")] = Method.api,
-    balance: Annotated[Balance, typer.Option(help="balance criterion, as `pumpjack torque --balance`")] = Balance.equal_peaks,
+    method: Annotated[Method, typer.Option(help="torque method, as `pumpjack torque --method`")] = Method["api"],
+    balance: Annotated[Balance, typer.Option(help="balance criterion, as `pumpjack torque --balance`")] = Balance["equal-peaks"],
     downhole_method: Annotated[DownholeMethod, typer.Option(
-        help="pump-card method, as `pumpjack downhole --method`")] = DownholeMethod.gibbs,
+        help="pump-card method, as `pumpjack downhole --method`")] = DownholeMethod["gibbs"],
     damping: Annotated[float | None, typer.Option(
         help="Gibbs' damping factor nu, as `pumpjack downhole --damping`", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int | None, typer.Option(

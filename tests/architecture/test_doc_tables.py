@@ -311,7 +311,7 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("conventions.md", "| φ1 of [SK8Rotation2013] | crank travel from bottom | θ here |"):
         "angle conventions converted by hand (checked by tests/validation/test_sk8rotation2013.py)",
     ("downhole.md", "| N per stroke | 1530 m 25/22/19 mm: stroke, max load error / card load range | 5000 ft 4 "
-                    "tapers with sinker bars: stroke, max load error / card load range |"):
+                    "tapers with sinker bars |"):
         "convergence of the core's finite-difference march, measured by tests/core/rods/test_rods_downhole.py",
     ("downhole.md", "| claim | test |"): "test list",
     ("dynamics.md", "| part | inertia on its shaft | at the crank | source |"): "input data of the unit and its sources",

@@ -258,7 +258,7 @@ def browser_folder(tmp_path_factory):
 def test_chromium_renders_the_page_to_png_without_console_errors(well, browser_folder):
     page = well[0]
     shot = browser_folder / "well.png"
-    _, console = _browse(browser_folder, page, "--hide-scrollbars", "--window-size=1200,6000", f"--screenshot={shot}")
+    _, console = _browse(browser_folder, page, "--hide-scrollbars", "--window-size=1200,3000", f"--screenshot={shot}")
     assert console == []
     data = shot.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and int.from_bytes(data[16:20], "big") == 1200 and len(data) > 50_000

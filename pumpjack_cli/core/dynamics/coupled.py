@@ -157,6 +157,10 @@ class _Channels:
         return m.bottom @ modal_velocity(m, states), m.bottom @ q, (m.participation * m.frequency**2) @ q
 
 
+#: Samples of the uniform prediction that gives the first guess of the mean crank speed.
+START_SAMPLES = 256
+
+
 def predict_coupled(machine: Machine, rods: RodString, pump: Pump, *, damping: float, fluid_density: float,
                     rod_density: float = STEEL_DENSITY, samples: int = 1024, tolerance: float = DEFAULT_TOLERANCE,
                     max_revolutions: int = MAX_REVOLUTIONS, resolution: int = 1024) -> CoupledPrediction:
@@ -210,7 +214,9 @@ def _solve_coupled(machine: Machine, rods: RodString, pump: Pump, damping: float
     """The coupled march on ``samples`` steps per revolution (:func:`predict_coupled`)."""
     tables = _Tables(machine)
     a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
-    start = predict(rods, pump, _positions(tables, samples), 2.0 * np.pi / machine.rated_crank_speed,
+    # the first guess of the mean speed needs only the card's work: a coarse grid does
+    coarse = min(samples, START_SAMPLES)
+    start = predict(rods, pump, _positions(tables, coarse), 2.0 * np.pi / machine.rated_crank_speed,
                     damping=damping, fluid_density=fluid_density, rod_density=rod_density, tolerance=1e-4)
     omega = (start.summary.surface_card_work / (2.0 * np.pi) - a_u) / b_u2
     if not omega > 0:
