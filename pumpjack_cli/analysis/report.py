@@ -262,7 +262,8 @@ def _options_text(card: CardSource, options: ReportOptions, system: str) -> str:
 
 def _provenance_section(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportOptions) -> Section:
     now = datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat()
-    rows = (("tool", f"pumpjack {__version__}"), ("unit file", str(unit_file)), ("unit file SHA-256", sha256(unit_file)),
+    rows = (("tool", f"pumpjack {__version__}"), ("unit", unit.name),
+            ("unit file (or catalogue)", str(unit_file)), ("its SHA-256", sha256(unit_file)),
             ("card file", str(card.path)), ("card file SHA-256", sha256(card.path)),
             ("options", _options_text(card, options, options.system)), ("generated (UTC)", now))
     return Section("provenance", dict(SECTIONS)["provenance"],

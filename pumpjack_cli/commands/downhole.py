@@ -14,6 +14,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
@@ -41,6 +42,7 @@ def downhole(
              "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -52,6 +54,6 @@ def downhole(
     Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
-    result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
+    result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor)
     sink.emit(result, SHOWN)

@@ -13,6 +13,7 @@ from ..config import load_unit
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -46,6 +47,7 @@ def predict(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -66,6 +68,6 @@ def predict(
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
     )
-    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor)
+    result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor)
     torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
     sink.emit(result, (*SHOWN, torque))

@@ -10,11 +10,12 @@ import typer
 from ..analysis.report import ReportOptions, report as run
 from ..analysis.torque import Energy
 from ..config import load_unit
-from ..options import (CardColumnsOption, CardFormatOption, CardOption, CardPointsOption, CardSpmOption, CardUnitsOption,
+from ..options import (CatalogueOption, CardColumnsOption, CardFormatOption, CardOption, CardPointsOption, CardSpmOption, CardUnitsOption,
                        CrankMotion, CrankMotionOption, OutputOption, ServiceFactorOption, StepsOption, StrokeOption,
                        UnitArgument, UnitsOption, UnitSystem, card_source, finite)
 from ..quantities import KWH
-from ..readers.unit_files import unit_path
+from ..errors import ConfigError
+from ..readers.unit_files import unit_source
 from ..render import PageOutput
 from ..analysis.downhole import downhole_methods
 from ..analysis.torque import balance_criteria, torque_methods
@@ -51,6 +52,7 @@ def report(
         help="efficiency of the motor, as `pumpjack torque`", min=0.1, max=1.0, callback=finite)] = 1.0,
     electricity_price: Annotated[float | None, typer.Option(
         help="price of a kWh, in any currency, as `pumpjack torque`", min=0.0, max=1e6, callback=finite)] = None,
+    catalogue: CatalogueOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
 ) -> None:
@@ -63,5 +65,11 @@ def report(
     energy = Energy(drive_efficiency, motor_efficiency, None if electricity_price is None else electricity_price / KWH)
     options = ReportOptions(spm, crank_motion.value, method.value, balance.value, damping, downhole_method.value, steps,
                             samples, service_factor, energy, units.value)
-    page, _ = run(load_unit(unit), unit_path(unit), source, options)
+    try:   # the file the provenance hashes: the unit file, or the catalogue that holds the unit
+        unit_file = unit_source(unit)
+    except ConfigError:
+        if catalogue is None:
+            raise
+        unit_file = catalogue
+    page, _ = run(load_unit(unit, catalogue), unit_file, source, options)
     sink.emit(page)

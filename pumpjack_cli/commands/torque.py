@@ -14,6 +14,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        card_source, finite)
 from ..options import What, WhatOption
 from ..quantities import KWH
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
@@ -57,6 +58,7 @@ def torque(
     electricity_price: Annotated[float | None, typer.Option(
         help="price of a kWh of electricity, in any currency: the energy cost per day is given in the same "
              "currency", min=0.0, max=1e6, callback=finite)] = None,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -70,7 +72,7 @@ def torque(
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
     energy = Energy(drive_efficiency, motor_efficiency, None if electricity_price is None else electricity_price / KWH)
-    result = run(load_unit(unit), source, spm, steps, crank_motion.value,
+    result = run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency, energy)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

@@ -150,10 +150,10 @@ class CounterbalanceConfig(Section):
         default=None, ge=0, le=1e7,
         description="CBE: the polished-rod load the counterbalance holds at counterbalance_effect_angle, as a crew "
         "measures it; instead of moment (or of the kind's own balancing variable) [N]")
-    counterbalance_effect_angle: Angle = Field(
-        default=math.pi / 2, gt=0, lt=2 * math.pi,
+    counterbalance_effect_angle: Angle | None = Field(
+        default=None, gt=0, lt=2 * math.pi,
         description="crank angle at which counterbalance_effect was measured, from 12 o'clock in the direction of "
-        "rotation (90 deg: cranks horizontal on the upstroke) [rad]")
+        "rotation [default: the cranks horizontal on the upstroke, 90 deg, 270 deg on a Mark II] [rad]")
 
     @model_validator(mode="after")
     def _moment_or_effect(self) -> "CounterbalanceConfig":
@@ -267,12 +267,17 @@ class UnitConfig(Section):
                               f"{model.variable.replace('_', ' ')} is given too; give one of them")
         return self._measured_counterbalance(model, given.counterbalance_effect, given.counterbalance_effect_angle), True
 
-    def _measured_counterbalance(self, model: CounterbalanceModel, effect: float, angle: float) -> CounterbalanceModel:
-        """The counterbalance whose effect at crank angle ``angle`` [rad] is ``effect`` [N]."""
+    def _measured_counterbalance(self, model: CounterbalanceModel, effect: float,
+                                 angle: float | None) -> CounterbalanceModel:
+        """The counterbalance whose effect at crank angle ``angle`` [rad] (None: the cranks horizontal on the
+        upstroke, :func:`~pumpjack_cli.core.beam.counterbalance.upstroke_test_angle`) is ``effect`` [N]."""
         import numpy as np
 
-        from ..core.beam.counterbalance import value_for_effect
+        from ..core.beam.counterbalance import upstroke_test_angle, value_for_effect
         from ..errors import TorqueError
+
+        if angle is None:
+            angle = upstroke_test_angle(self.geometry.mechanism())
 
         where = f"unit {self.name}: [counterbalance] counterbalance_effect"
         try:

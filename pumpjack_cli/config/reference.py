@@ -83,7 +83,7 @@ EXAMPLES: dict[str, str] = {
     "rating.max_stroke": '"86 in"',
     "counterbalance.moment": '"130000 lbf*in"',
     "counterbalance.counterbalance_effect": '"12577 lbf"',
-    "counterbalance.counterbalance_effect_angle": '"90 deg"',
+    "counterbalance.counterbalance_effect_angle": '"90 deg"',   # the default of a conventional unit
     "geometry.crank_half_spacing": '"0.6 m"',
     "geometry.equalizer_half_length": '"0.6 m"',
     "geometry.beam_counterweight": '"4000 lbf"',

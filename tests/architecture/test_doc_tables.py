@@ -339,6 +339,12 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("validation.md", None): "what each test checks against which source",
     ("README.md", "| bundled unit | source |"): "unit names and sources",
     ("report.md", "| section | what it shows | from |"): "the page's layout",
+    ("catalogue.md", "| column | needed | unit | meaning | in the unit file |"): "catalogue format",
+    ("units.md", "| kind | `class` | designation | lever | rotation | counterbalance | `torque` recommends |"):
+        "the kinds of unit (names and letters)",
+    ("units.md", "| key | GOST name | meaning |"): "unit-file keys",
+    ("units.md", "| key | meaning | kinds |"): "unit-file keys",
+    ("units.md", "| key | meaning |"): "unit-file keys",
 }
 
 

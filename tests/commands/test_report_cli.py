@@ -122,7 +122,7 @@ def test_one_command_gives_every_section_in_order(well):
     text = page.read_text(encoding="utf-8")
     for words in ("NEMA motor size that covers it", "cyclic load factor", "motor energy a day", "energy cost a day",
                   "recommended counterbalance", "upstroke peak torque", "taper 1 goodman loading",
-                  "pump condition: not available", "pump displacement", "SHA-256", "stroke loading 102."):
+                  "pump condition: not available", "pump displacement", "card file SHA-256", "stroke loading 102."):
         assert words in text, words
     assert text.count("<svg") == 3   # the cards, the torque, the Goodman diagram
 
