@@ -36,6 +36,8 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "torque": ("torque", "torque", "Gearbox torque, counterbalance and loading of a unit from a dynamometer card."),
     "downhole": ("downhole", "downhole", "Pump card from a surface dynamometer card through the rod string's wave equation."),
     "predict": ("predict", "predict", "Surface and pump cards predicted from unit, rods, pump and fluid level."),
+    "report": ("report", "report",
+               "One well on one page: unit, cards, torque and ratings, balance, rod loading, pump, provenance."),
     "batch": ("batch", "app", "A field's dynamometer cards through torque and downhole into an SQLite results store."),
 }
 CONTEXT = {"help_option_names": ["-h", "--help"]}

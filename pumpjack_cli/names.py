@@ -63,6 +63,7 @@ VOCABULARY: dict[str, dict[str, str]] = {
     "end": {"top": "top", "bottom": "bottom"},
     "stroke_part": {"upstroke": "upstroke", "downstroke": "downstroke"},
     "analysis": {"torque": "torque", "downhole": "downhole"},
+    "balance": {"": "present", "recommended_": "recommended"},
 }
 _PLACEHOLDER = re.compile(r"\{(\w+)\}")
 
@@ -354,10 +355,21 @@ SECTIONS: tuple[Section, ...] = (
           "recommended moment"),
         E("card_work", "energy", "work on the rods per cycle (the card's area)"),
         E("polished_rod_power", "power", "polished-rod power: card work × cycles per second", "PRHP"),
-        E("rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time", "T_rms"),
-        E("cyclic_load_factor", "ratio", "T_rms / T_mean ([DurhamLockard1988])", "CLF"),
-        E("rms_motor_power", "power", "motor power for the RMS net torque at the mean speed, over the drive "
-          "efficiency ([DurhamLockard1988])"),
+        E("{stroke_part}_peak_torque", "torque", "largest net gearbox torque of the {stroke_part}, present "
+          "counterbalance"),
+        E("{balance}rms_net_torque", "torque", "RMS (equivalent) net gearbox torque over time, {balance} "
+          "counterbalance", "T_rms"),
+        E("{balance}cyclic_load_factor", "ratio", "T_rms / T_mean, {balance} counterbalance ([DurhamLockard1988])",
+          "CLF"),
+        E("{balance}rms_motor_power", "power", "motor power for the RMS net torque at the mean speed, over the drive "
+          "efficiency, {balance} counterbalance ([DurhamLockard1988])"),
+        E("{balance}nema_motor_size", "power", "the smallest standard NEMA motor rating that covers the motor power "
+          "by the RMS rule, {balance} counterbalance ([NEMAMG1])"),
+        E("{balance}motor_energy", "daily_energy", "energy the motor gives a day (over the motor efficiency: takes), "
+          "{balance} counterbalance: the work the gearbox does while it drives the unit, nothing credited back "
+          "while the unit drives it"),
+        E("{balance}energy_cost", "daily_cost", "cost of the motor energy a day at --electricity-price, {balance} "
+          "counterbalance"),
         E("gearbox_rating", "torque", "gearbox peak torque rating (designation or [rating])"),
         E("structure_rating", "force", "structure (polished-rod load) rating (designation or [rating])"),
         E("max_stroke", "length", "maximum stroke of the unit (designation or [rating])"),
@@ -528,6 +540,28 @@ def written_names() -> dict[str, tuple[str, str, str]]:
     own files: ``position_in`` -> ``("position", "length", "field")``."""
     return {suffixed(name, quantity, system): (name, quantity, system)
             for name, (quantity, _) in catalogue().items() for system in UNIT_SYSTEMS}
+
+
+#: Abbreviations and symbols a name spells in lower case, as words write them.
+_SPELLED = {"rms": "RMS", "api": "API", "cbe": "CBE", "nema": "NEMA", "spm": "SPM", "m05": "M_R05", "m01": "M_R01",
+            "m12": "M_R12", "m13": "M_R13", "m24": "M_R24", "m34": "M_R34", "omega1": "ω1", "two": "two-",
+            "series4": "series to the 4th harmonic", "series6": "series to the 6th harmonic"}
+
+
+def words(name: str) -> str:
+    """An output name in words for a legend or an axis: underscores as spaces, symbols as
+    written (R12, RMS, M_R05).
+
+    >>> words("r12_y_rational"), words("recommended_net_torque"), words("velocity_two_term")
+    ('R12 y rational', 'recommended net torque', 'velocity two-term')
+    """
+    parts = []
+    for part in name.split("_"):
+        if re.fullmatch(r"r\d\d", part):
+            parts.append(part.upper())
+        else:
+            parts.append(_SPELLED.get(part, part))
+    return " ".join(parts).replace("two- term", "two-term")
 
 
 def _cell(text: str) -> str:

@@ -28,6 +28,9 @@ KILOGRAM_FORCE = 9.80665
 HORSEPOWER = 745.69987158227022
 #: Oil barrel, 42 US gallons of 231 in^3 [NIST811].
 BARREL = 42 * 231 * INCH**3
+#: Kilowatt hour [J] and day [s] ([NIST811]).
+KWH = 3.6e6
+DAY = 86400.0
 
 #: Accepted input units for each dimension: normalised unit text -> factor to SI.
 INPUT_UNITS: dict[str, dict[str, float]] = {
@@ -101,7 +104,7 @@ _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "m
 SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "moment_of_inertia": "kg·m²",
              "rotational_speed": "rad/s", "angle": "rad", "rotational_stiffness": "N·m/rad", "power": "W",
              "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
-             "pressure": "Pa", "weight_per_length": "N/m"}
+             "pressure": "Pa", "weight_per_length": "N/m", "volume": "m³"}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 
@@ -182,6 +185,67 @@ def parse_quantity(value: object, dimension: str, require_unit: bool = False) ->
     return number * units[unit]
 
 
+#: Significant digits of a converted output value: the most a float64 keeps through a decimal
+#: round trip (DBL_DIG of C's float.h; IEEE 754 binary64 has a 53-bit significand, 15.95 digits).
+SIGNIFICANT_DIGITS = 15
+
+
+def significant(values, digits: int = SIGNIFICANT_DIGITS):
+    """A float or a numpy array rounded to ``digits`` significant digits, as ``f"{x:.15g}"``
+    rounds (zeros and non-finite values are left as they are).
+
+    An array is rounded without leaving numpy where 10^k is exact (k <= 22): n = round(x 10^k)
+    of the exact product, and n / 10^k, the float nearest to the decimal.
+
+    >>> significant(699999.9999999999), significant(0.30000000000000004), significant(1.0000000000000002e-05)
+    (700000.0, 0.3, 1e-05)
+    """
+    if isinstance(values, (float, int)):
+        value = float(values)
+        if value == 0.0 or not math.isfinite(value):
+            return value
+        return float(f"{value:.{digits}g}")
+    import numpy as np   # an array: numpy is already loaded
+
+    x = np.asarray(values, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        magnitude = np.abs(x)
+        usable = np.isfinite(x) & (magnitude > 0)
+        power = np.zeros(x.shape, dtype=int)
+        power[usable] = (digits - 1) - np.floor(np.log10(magnitude[usable])).astype(int)
+        exact = usable & (power >= 0) & (power <= 22)   # 10^k exact: the vectorised rounding
+        out = x.copy()
+        scale = 10.0 ** power[exact]
+        out[exact] = _round_product(x[exact], scale) / scale
+    for i in np.flatnonzero(usable & ~exact):   # below 1e-8 or above 1e15: rare, one at a time
+        out.flat[i] = float(f"{float(x.flat[i]):.{digits}g}")
+    return out
+
+
+def _round_product(x, scale):
+    """round(x scale) of the exact product (not of its float): the product split into the float
+    p and its error e (Dekker's two-product, by Veltkamp's splitting), so that a product within
+    an ulp of a half is rounded as the exact value is, half to even. Arrays."""
+    import numpy as np
+
+    def split(a):
+        c = 134217729.0 * a   # 2^27 + 1
+        high = c - (c - a)
+        return high, a - high
+
+    p = x * scale
+    xh, xl = split(x)
+    sh, sl = split(scale)
+    e = ((xh * sh - p) + xh * sl + xl * sh) + xl * sl
+    n = np.round(p)
+    rest = (p - n) + e   # exact: p - n is exact for |p| < 2^52
+    n = np.where(rest > 0.5, n + 1.0, np.where(rest < -0.5, n - 1.0, n))
+    tie = rest == 0.5
+    n = np.where(tie & (np.mod(n, 2.0) == 1.0), n + 1.0, n)
+    tie = rest == -0.5
+    return np.where(tie & (np.mod(n, 2.0) == 1.0), n - 1.0, n)
+
+
 @dataclass(frozen=True)
 class OutputUnit:
     """How one quantity is shown: a label, a column-name suffix, a scale from SI and,
@@ -198,14 +262,26 @@ class OutputUnit:
 
         Rounding (angles) is round-half-even at ``decimals``, computed as numpy's
         ``around`` does (scale, round to integer, unscale) for floats and arrays alike.
+        A value that is scaled (any other unit than the SI one it is computed in) is kept
+        to :data:`SIGNIFICANT_DIGITS` significant digits, so that the last-bit noise of
+        the conversion is not shown (700000 lbf·in read from a unit file comes back as
+        700000.0, not 699999.9999999999); a value shown in its SI unit is unchanged. A
+        negative zero comes back as 0.0.
+
+        >>> torque = OUTPUT_QUANTITIES["torque"]["field"]
+        >>> torque.convert(700000 * POUND_FORCE * INCH), OUTPUT_QUANTITIES["force"]["si"].convert(-0.0)
+        (700000.0, 0.0)
         """
         shown = si_values * self.scale
-        if self.decimals is None:
-            return shown
-        factor = 10.0**self.decimals
-        if isinstance(shown, float):
-            return round(shown * factor) / factor
-        return shown.round(self.decimals)
+        if self.decimals is not None:
+            factor = 10.0**self.decimals
+            if isinstance(shown, float):
+                shown = round(shown * factor) / factor
+            else:
+                shown = shown.round(self.decimals)
+        elif self.scale != 1.0:
+            shown = significant(shown)
+        return shown + 0.0   # -0.0 + 0.0 is +0.0 (IEEE 754, round to nearest)
 
 
 _DEGREES = OutputUnit("deg", "deg", 180 / math.pi, decimals=9)
@@ -242,6 +318,13 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
     # a hole's curvature [rad/m] as drillers give it: degrees per 30 m, degrees per 100 ft
     "dogleg_severity": {"si": OutputUnit("°/30 m", "deg_30m", 180 / math.pi * 30.0),
                         "field": OutputUnit("°/100 ft", "deg_100ft", 180 / math.pi * 100 * FOOT)},
+    # a depth in a well: m, or feet as oilfield documents write it (a length on a unit is in inches)
+    "depth": {"si": OutputUnit("m", "m", 1.0), "field": OutputUnit("ft", "ft", 1 / FOOT)},
+    "density": {"si": OutputUnit("kg/m³", "kg_m3", 1.0), "field": OutputUnit("lb/ft³", "lb_ft3", FOOT**3 / POUND_MASS)},
+    # energy per day (SI: J a day) in kWh a day in both systems, as electricity is billed
+    "daily_energy": {"si": OutputUnit("kWh/d", "kwh_d", 1 / KWH), "field": OutputUnit("kWh/d", "kwh_d", 1 / KWH)},
+    # money per day in the currency of the price given (--electricity-price)
+    "daily_cost": {"si": OutputUnit("money/d", "per_day", 1.0), "field": OutputUnit("money/d", "per_day", 1.0)},
     "rotational_stiffness": {
         "si": OutputUnit("N·m/rad", "n_m_rad", 1.0),
         "field": OutputUnit("lbf·in/rad", "lbf_in_rad", 1 / (POUND_FORCE * INCH)),

@@ -69,14 +69,32 @@ class Scalar:
 @dataclass(frozen=True)
 class Curve:
     """A further curve of a plot panel: two column names (x, y), or explicit SI values of
-    one ``quantity`` on both axes (e.g. points of a Goodman diagram); ``style`` is a
-    matplotlib format ("-", "--", "o")."""
+    one ``quantity`` on both axes (e.g. points of a Goodman diagram), or of ``quantity`` on
+    x and ``y_quantity`` on y; NaN values break the line. ``style`` is a matplotlib format
+    ("-", "--", "o"), ``color`` a matplotlib colour (None: the next of the cycle). The
+    ``label`` may hold ``{}`` placeholders, one per ``label_values`` pair (quantity, SI
+    value), which the renderer fills in the plot's unit system (a strength on psi axes is
+    written in psi)."""
 
     label: str
     x: str | tuple[float, ...]
     y: str | tuple[float, ...]
     quantity: str | None = None
     style: str = "-"
+    y_quantity: str | None = None
+    color: str | None = None
+    label_values: tuple[tuple[str, float], ...] = ()
+
+
+@dataclass(frozen=True)
+class Mark:
+    """A vertical line on every plot panel whose x axis is the column ``column``: ``value``
+    (SI) and its ``label`` (the dead positions: crank angles, or the ends of the stroke on
+    a card)."""
+
+    label: str
+    column: str
+    value: float
 
 
 @dataclass(frozen=True)
@@ -84,11 +102,12 @@ class Panel:
     """One plot panel: solid curves and dashed curves (column names) against the column
     ``x`` (default: the first column), and horizontal lines at ``levels`` ((label, SI
     value) pairs in the quantity of the first solid curve, e.g. a rating). With ``clip``
-    the vertical range follows the solid curves (half their range beyond each side), so
-    that a dashed bound that grows without limit does not hide them. ``curves`` are drawn
-    too; a panel of curves only names its x axis ``x_label``. With ``colour`` (a column name) the
-    solid curves are drawn as points coloured by that column, with a colour bar; ``y_down`` turns
-    the vertical axis downward (a depth)."""
+    the vertical range follows the solid curves and the nearest approach of the others,
+    so that a bound that grows without limit does not hide them. ``curves`` are drawn
+    too; a panel of curves only names its x axis ``x_label``. Legends name the columns in
+    words (:func:`~pumpjack_cli.names.words`) unless ``labels`` give (column, label) pairs.
+    With ``colour`` (a column name) the solid curves are drawn as points coloured by that
+    column, with a colour bar; ``y_down`` turns the vertical axis downward (a depth)."""
 
     title: str
     solid: tuple[str, ...]
@@ -100,16 +119,19 @@ class Panel:
     x_label: str | None = None
     colour: str | None = None
     y_down: bool = False
+    labels: tuple[tuple[str, str], ...] = ()
 
 
 @dataclass(frozen=True)
 class Result:
-    """Everything a command outputs: a title, summary values, columns and plot panels, SI."""
+    """Everything a command outputs: a title, summary values, columns and plot panels, SI;
+    ``marks``, the vertical lines of its plots (the dead positions)."""
 
     title: str
     summary: tuple[Scalar, ...]
     columns: tuple[Column, ...]
     panels: tuple[Panel, ...] = ()
+    marks: tuple[Mark, ...] = ()
 
     def column(self, name: str) -> Column:
         """The column called ``name``."""
@@ -167,3 +189,88 @@ def check_finite(result: Result) -> None:
             first = next((i for i, v in enumerate(c.values) if v is not None and not math.isfinite(float(v))), None)
         if first is not None:
             raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")
+
+
+# --- a page of results: the engineer's report (`pumpjack report`, `batch report`) ----------------
+
+
+@dataclass(frozen=True)
+class Values:
+    """Summary values of a result shown on a page: the scalars named (those the result has), each
+    with its meaning, its value in the page's unit system and its unit; ``source`` names the
+    command whose ``-f json`` summary the values equal (the page keys each by it)."""
+
+    source: str
+    result: Result
+    names: tuple[str, ...]
+
+    def present(self) -> tuple[Scalar, ...]:
+        """The named scalars the result has, in the order named."""
+        found = {s.name: s for s in self.result.summary}
+        return tuple(found[name] for name in self.names if name in found)
+
+
+@dataclass(frozen=True)
+class SideBySide:
+    """Pairs of summary values of one result shown side by side (the present counterbalance
+    and the recommended one): rows of (label, first name, second name), ``columns`` the two
+    headings."""
+
+    source: str
+    result: Result
+    columns: tuple[str, str]
+    rows: tuple[tuple[str, str, str], ...]
+
+
+@dataclass(frozen=True)
+class Quantities:
+    """Input data shown on a page: rows of (label, SI value or text, quantity kind) converted to
+    the page's unit system (text shown as it is)."""
+
+    rows: tuple[tuple[str, float | str, str], ...]
+
+
+@dataclass(frozen=True)
+class Table:
+    """A table of text and numbers: headers, each with its quantity kind ("" or ``text`` for
+    text; numbers are SI and shown in the page's units), the rows, and optionally a link target
+    per row (an anchor on the page). ``sortable``: the reader can sort it by a column."""
+
+    headers: tuple[tuple[str, str], ...]
+    rows: tuple[tuple[object, ...], ...]
+    links: tuple[str | None, ...] = ()
+    sortable: bool = False
+
+
+@dataclass(frozen=True)
+class Figure:
+    """The plot panels of a result (all, or those ``panels`` lists by title) drawn inline."""
+
+    result: Result
+    panels: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Note:
+    """A paragraph (``kind``: ``text``, ``warning`` or ``missing`` for what is not available)."""
+
+    text: str
+    kind: str = "text"
+
+
+@dataclass(frozen=True)
+class Section:
+    """One section of a page: an anchor, a heading and its blocks."""
+
+    anchor: str
+    title: str
+    blocks: tuple[object, ...]
+
+
+@dataclass(frozen=True)
+class Page:
+    """A page of results (one self-contained HTML file): title, subtitle, sections."""
+
+    title: str
+    subtitle: str
+    sections: tuple[Section, ...]

@@ -35,6 +35,7 @@ from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
                        surveyed, with_survey)
+from .inputs import dead_position_marks
 from .rods import goodman_panel, taper_summary
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
@@ -147,7 +148,7 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
             string, well.path(), surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
             damping_factor=nu, friction_coefficient=0.0).profile
         columns, panels = profile_result(unit, profile)
-    return Result(title, tuple(summary), columns, panels)
+    return Result(title, tuple(summary), columns, panels, dead_position_marks(linkage))
 
 
 def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[list[Scalar], tuple, tuple]:

@@ -9,7 +9,7 @@ from ..core.sampling import crank_grid
 from ..core.well import WellLoad
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardSource
-from .inputs import crank_columns, extreme_scalars
+from .inputs import crank_columns, dead_position_marks, extreme_scalars, motor_levels
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -77,10 +77,13 @@ def dynamics(unit: UnitConfig, card: CardSource | None, rtol: float, steps: int)
         Column("reduced_inertia_rate", result.reduced_inertia_rate),
     )
     panels = (
-        Panel("crank speed omega1", ("crank_speed",)),
-        Panel("polished-rod velocity", ("velocity",), ("velocity_uniform",)),
-        Panel("polished-rod acceleration", ("acceleration",), ("acceleration_uniform",)),
-        Panel("motor torque", ("motor_torque",)),
+        Panel("crank speed ω1", ("crank_speed",)),
+        Panel("polished-rod velocity", ("velocity",), ("velocity_uniform",),
+              labels=(("velocity", "non-uniform rotation"), ("velocity_uniform", "uniform rotation"))),
+        Panel("polished-rod acceleration", ("acceleration",), ("acceleration_uniform",),
+              labels=(("acceleration", "non-uniform rotation"), ("acceleration_uniform", "uniform rotation"))),
+        Panel("motor torque", ("motor_torque",), levels=motor_levels(machine_.motor)),
     )
     source = "well model" if card is None else f"card {card.name}"
-    return Result(f"{unit.name}: dynamics, {source}", tuple(summary), columns, panels)
+    return Result(f"{unit.name}: dynamics, {source}", tuple(summary), columns, panels,
+                  dead_position_marks(machine_.linkage))

@@ -27,14 +27,15 @@ from ..core.slider_crank.support_friction import (
 )
 from ..errors import PumpjackError
 from ..quantities import parse_quantity
-from ..results import Column, Panel, Result, Scalar
+from ..results import Column, Mark, Panel, Result, Scalar
+from .inputs import dead_centre_marks, dead_position_marks
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
     from ..config.slider_crank import SliderCrankConfig
 
 def _comparison(title: str, c: InertiaComparison, crank_speed: float, mass: float | None,
-                extra: tuple[Scalar, ...] = ()) -> Result:
+                extra: tuple[Scalar, ...] = (), marks: tuple[Mark, ...] = ()) -> Result:
     """A law comparison: accelerations always, inertia forces -m a when a mass is known."""
     summary = [
         Scalar("crank_speed", crank_speed),
@@ -79,7 +80,7 @@ def _comparison(title: str, c: InertiaComparison, crank_speed: float, mass: floa
     ]
     if mass is not None:
         panels.insert(1, Panel("inertia force", ("inertia_force",), tuple(f"inertia_force_{n}" for n in names)))
-    return Result(title, tuple(summary), tuple(columns), tuple(panels))
+    return Result(title, tuple(summary), tuple(columns), tuple(panels), marks)
 
 
 def support_friction(unit: SliderCrankConfig, steps: int) -> Result:
@@ -137,7 +138,8 @@ def support_friction(unit: SliderCrankConfig, steps: int) -> Result:
         friction_curves += ("total_friction",)
     return Result(f"{unit.name}: friction from redundant supports of the stepped slider", tuple(summary),
                   tuple(columns),
-                  (Panel("friction", friction_curves), Panel("reactions", reaction_curves), Panel("travel", ("travel",))))
+                  (Panel("friction", friction_curves), Panel("reactions", reaction_curves), Panel("travel", ("travel",))),
+                  dead_centre_marks(mechanism))
 
 
 def inertia_error(unit: UnitConfig | SliderCrankConfig, spm: float | None, mass: float | None, support: bool, steps: int) -> Result:
@@ -154,10 +156,11 @@ def inertia_error(unit: UnitConfig | SliderCrankConfig, spm: float | None, mass:
             slider_inertia_laws(mechanism, omega, crank_grid(steps)), omega,
             unit.reciprocating.mass if mass is None else mass,
             (Scalar("crank_to_rod_ratio", mechanism.crank_ratio),
-             Scalar("offset", unit.geometry.offset)),
+             Scalar("offset", unit.geometry.offset)), dead_centre_marks(mechanism),
         )
     if support:
         raise PumpjackError(f"unit {unit.name} is a beam pumping unit: --support-friction needs a slider-crank unit")
     omega = unit.crank_speed(spm)
     return _comparison(f"{unit.name}: polished-rod inertia, exact and approximate laws",
-                       beam_inertia_laws(unit.geometry.mechanism(), omega, crank_grid(steps)), omega, mass)
+                       beam_inertia_laws(unit.geometry.mechanism(), omega, crank_grid(steps)), omega, mass,
+                       marks=dead_position_marks(unit.geometry.mechanism()))

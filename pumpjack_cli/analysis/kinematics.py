@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..core.beam.kinematics import APPROXIMATIONS, uniform_kinematics
 from ..results import Column, Panel, Result, Scalar
+from .inputs import dead_position_marks
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -61,4 +62,5 @@ def kinematics(unit: UnitConfig, spm: float | None, steps: int) -> Result:
         Panel(quantity.replace("_", " "), (quantity,), tuple(f"{quantity}_{name}" for name in APPROXIMATIONS))
         for quantity in ("position", "velocity", "acceleration")
     ) + (Panel("torque factor", ("torque_factor",)),)
-    return Result(f"{unit.name}: kinematics, uniform rotation", tuple(summary), tuple(columns), panels)
+    return Result(f"{unit.name}: kinematics, uniform rotation", tuple(summary), tuple(columns), panels,
+                  dead_position_marks(unit.geometry.mechanism()))

@@ -30,7 +30,7 @@ from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
 from .deviated import (Deviation, deviated_path, friction_coefficient, profile_result, survey_summary, surveyed,
                        with_survey)
-from .inputs import crank_columns, extreme_scalars
+from .inputs import crank_columns, dead_position_marks, extreme_scalars, motor_levels
 from .rods import goodman_panel, taper_summary
 from .torque import SUMMARY_STEPS, card_torque
 
@@ -323,13 +323,15 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
               goodman_panel(string, loads, service_factor)]
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
+        panels.insert(2, Panel("motor torque", ("motor_torque",), x="crank_angle",
+                               levels=motor_levels(unit.machine(elastic_rods=True).motor)))
     title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
              f"damping {found.damping:.3g}")
     if surveyed(unit):
         title += f", survey {Path(unit.well.survey).name}"
     if deviation.profile:
         columns, panels = profile_result(unit, _profile(unit, found))
-    return Result(title, tuple(summary), tuple(columns), tuple(panels))
+    return Result(title, tuple(summary), tuple(columns), tuple(panels), dead_position_marks(unit.geometry.mechanism()))
 
 
 def _survey_rows(unit: UnitConfig, found: Predicted) -> list[Scalar]:
@@ -381,8 +383,9 @@ def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None, deviati
         Column("gravity_torque", both.gravity_torque),
         Column("net_torque", both.net_torque),
     )
-    panels = (Panel("crank speed omega1", ("crank_speed",)), Panel("motor torque", ("motor_torque",)),
+    panels = (Panel("crank speed ω1", ("crank_speed",)),
+              Panel("motor torque", ("motor_torque",), levels=motor_levels(unit.machine(elastic_rods=True).motor)),
               Panel("polished-rod load", ("rod_load",)))
     return Result(f"{unit.name}: dynamics, elastic rods (wave model), damping {found.damping:.3g}",
-                  tuple(summary), columns, panels)
+                  tuple(summary), columns, panels, dead_position_marks(unit.geometry.mechanism()))
 

@@ -13,7 +13,7 @@ from ..core.sampling import extremes, peak
 from ..errors import PumpjackError
 from ..results import Column, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import crank_columns
+from .inputs import crank_columns, dead_position_marks
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -85,7 +85,7 @@ def reactions(unit: UnitConfig, card: CardSource, spm: float | None, steps: int,
         Panel("net gearbox torque", ("net_torque",)),
     )
     title = f"{unit.name}: reactions and net gearbox torque, card {card.name}, {crank_motion} rotation"
-    return Result(title, tuple(summary), tuple(columns), panels)
+    return Result(title, tuple(summary), tuple(columns), panels, dead_position_marks(unit.geometry.mechanism()))
 
 
 def with_options(section, given: dict):
@@ -191,4 +191,4 @@ def compare_redundancy(unit: UnitConfig, card: CardSource, spm: float | None, st
     )
     title = (f"{unit.name}: real against rational mechanism (same errors; crank phase of the "
              f"{errors.crank_phase_mode.replace('-', ' ')}), card {card.name}, {crank_motion} rotation")
-    return Result(title, tuple(summary), tuple(columns), panels)
+    return Result(title, tuple(summary), tuple(columns), panels, dead_position_marks(unit.geometry.mechanism()))

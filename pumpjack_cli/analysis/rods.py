@@ -44,8 +44,8 @@ def goodman_panel(string, loads, service_factor: float) -> Panel:
     for strength in strengths:
         span = np.array([0.0, strength / 2.0])
         allowable = goodman_allowable_stress(strength, span, service_factor)
-        curves.append(Curve(f"allowable S_A, T = {strength / 1e6:.0f} MPa", tuple(span), tuple(allowable),
-                            quantity="stress", style="--"))
+        curves.append(Curve("allowable S_A, T = {}", tuple(span), tuple(allowable), quantity="stress", style="--",
+                            label_values=(("stress", strength),)))
     if strengths:
         span = (0.0, strengths[-1] / 2.0)
         curves.append(Curve("S_max = S_min", span, span, quantity="stress", style=":"))

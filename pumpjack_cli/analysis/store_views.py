@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..errors import PumpjackError
+from ..quantities import output_unit
 from ..readers.store import Store
 from ..results import STORED, TEXT, Column, Result
 from .batch.per_card import ANALYSES
@@ -75,3 +76,89 @@ def trend_result(path: Path, well: str) -> Result:
                                      for key in order], quantity=kinds[name],
                               description=f"{name.replace('_', ' ')} ({analysis})"))
     return Result(f"{well}: {len(order)} cards in time order ({path})", (), tuple(columns))
+
+
+#: The field page's columns of each well's latest card: (suffixed stored name, analysis, heading).
+FIELD = (
+    ("gearbox_loading_percent", "torque", "gearbox loading"),
+    ("peak_net_torque_n_m", "torque", "peak net torque"),
+    ("cyclic_load_factor", "torque", "cyclic load factor"),
+    ("max_rod_load_n", "downhole", "PPRL"),
+    ("pump_fillage_percent", "downhole", "pump fillage"),
+    ("pump_displacement_m3_d", "downhole", "production (pump displacement)"),
+)
+
+
+def _slug(well: str) -> str:
+    return "well-" + "".join(c if c.isalnum() else "-" for c in well)
+
+
+def field_page(path: Path):
+    """`batch report`: a field on one page. A sortable table with one row per well and its latest
+    card (by time stamp, then card): the loading, the pump condition (text columns named
+    ``pump_condition*`` when the store has them, else "not available"), the fillage and the
+    production (any stored ``*production*`` or ``*fluid_level*`` figure too); each well links to
+    its section below, the trend of its cards (:func:`trend_result`)."""
+    from ..names import written_names
+    from ..results import Note, Page, Section, Table
+
+    names, rows, kinds = _stored_rows(path, None)
+    if not rows:
+        raise PumpjackError(f"{path}: no results to report")
+    index = {name: i for i, name in enumerate(names)}
+    known = written_names()
+    condition = [n for n in names if n.startswith("pump_condition") and kinds[n] == TEXT]
+    extra = [n for n in names if ("production" in n or "fluid_level" in n) and n not in dict(
+        (f[0], 0) for f in FIELD) and not n.startswith("pump_condition")]
+    wells: dict[str, dict[tuple[str, str], dict]] = {}
+    for row in rows:
+        entry = wells.setdefault(row[index["well"]], {}).setdefault((row[index["timestamp"]], row[index["card"]]), {})
+        entry[row[index["analysis"]]] = row
+
+    def quantity(name: str) -> str:
+        return TEXT if kinds.get(name) == TEXT else known.get(name, (name, STORED, "si"))[1]
+
+    def internal(name: str, stored):
+        """A stored number (SI display units: % for a fraction, MPa for a stress) as the SI value
+        the page converts to its unit system; text as it is."""
+        kind = quantity(name)
+        if stored is None or kind in (TEXT, STORED) or isinstance(stored, str):
+            return stored
+        return stored / output_unit(kind, "si").scale
+
+    def value(cards: dict, name: str, analysis: str | None = None):
+        for which in ([analysis] if analysis else ["torque", "downhole"]):
+            row = cards.get(which)
+            if row is not None and name in index and row[index[name]] is not None:
+                return internal(name, row[index[name]])
+        return None
+
+    headers = [("well", TEXT), ("time stamp", TEXT), ("card", TEXT), ("unit", TEXT), ("status", TEXT)]
+    headers += [(heading, quantity(name)) for name, _, heading in FIELD]
+    headers += [(name.replace("_", " "), TEXT) for name in condition] or [("pump condition", TEXT)]
+    headers += [(name.replace("_", " "), quantity(name)) for name in extra]
+    table_rows, links, sections = [], [], []
+    for well in sorted(wells):
+        cards = wells[well]
+        latest = cards[max(cards)]
+        first = next(iter(latest.values()))
+        status = ", ".join(f"{a} {latest[a][index['status']]}" for a in ANALYSES if a in latest)
+        cells = [well, first[index["timestamp"]], Path(first[index["card"]]).name, first[index["unit"]], status]
+        cells += [value(latest, name, analysis) for name, analysis, _ in FIELD]
+        cells += [value(latest, name) for name in condition] or ["not available"]
+        cells += [value(latest, name) for name in extra]
+        table_rows.append(tuple(cells))
+        links.append(_slug(well))
+        trend = trend_result(path, well)
+        trend_headers = tuple((known.get(c.name, (c.name,))[0].replace("_", " "),
+                               TEXT if c.quantity == TEXT else quantity(c.name)) for c in trend.columns)
+        trend_rows = tuple(zip(*([internal(c.name, v) if c.name != "card" else Path(v).name for v in c.values]
+                                 for c in trend.columns)))
+        sections.append(Section(_slug(well), f"Well {well}: {len(trend_rows)} cards in time order",
+                                (Table(trend_headers, trend_rows, sortable=True),)))
+    field = Section("field", "Wells, latest card", (
+        Table(tuple(headers), tuple(table_rows), tuple(links), sortable=True),
+        Note("click a heading to sort; a well's name leads to its cards" + (
+            "" if condition else "; pump condition: not available (the store holds no diagnosis)"),
+             "text" if condition else "missing")))
+    return Page(f"Field report: {len(wells)} wells", f"results store {path}", (field, *sections))

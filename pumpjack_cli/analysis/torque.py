@@ -13,6 +13,7 @@ loading against the ratings of the unit's designation and the permissible load d
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -27,9 +28,10 @@ from ..core.beam.counterbalance import (
     CounterbalanceModel,
     counterbalance_effect,
     counterweight_placement,
+    upstroke_mask,
     upstroke_test_angle,
 )
-from ..core.beam.loading import card_work, cyclic_load_factor
+from ..core.beam.loading import card_work, cyclic_load_factor, driving_work, stroke_peaks
 from ..core.beam.torque import (
     ExactTorqueBasis,
     TorqueComponents,
@@ -41,11 +43,13 @@ from ..core.beam.torque import (
     torque_methods,
 )
 from ..core.designations import Ratings
+from ..core.motors import nema_motor_size
 from ..core.sampling import extremes, peak
 from ..errors import PumpjackError, warn
-from ..results import Column, Panel, Result, Scalar
+from ..quantities import DAY, HORSEPOWER, INCH
+from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
-from .inputs import crank_columns, extreme_scalars
+from .inputs import crank_columns, dead_position_marks, extreme_scalars
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -88,15 +92,28 @@ def _exact_basis(spatial, masses, crank_angle: bytes) -> ExactTorqueBasis:
     return exact_torque_basis(spatial, masses, np.frombuffer(crank_angle))
 
 
+@dataclass(frozen=True)
+class Energy:
+    """How the torque becomes energy and money: the efficiencies of the drive (belt and gearbox)
+    and of the motor, and the price of electricity per joule (None: no cost reported)."""
+
+    drive_efficiency: float = 1.0
+    motor_efficiency: float = 1.0
+    price: float | None = None
+
+
 def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, crank_motion: str, method: str, criterion: str,
-           drive_efficiency: float = 1.0) -> Result:
-    """The torque analysis of one card (see the module docstring)."""
+           drive_efficiency: float = 1.0, energy: Energy | None = None) -> Result:
+    """The torque analysis of one card (see the module docstring); ``energy`` (its drive
+    efficiency replaced by ``drive_efficiency``) for the energy per day and its cost."""
     check_options(method, criterion)
+    energy = dataclasses.replace(energy or Energy(), drive_efficiency=drive_efficiency)
     reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), crank_motion)
-    found = card_torque(unit, reading.card, runs, method, criterion, drive_efficiency)
-    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank_motion, "
+    found = card_torque(unit, reading.card, runs, method, criterion, energy=energy)
+    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank motion, "
              f"balance {criterion}")
-    return Result(title, found.card_summary + found.summary, found.columns, found.panels)
+    return Result(title, found.card_summary + found.summary, found.columns, found.panels,
+                  dead_position_marks(unit.geometry.mechanism()))
 
 
 def check_options(method: str, criterion: str) -> None:
@@ -125,10 +142,12 @@ class CardTorque:
 
 
 def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, criterion: str,
-                drive_efficiency: float = 1.0) -> CardTorque:
+                energy: Energy = Energy()) -> CardTorque:
     """Net torque, balance and loading of a card (load at crank angles) run on the output grid
     ``runs[0]`` and the summary grid ``runs[1]`` (:data:`SUMMARY_STEPS` points): the
-    analysis of a measured card and of a predicted one alike."""
+    analysis of a measured card and of a predicted one alike. The duty (stroke peaks,
+    RMS torque, cyclic load factor, motor power, NEMA size, energy per day) is reported
+    for the present counterbalance, when known, and for the recommended one."""
     check_options(method, criterion)
     rated = unit.ratings()
     linkage = unit.geometry.mechanism()
@@ -161,12 +180,15 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     current = dense.net if balance_known else None
     if balance_known:
         found = peak(theta, current)
+        up, down = stroke_peaks(linkage, theta, current)
         summary += [Scalar(balance.variable, balance.value),
                     Scalar("counterbalance_effect",
                            counterbalance_effect(linkage.motion(np.array([test_angle])), balance)),
                     Scalar("peak_net_torque", found.value),
                     Scalar("peak_net_torque_crank_angle", found.crank_angle)]
         summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))
+        summary += [Scalar("upstroke_peak_torque", up), Scalar("downstroke_peak_torque", down)]
+        summary += _duty("", current, dt, frequency, energy)
     recommended = shifted(dense, recommendation.value)
     summary += [
         Scalar("recommended_" + balance.variable, recommendation.value),
@@ -185,29 +207,58 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
         if placement.note:
             warn(placement.note)
     base = current if current is not None else recommended
-    clf = cyclic_load_factor(base, dt)
-    mean = float(np.sum(base * dt) / np.sum(dt))
-    rms = clf * mean
-    summary += [
-        Scalar("rms_net_torque", rms),
-        Scalar("cyclic_load_factor", clf),
-        Scalar("rms_motor_power", rms * 2.0 * np.pi * frequency / drive_efficiency),
-    ]
-    summary += _loading(rated, card.load.max(), linkage.stroke, current, recommended, theta)
+    summary += _duty("recommended_", recommended, dt, frequency, energy)
+    summary += _loading(unit.name, rated, card.load.max(), linkage.stroke, current, recommended, theta)
     if dense.exact is not None:
         summary.append(Scalar("peak_exact_minus_api_torque", peak(theta, dense.exact - dense.api).value))
     columns = _columns(linkage, out, balance_known, shifted(out, recommendation.value), rated)
     headline = next(c for c in columns if c.name == ("net_torque" if balance_known else "recommended_net_torque"))
     levels = _rating_levels(rated)
-    card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency), Scalar("card_work", work),
+    high, low = int(np.argmax(card.load)), int(np.argmin(card.load))
+    card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency),
+                    Scalar("max_rod_load", float(card.load[high])),
+                    Scalar("max_rod_load_crank_angle", float(card.crank_angle[high])),
+                    Scalar("min_rod_load", float(card.load[low])),
+                    Scalar("min_rod_load_crank_angle", float(card.crank_angle[low])),
+                    Scalar("card_work", work),
                     Scalar("polished_rod_power", work * frequency))
-    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(columns, levels, balance_known), headline,
+    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(linkage, out.run, columns, levels,
+                                                                            balance_known), headline,
                       peak(theta, base).value, levels)
 
 
-def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommended, theta) -> list[Scalar]:
-    """Loading against the ratings that are known (fractions, shown in %)."""
-    found = []
+def _duty(prefix: str, net: np.ndarray, dt: np.ndarray, frequency: float, energy: Energy) -> list[Scalar]:
+    """The duty of a net torque on the summary grid: RMS (equivalent) torque, cyclic load factor,
+    motor power by the RMS-equivalent rule and the NEMA size that covers it, energy per day and
+    its cost; names with ``prefix`` (``recommended_`` for the recommended counterbalance)."""
+    clf = cyclic_load_factor(net, dt)
+    mean = float(np.sum(net * dt) / np.sum(dt))
+    rms = clf * mean
+    power = rms * 2.0 * np.pi * frequency / energy.drive_efficiency
+    found = [Scalar(prefix + "rms_net_torque", rms), Scalar(prefix + "cyclic_load_factor", clf),
+             Scalar(prefix + "rms_motor_power", power)]
+    size = nema_motor_size(power)
+    if size is None:
+        warn(f"the motor power {power / HORSEPOWER:.4g} hp{' (recommended counterbalance)' if prefix else ''} is "
+             f"beyond the largest standard NEMA rating, 500 hp")
+    else:
+        found.append(Scalar(prefix + "nema_motor_size", size))
+    daily = driving_work(net) * frequency * DAY / (energy.drive_efficiency * energy.motor_efficiency)
+    found.append(Scalar(prefix + "motor_energy", daily))
+    if energy.price is not None:
+        found.append(Scalar(prefix + "energy_cost", daily * energy.price))
+    return found
+
+
+#: Stroke loading above 100 % by more than this share is explained by a warning.
+STROKE_NOTE = 5e-4
+
+
+def _loading(name: str, rated: Ratings, peak_load: float, stroke: float, current, recommended,
+             theta) -> list[Scalar]:
+    """Loading against the ratings that are known (fractions, shown in %); a warning when the
+    geometry's exact stroke exceeds the rated maximum stroke."""
+    found = [Scalar("stroke", stroke)]
     if rated.gearbox_torque is not None:
         found.append(Scalar("gearbox_rating", rated.gearbox_torque))
         if current is not None:
@@ -219,6 +270,11 @@ def _loading(rated: Ratings, peak_load: float, stroke: float, current, recommend
     if rated.max_stroke is not None:
         found += [Scalar("max_stroke", rated.max_stroke),
                   Scalar("stroke_loading", stroke / rated.max_stroke)]
+        if stroke > rated.max_stroke * (1.0 + STROKE_NOTE):
+            warn(f"unit {name}: stroke loading {100.0 * stroke / rated.max_stroke:.4g} %: the geometry's exact stroke "
+                 f"{stroke / INCH:.4g} in ({stroke:.4g} m) is longer than the rated maximum {rated.max_stroke / INCH:.4g} "
+                 f"in ({rated.max_stroke:.4g} m); a designation states the stroke rounded, the letters give it "
+                 f"exactly: check the crank hole and the letters")
     return found
 
 
@@ -263,14 +319,31 @@ def _rating_levels(rated: Ratings) -> tuple[tuple[str, float], ...]:
                                                     ("", -rated.gearbox_torque))
 
 
-def _panels(columns: list[Column], levels: tuple[tuple[str, float], ...], balance_known: bool) -> tuple[Panel, ...]:
+def _permissible_branches(linkage, run: CardRun, columns: list[Column]) -> tuple[Curve, ...]:
+    """The permissible load diagram ([GaultSWPSC]) against the polished-rod position, in its
+    upstroke and downstroke branches (NaN off the branch), each with its upper and lower bound."""
+    by_name = {c.name: c.values for c in columns}
+    position = linkage.motion(run.crank_angle).rod_position
+    up = upstroke_mask(linkage, run.crank_angle)
+    curves = []
+    for stroke, mask, colour in (("upstroke", up, "tab:green"), ("downstroke", ~up, "tab:orange")):
+        x = tuple(np.where(mask, position, np.nan).tolist())
+        for bound, style, words in (("max", "--", "largest"), ("min", ":", "smallest")):
+            y = tuple(np.where(mask, by_name[f"permissible_load_{bound}"], np.nan).tolist())
+            curves.append(Curve(f"{stroke}: {words} permissible load", x, y, quantity="length", y_quantity="force",
+                                style=style, color=colour))
+    return tuple(curves)
+
+
+def _panels(linkage, run: CardRun, columns: list[Column], levels: tuple[tuple[str, float], ...],
+            balance_known: bool) -> tuple[Panel, ...]:
     names = {c.name for c in columns}
     panels = []
     if "permissible_load_min" in names:
-        panels.append(Panel("card and permissible loads", ("rod_load",), ("permissible_load_min", "permissible_load_max"),
-                            x="position", clip=True))
+        panels.append(Panel("card and permissible loads", ("rod_load",), x="position", clip=True,
+                            curves=_permissible_branches(linkage, run, columns), labels=(("rod_load", "card"),)))
     else:
-        panels.append(Panel("card", ("rod_load",), x="position"))
+        panels.append(Panel("card", ("rod_load",), x="position", labels=(("rod_load", "card"),)))
     panels.append(Panel("net torque", ("net_torque",) if balance_known else ("recommended_net_torque",),
                         ("recommended_net_torque",) if balance_known else (), levels=levels))
     panels.append(Panel("torque components", ("rod_load_torque", "structural_torque", "articulating_inertia_torque",

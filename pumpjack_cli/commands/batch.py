@@ -11,12 +11,12 @@ from typer.core import TyperGroup
 from ..analysis.batch.executors import default_workers
 from ..analysis.batch.per_card import ANALYSES, Options
 from ..analysis.batch.run import run_batch
-from ..analysis.store_views import export_result, trend_result
+from ..analysis.store_views import export_result, field_page, trend_result
 from ..errors import PumpjackError
 from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, CatalogueOption, FormatOption, Output,
-                       OutputOption, UnitSystem, finite)
+                       OutputOption, UnitsOption, UnitSystem, finite)
 
-VERBS = ("run", "export", "trend")
+VERBS = ("run", "export", "trend", "report")
 
 
 class BatchGroup(TyperGroup):
@@ -103,6 +103,19 @@ def trend(
     sink = Output(fmt, UnitSystem.si, out, None)
     result = trend_result(store, well)
     sink.emit(result, tuple(c.name for c in result.columns))
+
+
+@app.command("report")
+def report(
+    store: StoreOption,
+    units: UnitsOption = UnitSystem.si,
+    out: OutputOption = None,
+) -> None:
+    """A field on one page: each well's latest card, sortable, linking to its cards (self-contained HTML)."""
+    from ..render import PageOutput
+
+    sink = PageOutput(units.value, out)
+    sink.emit(field_page(store))
 
 
 def _terminal() -> bool:

@@ -7,12 +7,13 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.torque import torque as run
+from ..analysis.torque import Energy, torque as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 from ..options import What, WhatOption
+from ..quantities import KWH
 from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
@@ -51,6 +52,12 @@ def torque(
     drive_efficiency: Annotated[float, typer.Option(
         help="efficiency of belt and gearbox between motor and crank, for the motor power", min=0.1, max=1.0,
         callback=finite)] = 1.0,
+    motor_efficiency: Annotated[float, typer.Option(
+        help="efficiency of the motor, for the energy it takes a day [default: 1, the energy at its shaft]", min=0.1,
+        max=1.0, callback=finite)] = 1.0,
+    electricity_price: Annotated[float | None, typer.Option(
+        help="price of a kWh of electricity, in any currency: the energy cost per day is given in the same "
+             "currency", min=0.0, max=1e6, callback=finite)] = None,
     catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
@@ -64,7 +71,8 @@ def torque(
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    energy = Energy(drive_efficiency, motor_efficiency, None if electricity_price is None else electricity_price / KWH)
     result = run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
-                 method.value, balance.value, drive_efficiency)
+                 method.value, balance.value, drive_efficiency, energy)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

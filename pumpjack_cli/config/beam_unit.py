@@ -13,7 +13,7 @@ import dataclasses
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-from pydantic import Discriminator, Field, Tag, ValidationInfo, field_validator
+from pydantic import Discriminator, Field, Tag, ValidationInfo, field_validator, model_validator
 
 from ..core.designations import parse_designation
 from ..errors import ConfigError, DesignationError
@@ -146,6 +146,20 @@ class CounterbalanceConfig(Section):
         default=None, ge=0, le=1e7, description="M: largest moment of cranks and counterweights about the shaft [N·m]")
     phase: Angle = Field(default=0.0, gt=-math.pi, le=math.pi,
                          description="tau: crank offset angle, 0 for conventional units [rad]")
+    counterbalance_effect: Force | None = Field(
+        default=None, ge=0, le=1e7,
+        description="CBE: the polished-rod load the counterbalance holds at counterbalance_effect_angle, as a crew "
+        "measures it; instead of moment (or of the kind's own balancing variable) [N]")
+    counterbalance_effect_angle: Angle | None = Field(
+        default=None, gt=0, lt=2 * math.pi,
+        description="crank angle at which counterbalance_effect was measured, from 12 o'clock in the direction of "
+        "rotation [default: the cranks horizontal on the upstroke, 90 deg, 270 deg on a Mark II] [rad]")
+
+    @model_validator(mode="after")
+    def _moment_or_effect(self) -> "CounterbalanceConfig":
+        if self.moment is not None and self.counterbalance_effect is not None:
+            raise ValueError("give moment or counterbalance_effect, not both")
+        return self
 
 
 class UnitConfig(Section):
@@ -236,12 +250,45 @@ class UnitConfig(Section):
 
     def counterbalance_model(self) -> tuple[CounterbalanceModel, bool]:
         """The structure and counterbalance of the unit's kind (its geometry's ``counterbalance()``)
-        and whether the present counterbalance is known."""
+        and whether the present counterbalance is known; a measured ``[counterbalance]
+        counterbalance_effect`` sets the kind's balancing variable (the moment M of crank
+        counterweights) through the kind's own model
+        (:func:`~pumpjack_cli.core.beam.counterbalance.value_for_effect`)."""
         try:
-            return self.geometry.counterbalance(self.counterbalance,
-                                                self.masses.model() if self.masses is not None else None)
+            model, known = self.geometry.counterbalance(self.counterbalance,
+                                                        self.masses.model() if self.masses is not None else None)
         except ConfigError as exc:
             raise ConfigError(f"unit {self.name}: {exc}") from None
+        given = self.counterbalance
+        if given is None or given.counterbalance_effect is None:
+            return model, known
+        if known:
+            raise ConfigError(f"unit {self.name}: [counterbalance] counterbalance_effect: the present "
+                              f"{model.variable.replace('_', ' ')} is given too; give one of them")
+        return self._measured_counterbalance(model, given.counterbalance_effect, given.counterbalance_effect_angle), True
+
+    def _measured_counterbalance(self, model: CounterbalanceModel, effect: float,
+                                 angle: float | None) -> CounterbalanceModel:
+        """The counterbalance whose effect at crank angle ``angle`` [rad] (None: the cranks horizontal on the
+        upstroke, :func:`~pumpjack_cli.core.beam.counterbalance.upstroke_test_angle`) is ``effect`` [N]."""
+        import numpy as np
+
+        from ..core.beam.counterbalance import upstroke_test_angle, value_for_effect
+        from ..errors import TorqueError
+
+        if angle is None:
+            angle = upstroke_test_angle(self.geometry.mechanism())
+
+        where = f"unit {self.name}: [counterbalance] counterbalance_effect"
+        try:
+            value = value_for_effect(self.geometry.mechanism().motion(np.array([angle])), model, effect)
+        except TorqueError as exc:
+            raise ConfigError(f"{where}: {exc}") from None
+        if not math.isfinite(value) or value < 0:
+            raise ConfigError(f"{where}: {effect:.6g} N at {math.degrees(angle):.4g} deg gives a "
+                              f"{model.variable.replace('_', ' ')} of {value:.6g} {model.symbol}, below 0; check the "
+                              f"effect, its angle and structural_unbalance")
+        return model.with_value(value)
 
     def ratings(self) -> Ratings:
         """The unit's ratings: its ``designation`` (or its name when that is a designation),

@@ -50,6 +50,7 @@ def at_least(minimum: float, shown: str) -> AfterValidator:
             raise ValueError(f"{value:.3g} is too small: give at least {shown} (SI {minimum:g})")
         return value
 
+    check.minimum, check.shown = minimum, shown  # read by docs/unit-files.md's generator (.reference)
     return AfterValidator(check)
 
 

@@ -30,7 +30,7 @@ from .plot import draw_plot
 from .table import FILE_TABLE_WIDTH, write_table
 from .targets import Target, drop_stdout, standard_output
 
-__all__ = ["Outputs", "drop_stdout"]
+__all__ = ["Outputs", "PageOutput", "drop_stdout"]
 
 _WRITERS = {CSV: write_csv, JSON: write_json, TABLE: write_table}
 
@@ -84,3 +84,32 @@ class Outputs:
         finally:
             for target in targets:
                 target.discard()
+
+
+class PageOutput:
+    """Where a page of results goes (:mod:`.html`): an ``--output`` file, checked when the command
+    starts and written atomically, or standard output."""
+
+    def __init__(self, system: str, output: Path | None):
+        if output is None and sys.stdout is None:
+            raise PumpjackError("standard output is closed: give --output FILE")
+        if output is not None and output.suffix.lower() not in (".html", ".htm"):
+            raise PumpjackError(f"--output {output}: a page is HTML; use a file ending in .html")
+        self.system = system
+        self.output = None if output is None else Target(output, "--output")
+
+    def emit(self, page) -> None:
+        """Write the page; one line on failure, nothing half-written."""
+        from .html import write_html
+
+        if self.output is None:
+            with standard_output() as stream:
+                write_html(page, self.system, stream)
+            return
+        self.output.refuse_input()
+        try:
+            with self.output.written() as stream:
+                write_html(page, self.system, stream)
+            self.output.commit()
+        finally:
+            self.output.discard()

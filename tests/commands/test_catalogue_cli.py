@@ -52,14 +52,19 @@ def test_every_command_that_takes_a_unit_takes_a_catalogue(run_cli, command):
     assert code == 0 and "--catalogue" in out
 
 
+def _without_stroke_note(err: str) -> str:
+    """stderr less `torque`'s note on the stroke loading (C-80D-133-48's letters give 49.36 in, its rating 48 in)."""
+    return "".join(line for line in err.splitlines(keepends=True) if "stroke loading" not in line)
+
+
 @pytest.mark.parametrize("command", [("kinematics", "--spm", "8", "--steps", "36"),
                                      ("torque", "--card", CARD, "--steps", "36")])
 def test_a_command_on_a_catalogue_unit_prints_what_its_unit_file_gives(run_cli, tmp_path, command):
     name, *options = command
     code, by_row, err = run_cli(name, "C-80D-133-48/1", "--catalogue", catalogue(tmp_path), *options, "-f", "json")
-    assert (code, err) == (0, "")
+    assert (code, _without_stroke_note(err)) == (0, "")
     code, by_file, err = run_cli(name, unit_file(tmp_path), *options, "-f", "json")
-    assert (code, err) == (0, "")
+    assert (code, _without_stroke_note(err)) == (0, "")
     row, file = json.loads(by_row), json.loads(by_file)
     assert (row["summary"], row["series"]) == (file["summary"], file["series"])
 
@@ -68,9 +73,9 @@ def test_torque_on_the_sample_catalogue_balances_as_the_bundled_unit(run_cli):
     """C-80D-133-48/1 of the sample has the bundled C-80D-133-48's geometry and B; the recommended
     counterbalance (which does not depend on the present moment M, not in a catalogue) is the same."""
     code, out, err = run_cli("torque", "C-80D-133-48/1", "--catalogue", SAMPLE, "--card", CARD, "-f", "json")
-    assert (code, err) == (0, "")
+    assert (code, _without_stroke_note(err)) == (0, "")
     code, bundled, err = run_cli("torque", "c-80d-133-48", "--card", CARD, "-f", "json")
-    assert (code, err) == (0, "")
+    assert (code, _without_stroke_note(err)) == (0, "")
     name = "recommended_counterbalance_moment_n_m"
     assert json.loads(out)["summary"][name] == json.loads(bundled)["summary"][name]
 

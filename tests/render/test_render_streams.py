@@ -36,7 +36,9 @@ def _document(result: Result, system: str) -> str:
         "columns": {f"position_{unit}": {"unit": unit, "description": position.description},
                     "name": {"unit": "", "description": name.description},
                     "value": {"unit": "", "description": "stored"}},
-        "series": {f"position_{unit}": [float(v) * factor for v in position.values], "name": list(name.values),
+        # a converted value is written to 15 significant digits (README "Output"), an SI one as computed
+        "series": {f"position_{unit}": [float(v) * factor if factor == 1.0 else float(f"{float(v) * factor:.15g}")
+                                        for v in position.values], "name": list(name.values),
                    "value": list(value.values)},
     }
     return json.dumps(document, indent=1) + "\n"

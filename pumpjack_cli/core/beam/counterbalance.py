@@ -299,6 +299,56 @@ def counterbalance_effect(test: Motion, balance: CounterbalanceModel) -> float:
     return -float(balance.structural_torque(test)[0] + balance.counterbalance_torque(test)[0]) / tf
 
 
+def value_for_effect(test: Motion, balance: CounterbalanceModel, effect: float) -> float:
+    """The balancing variable that makes the counterbalance effect at the test position ``effect``
+    [N]: the inverse of :func:`counterbalance_effect` for the unit's own counterbalance model.
+
+    The counterbalance torque is affine in the variable v, T_c(v) = T_c(v0) + (v - v0) g, so
+    from CBE TF = -(T_s + T_c(v)) at theta_t: v = v0 - (CBE TF + T_s + T_c(v0)) / g. For crank
+    counterweights (g = -sin(theta_t - tau)) this is M = (CBE - B) TF(theta_t) / sin(theta_t - tau),
+    the moment a crew's measured CBE stands for ([Rowlan2004]; [API11E]).
+
+    Parameters
+    ----------
+    test : Motion
+        The mechanism's motion at the one test crank angle theta_t (where the CBE was measured).
+    balance : CounterbalanceModel
+        The structure and counterbalance; its present value is replaced.
+    effect : float
+        CBE [N], the polished-rod load the counterbalance holds at theta_t.
+
+    Returns
+    -------
+    float
+        The balancing variable (M [N·m] for crank counterweights).
+
+    References
+    ----------
+    [Rowlan2004]; [API11E].
+
+    Examples
+    --------
+    The example of :func:`counterbalance_effect` backwards: CBE = 38 115.7 N at 90 deg with
+    B = 1000 N gives M = (38 115.7 - 1000) x 1.3471 = 50 000 N·m.
+
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> test = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0).motion(np.array([math.pi / 2]))
+    >>> round(value_for_effect(test, Counterbalance(1000.0, 0.0), 38115.7), -1)
+    50000.0
+    """
+    tf = float(test.torque_factor[0])
+    per_value = float(balance.torque_per_value(test)[0])
+    angle = math.degrees(float(test.crank_angle[0]))
+    if not abs(tf) > 0 or not math.isfinite(tf):
+        raise TorqueError(f"counterbalance effect: the torque factor at the test angle {angle:.4g} deg is {tf:.4g} m; "
+                          f"give the effect measured away from the dead positions")
+    if not abs(per_value) > 0 or not math.isfinite(per_value):
+        raise TorqueError(f"counterbalance effect: at the test angle {angle:.4g} deg the counterbalance exerts no "
+                          f"torque, so the effect measured there does not tell it")
+    own = float(balance.structural_torque(test)[0] + balance.counterbalance_torque(test)[0])
+    return balance.value - (effect * tf + own) / per_value
+
+
 # --- realising a moment with counterweight blocks ----------------------------------
 
 

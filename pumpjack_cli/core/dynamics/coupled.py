@@ -21,7 +21,7 @@ work (weights and kinetic energy return), a check reported in the summary.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -157,9 +157,13 @@ class _Channels:
         return m.bottom @ modal_velocity(m, states), m.bottom @ q, (m.participation * m.frequency**2) @ q
 
 
+#: Samples of the uniform prediction that gives the first guess of the mean crank speed.
+START_SAMPLES = 256
+
+
 def predict_coupled(machine: Machine, rods: RodString, pump: Pump, *, damping: float, fluid_density: float,
                     rod_density: float = STEEL_DENSITY, samples: int = 1024, tolerance: float = DEFAULT_TOLERANCE,
-                    max_revolutions: int = MAX_REVOLUTIONS) -> CoupledPrediction:
+                    max_revolutions: int = MAX_REVOLUTIONS, resolution: int = 1024) -> CoupledPrediction:
     """Cards, crank speed and torques of a unit and its well solved together (module docstring).
 
     Parameters
@@ -175,7 +179,10 @@ def predict_coupled(machine: Machine, rods: RodString, pump: Pump, *, damping: f
     fluid_density, rod_density : float
         [kg/m^3].
     samples : int
-        Time steps per revolution N.
+        Time samples per revolution N returned; the march takes N k steps per revolution, k the
+        smallest factor reaching ``resolution`` (the grid of the uniform-rotation prediction,
+        :func:`~pumpjack_cli.core.rods.predict.predict_cards`), and every k-th sample is
+        returned (the summary keeps the fine grid's values).
 
     References
     ----------
@@ -183,9 +190,33 @@ def predict_coupled(machine: Machine, rods: RodString, pump: Pump, *, damping: f
     """
     if not 64 <= samples <= 1 << 16:
         raise PredictionError(f"samples per revolution must lie in 64 .. 65536, got {samples}")
+    factor = max(1, -(-resolution // samples))
+    fine = _solve_coupled(machine, rods, pump, damping, fluid_density, rod_density, samples * factor, tolerance,
+                          max_revolutions)
+    return fine if factor == 1 else _every(fine, factor)
+
+
+def _every(fine: CoupledPrediction, factor: int) -> CoupledPrediction:
+    """Every ``factor``-th sample of a coupled prediction (from the first), the summary kept."""
+    pick = slice(None, None, factor)
+    c = fine.cards
+    columns = ("time", "crank_angle", "polished_rod_position", "polished_rod_velocity", "polished_rod_load",
+               "plunger_position", "pump_load", "chamber_pressure")
+    cards = replace(c, **{name: getattr(c, name)[pick] for name in columns},
+                    taper_top_load=c.taper_top_load[:, pick], taper_bottom_load=c.taper_bottom_load[:, pick])
+    return replace(fine, cards=cards, **{name: getattr(fine, name)[pick] for name in (
+        "crank_speed", "crank_acceleration", "motor_torque", "net_torque", "rod_load_torque", "gravity_torque",
+        "inertia_torque")})
+
+
+def _solve_coupled(machine: Machine, rods: RodString, pump: Pump, damping: float, fluid_density: float,
+                   rod_density: float, samples: int, tolerance: float, max_revolutions: int) -> CoupledPrediction:
+    """The coupled march on ``samples`` steps per revolution (:func:`predict_coupled`)."""
     tables = _Tables(machine)
     a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
-    start = predict(rods, pump, _positions(tables, samples), 2.0 * np.pi / machine.rated_crank_speed,
+    # the first guess of the mean speed needs only the card's work: a coarse grid does
+    coarse = min(samples, START_SAMPLES)
+    start = predict(rods, pump, _positions(tables, coarse), 2.0 * np.pi / machine.rated_crank_speed,
                     damping=damping, fluid_density=fluid_density, rod_density=rod_density, tolerance=1e-4)
     omega = (start.summary.surface_card_work / (2.0 * np.pi) - a_u) / b_u2
     if not omega > 0:

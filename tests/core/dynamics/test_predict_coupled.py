@@ -34,7 +34,8 @@ from helpers import RPM, SK8_FLUID_DENSITY, polished_rod_position
 
 @pytest.fixture(scope="module")
 def coupled(sk8_machine, sk8_rods, sk8_pump):
-    return predict_coupled(sk8_machine, sk8_rods, sk8_pump, damping=0.1, fluid_density=SK8_FLUID_DENSITY, samples=512)
+    return predict_coupled(sk8_machine, sk8_rods, sk8_pump, damping=0.1, fluid_density=SK8_FLUID_DENSITY, samples=512,
+                           resolution=512)   # the march's own steps (the tests below count them)
 
 
 def test_stiff_motor_gives_the_uniform_rotation_cards(sk8_machine, sk8_rods, sk8_pump):
@@ -43,7 +44,8 @@ def test_stiff_motor_gives_the_uniform_rotation_cards(sk8_machine, sk8_rods, sk8
     # prediction at the same mean speed: measured 2.2e-3 of the load range, net stroke 1.2e-4.
     stiff = dataclasses.replace(sk8_machine, motor=motor_characteristic(30e3, 1500 * RPM, 1499.5 * RPM, 2.0, 2.2))
     samples = 512
-    coupled = predict_coupled(stiff, sk8_rods, sk8_pump, damping=0.1, fluid_density=SK8_FLUID_DENSITY, samples=samples)
+    coupled = predict_coupled(stiff, sk8_rods, sk8_pump, damping=0.1, fluid_density=SK8_FLUID_DENSITY, samples=samples,
+                              resolution=samples)   # on the grid of the uniform prediction it is compared with
     s = coupled.summary
     assert s.speed_fluctuation < 3e-3
     position = polished_rod_position(stiff.linkage, np.arange(samples) * 2 * np.pi / samples)
