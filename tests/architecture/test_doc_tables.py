@@ -314,6 +314,17 @@ EXEMPT: dict[tuple[str, str], str] = {
                     "tapers with sinker bars |"):
         "convergence of the core's finite-difference march, measured by tests/core/rods/test_rods_downhole.py",
     ("downhole.md", "| claim | test |"): "test list",
+    ("deviated.md", "| claim | test | measured |"): "test list with the tolerances the tests measure",
+    ("deviated.md", "| | pump-card work | plunger position | upstroke level | downstroke level | rms load error | "
+                    "drag work |"): "the round trip measured by tests/core/rods/test_deviated_round_trip.py",
+    ("deviated.md", "| steps | nodes | PPRL [kN] | MPRL [kN] | pump work [kJ] | drag work [kJ] | energy residual |"):
+        "convergence study of the core's time march, benchmarks/deviated_convergence.py",
+    ("deviated.md", "| η | PPRL [kN] | MPRL [kN] | drag work [kJ] | rms change of the polished-rod load from the η "
+                    "above [% of F_o] |"): "convergence study of the drag's band, benchmarks/deviated_convergence.py",
+    ("deviated.md", "| diagnostic η | segments at most [m] | pump work | plunger position [% of stroke] | upstroke level "
+                    "| downstroke level | rms load error | drag work |"):
+        "convergence study of the diagnostic march, benchmarks/deviated_convergence.py",
+    ("deviated.md", "| | value | source |"): "model settings and their sources",
     ("dynamics.md", "| part | inertia on its shaft | at the crank | source |"): "input data of the unit and its sources",
     ("dynamics.md", "| quantity | [SK8Rotation2013] | here |"):
         "prose comparison with the source; its numbers are the console example's (test_docs_commands.py)",
