@@ -146,3 +146,12 @@ def quantity(text: str | None, dimension: str, option: str) -> float | None:
 ServiceFactorOption = Annotated[float, typer.Option(
     help="service factor of the modified Goodman diagram (1: non-corrosive)", min=0.1, max=1.0, callback=finite)]
 
+
+
+def production_share(text: str | None, dimension: str, option: str) -> float | None:
+    """A share in (0, 1] given with its unit (``--runtime "18 h"`` or ``"75 %"``, ``--pump-efficiency
+    "85 %"``); None when not given; a value outside (0, 100 %] is refused naming the option."""
+    share = quantity(text, dimension, option)
+    if share is not None and not 0.0 < share <= 1.0:
+        raise PumpjackError(f"{option}: {text!r} is outside 0 .. 100 % (24 h a day)")
+    return share

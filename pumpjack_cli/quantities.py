@@ -27,6 +27,8 @@ KILOGRAM_FORCE = 9.80665
 HORSEPOWER = 745.69987158227022
 #: Oil barrel, 42 US gallons of 231 in^3 [NIST811].
 BARREL = 42 * 231 * INCH**3
+#: Kilowatt hour [J] [NIST811].
+KILOWATT_HOUR = 3.6e6
 
 #: Accepted input units for each dimension: normalised unit text -> factor to SI.
 INPUT_UNITS: dict[str, dict[str, float]] = {
@@ -77,6 +79,11 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     # weights of a pound and a kilogram per unit length, as rod tables print them
     "weight_per_length": {"n/m": 1.0, "kn/m": 1e3, "lbf/ft": POUND_FORCE / FOOT, "lb/ft": POUND_FORCE / FOOT,
                           "kgf/m": KILOGRAM_FORCE, "kg/m": KILOGRAM_FORCE},
+    "flow_rate": {"m3/s": 1.0, "m3/d": 1 / 86400, "bbl/d": BARREL / 86400, "l/s": 1e-3, "l/min": 1e-3 / 60},
+    # the share of the day a unit runs: a percentage or hours per day
+    "runtime": {"%": 1e-2, "h/d": 1 / 24, "h": 1 / 24},
+    # a price per unit of energy, in any currency: SI per joule
+    "energy_price": {"/kwh": 1 / KILOWATT_HOUR, "/mwh": 1e-3 / KILOWATT_HOUR, "/j": 1.0, "/mj": 1e-6},
 }
 
 #: Other spellings of the units above, normalised text -> key: English names, and the
@@ -94,13 +101,15 @@ UNIT_SPELLINGS = {
 _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
                   "rotational_speed": "rpm", "angle": "deg", "rotational_stiffness": "N*m/rad", "power": "kW", "density": "kg/m3",
                   "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
-                  "pressure": "MPa", "weight_per_length": "lbf/ft"}
+                  "pressure": "MPa", "weight_per_length": "lbf/ft",
+                  "runtime": "h/d", "energy_price": "/kWh", "flow_rate": "m3/d"}
 
 #: The SI unit every value of a dimension is converted to, as messages print it.
 SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "moment_of_inertia": "kg·m²",
              "rotational_speed": "rad/s", "angle": "rad", "rotational_stiffness": "N·m/rad", "power": "W",
              "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
-             "pressure": "Pa", "weight_per_length": "N/m"}
+             "pressure": "Pa", "weight_per_length": "N/m",
+             "runtime": "", "energy_price": "/J", "flow_rate": "m³/s"}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 
@@ -244,6 +253,11 @@ OUTPUT_QUANTITIES: dict[str, dict[str, OutputUnit]] = {
         "si": OutputUnit("kg·m²", "kg_m2", 1.0),
         "field": OutputUnit("lb·ft²", "lb_ft2", 1 / (POUND_MASS * FOOT**2)),
     },
+    # energy per day, held as its mean power over the day [W]; shown in kWh per day
+    "daily_energy": {"si": OutputUnit("kWh/d", "kwh_d", 86400.0 / KILOWATT_HOUR),
+                     "field": OutputUnit("kWh/d", "kwh_d", 86400.0 / KILOWATT_HOUR)},
+    # money per day in the currency of the price given, held per second
+    "cost_rate": {"si": OutputUnit("/d", "per_d", 86400.0), "field": OutputUnit("/d", "per_d", 86400.0)},
 }
 
 UNIT_SYSTEMS = ("si", "field")

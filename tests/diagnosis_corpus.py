@@ -34,16 +34,18 @@ CONDITIONS = ("full", "fluid_pound", "gas_interference", "travelling_valve_leak"
 #: Severities per condition (mild to severe), as the fault model's parameter:
 #: full: the fluid level as a share of the well's submergence; fluid_pound, gas: the liquid
 #: fillage; leaks: the leak at the full pressure difference / the pump's displacement rate
-#: (below about 0.5 a leak hardly changes the card: docs/diagnosis.md); tagging: the
-#: interference [m]; unanchored: the API tubing size; rod_part: the break's share of the depth.
+#: (below about 0.8 a leak hardly changes the card: docs/diagnosis.md); tagging: the
+#: interference as a share of the rods' stretch under the fluid load F_o / k_r (the
+#: compression a stop puts on the rods, k_r x interference, against F_o); unanchored: the
+#: API tubing size; rod_part: the break's share of the depth.
 SEVERITIES = {
     "full": (1.0, 0.4, 2.5),
     "fluid_pound": (0.8, 0.65, 0.45),
     "gas_interference": (0.85, 0.7, 0.5),
     "travelling_valve_leak": (0.8, 1.2, 1.6),
     "standing_valve_leak": (0.8, 1.2, 1.6),
-    "tagging_down": (0.05, 0.08, 0.12),
-    "tagging_up": (0.05, 0.08, 0.12),
+    "tagging_down": (0.2, 0.3, 0.45),
+    "tagging_up": (0.2, 0.3, 0.45),
     "unanchored_tubing": ("3-1/2", "2-7/8", "2-3/8"),
     "rod_part": (0.85, 0.55, 0.25),
 }
@@ -138,9 +140,10 @@ def case(name: str, spm: float | None, condition: str, severity) -> Case:
         pump = replace(pump, standing_valve_leak=severity * displacement)
     elif condition in ("tagging_down", "tagging_up"):
         free = _free(name, spm)
+        interference = severity * pump.fluid_load / rods.spring_constant
         bottom, top = tag_stops(free.plunger_position, free.pump_load, pump,
-                                severity if condition == "tagging_down" else None,
-                                severity if condition == "tagging_up" else None)
+                                interference if condition == "tagging_down" else None,
+                                interference if condition == "tagging_up" else None)
         pump = replace(pump, bottom_stop=bottom, top_stop=top)
     elif condition == "unanchored_tubing":
         pump = replace(pump, tubing_stiffness=tubing_stiffness(severity, well.pump_depth))

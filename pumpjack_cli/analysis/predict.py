@@ -11,7 +11,7 @@ stress and Goodman summary of `pumpjack downhole` ([API11BR]).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -22,6 +22,7 @@ from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.predict import Prediction, predict_cards
+from ..core.rods.pump_faults import hanging_pump, parted_damping, parted_string, tag_stops
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
@@ -93,6 +94,66 @@ def with_overrides(unit: UnitConfig, overrides: WellOverrides):
     return unit.model_copy(update={"well": changed})
 
 
+@dataclass(frozen=True)
+class Faults:
+    """Pump faults to simulate (:mod:`pumpjack_cli.core.rods.pump_faults`), SI; None: none. A valve's
+    leak at the full fluid-load pressure difference [m^3/s], or as a share of the pump's
+    displacement rate (A_p S N with the polished-rod stroke S); the interference of a stop at
+    the bottom or top [m]: how far short of the end of its free stroke the plunger meets it;
+    the depth along the rods [m] or the share of the pump depth where the string is parted."""
+
+    travelling_valve_leak: float | None = None
+    standing_valve_leak: float | None = None
+    leak_shares: tuple[float | None, float | None] = (None, None)
+    tag_bottom: float | None = None
+    tag_top: float | None = None
+    parted_at: float | None = None
+    parted_share: float | None = None
+
+    @property
+    def any(self) -> bool:
+        """True when a fault is asked for."""
+        return any(value is not None for value in (self.travelling_valve_leak, self.standing_valve_leak,
+                                                   *self.leak_shares, self.tag_bottom, self.tag_top,
+                                                   self.parted_at, self.parted_share))
+
+    def words(self) -> str:
+        """The faults for a title: "travelling valve leak, tagging down"."""
+        found = [name for name, on in (
+            ("travelling valve leak", self.travelling_valve_leak is not None or self.leak_shares[0] is not None),
+            ("standing valve leak", self.standing_valve_leak is not None or self.leak_shares[1] is not None),
+            ("tagging down", self.tag_bottom is not None), ("tagging up", self.tag_top is not None),
+            ("parted rods", self.parted_at is not None or self.parted_share is not None)) if on]
+        return ", ".join(found)
+
+
+def _faulty(unit: UnitConfig, string, well_pump, omega: float, nu: float, samples: int, faults: Faults):
+    """The rods, pump and damping of the well with the faults (a parted string keeps the damping
+    force per length of the whole string), and its cards ([Gibbs1963]; :mod:`~pumpjack_cli.core.rods.pump_faults`)."""
+    well, mechanism = unit.well, unit.geometry.mechanism()
+
+    def cards(rods, pump, damping):
+        return predict_cards(mechanism, omega, rods, pump, damping=damping, fluid_density=well.fluid_density,
+                             samples=samples, rod_density=well.rod_density)
+
+    depth = faults.parted_at if faults.parted_share is None else faults.parted_share * string.total_length
+    if depth is not None:
+        if faults.words() != "parted rods":
+            raise PumpjackError("--parted-at: nothing hangs on a parted string's free end; no other pump fault "
+                                "applies")
+        hanging = parted_string(string, depth)
+        return hanging, cards(hanging, hanging_pump(well_pump), parted_damping(string, hanging, nu))
+    displacement = well_pump.plunger_area * mechanism.stroke * omega / (2.0 * np.pi)
+    leaks = [rate if share is None else share * displacement
+             for rate, share in zip((faults.travelling_valve_leak, faults.standing_valve_leak), faults.leak_shares)]
+    pump = replace(well_pump, travelling_valve_leak=leaks[0] or 0.0, standing_valve_leak=leaks[1] or 0.0)
+    if faults.tag_bottom is not None or faults.tag_top is not None:
+        free = cards(string, pump, nu)
+        bottom, top = tag_stops(free.plunger_position, free.pump_load, pump, faults.tag_bottom, faults.tag_top)
+        pump = replace(pump, bottom_stop=bottom, top_stop=top)
+    return string, cards(string, pump, nu)
+
+
 def damping_factor(unit: UnitConfig, given: float | None) -> float:
     """Gibbs' nu: the option, else the unit file's, else the default with a warning ([Gibbs1963])."""
     if given is not None:
@@ -114,9 +175,12 @@ class Predicted:
     crank_acceleration: np.ndarray
     coupled: object | None
     damping: float
+    #: The rods the cards hang from (a parted string's: those above the break); None: the unit's.
+    rods: object | None = None
 
 
-def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
+def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
+              faults: Faults = Faults()) -> Predicted:
     """Solve the well at uniform crank speed (``--spm`` or the drive) or coupled with the machine."""
     if crank_motion not in CRANK_MOTIONS:
         raise PumpjackError(f"--crank-motion {crank_motion}: use one of {', '.join(CRANK_MOTIONS)}")
@@ -124,9 +188,15 @@ def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: i
     if crank_motion == "uniform":
         omega = unit.crank_speed(spm)
         nu = damping_factor(unit, damping)
+        if faults.any:
+            rods, cards = _faulty(unit, string, well_pump, omega, nu, samples, faults)
+            return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu, rods)
         cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
+    if faults.any:
+        raise PumpjackError(f"{faults.words()}: the pump faults are simulated at uniform crank speed "
+                            f"(--crank-motion uniform)")
     if spm is not None:
         raise PumpjackError("--spm sets a uniform crank speed; with --crank-motion dynamic the motor sets the speed")
     for section in ("masses", "drive"):
@@ -251,13 +321,15 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
 
 def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
-            steps: int = SUMMARY_STEPS) -> Result:
+            steps: int = SUMMARY_STEPS, faults: Faults = Faults()) -> Result:
     """The result of `pumpjack predict` (module docstring)."""
     unit = with_overrides(unit, overrides)
-    found = predicted(unit, spm, crank_motion, samples, damping)
+    found = predicted(unit, spm, crank_motion, samples, damping, faults)
     cards = found.cards
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
-    string = unit.rods()
+    if faults.parted_at is not None or faults.parted_share is not None:   # no pump hangs on a parted string
+        summary = [Scalar(s.name, 0.0) if s.name in ("net_pump_stroke", "pump_displacement") else s for s in summary]
+    string = unit.rods() if found.rods is None else found.rods
     joint = np.vstack([cards.taper_top_load, cards.taper_bottom_load[-1:]])
     loads = taper_loads(string, joint)
     summary += taper_summary(string, loads, service_factor)
@@ -287,7 +359,7 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
     if found.coupled is not None:
         panels.insert(1, Panel("crank speed", ("crank_speed",), x="crank_angle"))
     title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
-             f"damping {found.damping:.3g}")
+             f"damping {found.damping:.3g}" + (f", {faults.words()}" if faults.any else ""))
     return Result(title, tuple(summary), tuple(columns), tuple(panels))
 
 

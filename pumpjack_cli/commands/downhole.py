@@ -7,14 +7,15 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.downhole import DEFAULT_SAMPLES
+from ..analysis.downhole import DEFAULT_SAMPLES, Production
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite)
+                       card_source, finite, quantity)
 from ..options import What, WhatOption
-from ..options import CardFormatOption, CardPointsOption, StrokeOption
+from ..options import CardFormatOption, CardPointsOption, StrokeOption, production_share
+from ..errors import PumpjackError
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -41,6 +42,17 @@ def downhole(
              "the energy balance with the well's fluid load]", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int, typer.Option(help="time samples of the card per period", min=16, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    runtime: Annotated[str | None, typer.Option(
+        help="share of the day the unit runs, '75 %' or '18 h', for the inferred production and the energy per day "
+             "[default: no rate is given]")] = None,
+    pump_efficiency: Annotated[str | None, typer.Option(
+        help="stated volumetric efficiency of the pump, '85 %', instead of the slippage from the plunger's clearance "
+             "[default: the slippage, if the well gives plunger_clearance, plunger_length and viscosity]")] = None,
+    drive_efficiency: Annotated[float, typer.Option(
+        help="efficiency of the drive between the supply and the polished rod (motor, belts, gearbox, unit), for the "
+             "energy per day", min=0.05, max=1.0, callback=finite)] = 1.0,
+    electricity_price: Annotated[str | None, typer.Option(
+        help="price of energy, '0.12 /kWh' in any currency, for the cost per day")] = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -49,9 +61,17 @@ def downhole(
 ) -> None:
     """Pump card from a surface dynamometer card through the rod string's wave equation.
 
-    Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
+    Pump strokes, fillage, fluid load and displacement; the pump's condition (full, fluid pound,
+    gas, leaking valves, tagging, unanchored tubing, parted rods) with its evidence; intake
+    pressure, fluid level, inferred production and energy per day; rod stresses and Goodman
+    loading."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    production = Production(production_share(runtime, "runtime", "--runtime"),
+                            production_share(pump_efficiency, "fraction", "--pump-efficiency"), drive_efficiency,
+                            quantity(electricity_price, "energy_price", "--electricity-price"))
+    if production.electricity_price is not None and production.runtime is None:
+        raise PumpjackError("--electricity-price: the cost per day needs --runtime (how long the unit runs a day)")
     result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
-                 damping, samples, service_factor)
+                 damping, samples, service_factor, production)
     sink.emit(result, SHOWN)

@@ -51,9 +51,11 @@ def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) ->
     """What makes a result: the analysis and its options, the unit (its file's content) and the
     row's overrides (a rod-string file by its content)."""
     rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
-    text = json.dumps({"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
-                       "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest},
-                      sort_keys=True)
+    made = {"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
+            "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
+    if job.runtime is not None and analysis == "downhole":  # a row without one keeps the hash stores had before
+        made["runtime"] = job.runtime
+    text = json.dumps(made, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
 
 

@@ -165,14 +165,15 @@ def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
 
 def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
     """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
-    from ..downhole import downhole
+    from ..downhole import Production, downhole
     from ..torque import torque
 
     unit = _unit(job)  # loaded once per process
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
-        result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping)
+        result = downhole(unit, card, job.spm, "auto", "gibbs", options.damping,
+                          production=Production(runtime=job.runtime))
     check_finite(result)
     return converted_summary(result, "si")
 

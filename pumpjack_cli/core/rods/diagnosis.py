@@ -68,11 +68,11 @@ RULES = {
     "no_fluid_load": (0.70, 0.50),     # card fluid load / F_o
     "flat": (0.30, 0.15),              # card fluid load / F_o of a flat card
     "on_zero": (0.15, 0.05),           # |mean load| / F_o of a flat card on the zero line
-    "spike": (0.15, 0.25),             # end-of-stroke spike / card fluid load
+    "spike": (0.13, 0.21),             # end-of-stroke spike / card fluid load
     "incomplete": (0.07, 0.11),        # 1 - fillage
     "sharp": (0.25, 0.15),             # unloading sharpness: released share of the travel to the bottom
-    "lost_slowly": (0.20, 0.40),       # 1 - load of the plunger rising slowly to the top (share of F_o)
-    "gained_slowly": (0.20, 0.40),     # load of the plunger falling slowly to the bottom (share of F_o)
+    "lost_slowly": (0.12, 0.22),       # 1 - load of the plunger rising slowly to the top (share of F_o)
+    "gained_slowly": (0.14, 0.22),     # load of the plunger falling slowly to the bottom (share of F_o)
     "slanted": (0.008, 0.014),         # shorter of the two transfer travels / stroke
     "alike": (0.40, 0.60),             # shorter / longer transfer travel
 }
@@ -269,12 +269,13 @@ def condition_scores(features: CardFeatures) -> np.ndarray:
         alike = ramp(shorter / longer, "alike")
     slanted = ramp(shorter, "slanted") * alike
     valves = np.fmax(lost, gained)
+    pound = incomplete * sharp                     # the load held until the plunger meets the liquid, then dropped
     scores = np.stack([
         np.zeros_like(ratio),                                                  # full: set below
-        loaded * incomplete * sharp * (1.0 - gained),                          # fluid pound
+        loaded * pound,                                                        # fluid pound
         np.fmax(loaded * incomplete * (1.0 - sharp) * (1.0 - gained), 0.6 * stuck),   # gas interference
         loaded * lost * (1.0 - gained),                                        # travelling valve leak
-        np.fmax(loaded * gained * (1.0 - lost), stuck),                        # standing valve leak
+        np.fmax(loaded * gained * (1.0 - lost) * (1.0 - pound), stuck),        # standing valve leak
         loaded * spikes_down,                                                  # tagging down
         loaded * spikes_up,                                                    # tagging up
         loaded * slanted * (1.0 - valves) * (1.0 - incomplete),                # unanchored tubing
@@ -358,10 +359,16 @@ def sequence_conditions(fillage, window: int = SEQUENCE_WINDOW) -> np.ndarray:
     >>> sequence_conditions(marching)[-1], sequence_conditions(jumping)[-1], sequence_conditions(np.full(10, 0.97))[-1]
     ('pump_off', 'gas_interference', 'steady')
     """
-    fill = np.asarray(fillage, dtype=float)
-    if fill.ndim != 1:
-        raise DownholeError(f"a sequence of fillages is one value per card, got shape {fill.shape}")
-    fill = np.nan_to_num(fill, nan=1.0)
+    given = np.asarray(fillage, dtype=float)
+    if given.ndim != 1:
+        raise DownholeError(f"a sequence of fillages is one value per card, got shape {given.shape}")
+    known = np.isfinite(given)
+    result = np.full(given.size, "", dtype=object)
+    result[known] = _sequence(given[known], window)    # a card without a fillage is left out, and empty
+    return result
+
+
+def _sequence(fill: np.ndarray, window: int) -> np.ndarray:
     moves = np.diff(fill, prepend=fill[:1])
     counted = np.where(np.abs(moves) > SEQUENCE_STEP, np.sign(moves), 0.0)
     out = np.full(fill.size, "", dtype=object)
@@ -383,50 +390,20 @@ def sequence_conditions(fillage, window: int = SEQUENCE_WINDOW) -> np.ndarray:
 def balanced_damping(string: RodString, period: float, position, load, fluid_load: float, *, fluid_density: float,
                      fallback: float, method: str = "gibbs") -> tuple[float, str]:
     """Gibbs' nu from the energy balance of the rods with the pump's hydraulic work F_o S_n
-    (:func:`.downhole.damping_from_fluid_load`), and why it is not that balance's when it is not.
-    Returns (nu, reason), the reason empty when the balance held as it is.
+    (:func:`.downhole.damping_from_fluid_load`), or ``fallback`` with the reason when the balance
+    has no root: a card whose pump does less work than F_o S_n even with undamped rods (a parted
+    string, a pump that lifts nothing, a fluid level far higher than the well file says) or more
+    than the largest damping explains. Returns (nu, reason), the reason empty when the balance held.
 
-    * When the pump card balanced with the well's F_o (from its fluid level) carries a fluid
-      load more than :data:`REBALANCE` away from it, the fluid level the well file gives is not
-      the one the card shows ([Rowlan2008]: the card's load against the F_o line): the
-      balance is struck again with the card's own fluid load (twice at most).
-    * When the balance has no root (a parted string, a pump that lifts nothing, a card that
-      does less work than F_o S_n even with undamped rods or more than the largest damping
-      explains), ``fallback``.
-
-    The balance is exact for a full or fluid-pounding pump; on cards whose pump work is not
-    F_o S_n (leaking valves, gas) it drifts (nu 0.06-0.11 for a true 0.10 on the corpus of
-    docs/diagnosis.md), and the labels are made to hold for a damping off by 15 % and more.
+    The balance is exact for a full or fluid-pounding pump with the well's fluid level; on cards
+    whose pump work is not F_o S_n (leaking valves, gas) or with a stale fluid level it drifts
+    (nu 0.02-0.27 for a true 0.07-0.15 on the corpus of docs/diagnosis.md), and the labels are
+    made to hold for such a damping and 15 % either side of it.
     """
-    from .analysis import summarise_pump_card
-    from .downhole import damping_from_fluid_load, pump_card
-
-    def balance(target: float) -> float:
-        return damping_from_fluid_load(string, period, position, load, target, fluid_density=fluid_density,
-                                       method=method)
-
-    def card_fluid_load(nu: float) -> float:
-        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method)
-        return float(summarise_pump_card(card.pump_position, card.pump_load).fluid_load)
+    from .downhole import damping_from_fluid_load
 
     try:
-        nu = balance(fluid_load)
+        return damping_from_fluid_load(string, period, position, load, fluid_load, fluid_density=fluid_density,
+                                       method=method), ""
     except DownholeError as exc:
         return fallback, str(exc)
-    reason = ""
-    for _ in range(2):
-        found = card_fluid_load(nu)
-        if not abs(found / fluid_load - 1.0) > REBALANCE:
-            break
-        try:
-            nu, fluid_load = balance(found), found
-        except DownholeError:
-            break
-        reason = (f"the pump card's fluid load {found / 1e3:.4g} kN is not the well's F_o from its fluid level: the "
-                  f"damping is balanced with the card's own")
-    return nu, reason
-
-
-#: The card's fluid load may differ from the well's F_o by this share before the damping is
-#: balanced with the card's own (:func:`balanced_damping`).
-REBALANCE = 0.05
