@@ -62,8 +62,8 @@ def study(wells, dampings, records: list | None = None) -> tuple[collections.Cou
         for item in corpus.cases(wells, SEVERITIES):
             for samples in SAMPLES:
                 seed += 1
-                for scale in DAMPING_SCALES:
-                    found, nu, _ = corpus.diagnosed(item, samples, 0.01, seed, scale)
+                for scale, (found, nu, _) in zip(DAMPING_SCALES, corpus.diagnosed(item, samples, 0.01, seed,
+                                                                                 DAMPING_SCALES)):
                     label = str(found.label[0])
                     if records is not None:
                         records.append((item.well, item.spm, damping, item.condition, item.severity, samples, scale,

@@ -165,11 +165,11 @@ def cases(wells=WELLS, severities=SEVERITIES, conditions=CONDITIONS) -> list[Cas
             for condition in conditions for severity in severities[condition]]
 
 
-def diagnosed(item: Case, samples: int, noise: float = 0.01, seed: int = 0, damping_scale: float = 1.0):
+def diagnosed(item: Case, samples: int, noise: float = 0.01, seed: int = 0, scales=(1.0,)):
     """The diagnosis of a case as `pumpjack downhole` makes it: the surface card with noise, the
-    energy-balance damping (the fallback 0.05 where it has no root) times ``damping_scale``, the
-    Gibbs pump card of the well's rods, the features and label against F_o from the well's fluid
-    level. Returns (Diagnosis, the damping used, the pump card)."""
+    energy-balance damping (the fallback 0.05 where it has no root), the Gibbs pump card of the
+    well's rods at that damping times each of ``scales``, the features and the label against F_o
+    from the well's fluid level. Returns [(Diagnosis, the damping used, the pump card)] per scale."""
     from pumpjack_cli.core.rods.diagnosis import balanced_damping, diagnose
     from pumpjack_cli.core.rods.downhole import DEFAULT_DAMPING_FACTOR, pump_card
 
@@ -178,5 +178,8 @@ def diagnosed(item: Case, samples: int, noise: float = 0.01, seed: int = 0, damp
     position, load = item.card(samples, noise, seed)
     nu, _ = balanced_damping(rods, item.period, position, load, pump.fluid_load, fluid_density=density,
                              fallback=DEFAULT_DAMPING_FACTOR)
-    card = pump_card(rods, item.period, position, load, fluid_density=density, damping_factor=nu * damping_scale)
-    return diagnose(card.pump_position, card.pump_load, pump.fluid_load), nu * damping_scale, card
+    found = []
+    for scale in scales:
+        card = pump_card(rods, item.period, position, load, fluid_density=density, damping_factor=nu * scale)
+        found.append((diagnose(card.pump_position, card.pump_load, pump.fluid_load), nu * scale, card))
+    return found

@@ -36,6 +36,7 @@ by how the fillage moves from card to card.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -160,6 +161,13 @@ class CardFeatures:
 
 
 def card_features(pump_position, pump_load, reference_load) -> CardFeatures:
+    """The features of pump cards (:func:`_features`); empty windows and masks are NaN, quietly."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)      # an all-NaN window: NaN is the answer
+        return _features(pump_position, pump_load, reference_load)
+
+
+def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     """The features of pump cards (module docstring), K cards of one well at once.
 
     Parameters

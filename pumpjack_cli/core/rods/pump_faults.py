@@ -126,7 +126,10 @@ class FaultyChamber(PumpChamber):
         return 0.5 * (low + high)
 
     def _locked(self, known: float) -> tuple[float, float]:
-        """Liquid-filled chamber between shut valves, with the leaks (module docstring)."""
+        """Liquid-filled chamber between shut valves, with the leaks (module docstring); tight valves
+        are the sound chamber's, to the last bit."""
+        if self.travelling_leak == 0.0 and self.standing_leak == 0.0:
+            return super()._locked(known)
         h, c, fo, area = self.interval, self.compliance, self.fluid_load, self.area
         gap = known - self.position
         if gap - c * fo - h * self.travelling_leak / area >= 0.0:      # the standing valve opens
