@@ -426,7 +426,7 @@ SECTIONS: tuple[Section, ...] = (
         E("discharge_pressure", "pressure", "pressure above the plunger: tubing-head pressure + fluid gradient × "
           "the pump's true vertical depth", "p_d"),
         E("pump_submergence", "length", "producing fluid level above the pump from the card's intake pressure and "
-          "the casing-head pressure, gas-free gradient, (p_i − p_c)/(ρ g)", "h"),
+          "the casing-head pressure, gas-free gradient, (p_i − p_c)/(rho g)", "h"),
         E("fluid_level_depth", "length", "producing fluid level below the surface, true vertical: pump true vertical "
           "depth − pump_submergence"),
         E("runtime", "percent", "share of the day the unit runs (--runtime, the manifest's runtime)"),

@@ -52,6 +52,8 @@ class WellOverrides:
     fluid_density: float | None = None
     fillage: float | None = None
     gas_exponent: float | None = None
+    #: An API tubing size ("2-7/8"): the tubing unanchored, stretching under the fluid load.
+    tubing_size: str | None = None
 
 
 #: Override field -> (the well's field, the option that sets it).
@@ -63,6 +65,7 @@ _OVERRIDES = {
     "fluid_density": ("fluid_density", "--fluid-density"),
     "fillage": ("pump_fillage", "--fillage"),
     "gas_exponent": ("gas_exponent", "--gas-exponent"),
+    "tubing_size": ("tubing_size", "--unanchored-tubing"),
 }
 
 
@@ -84,6 +87,8 @@ def with_overrides(unit: UnitConfig, overrides: WellOverrides):
         data["pump_intake_pressure"] = None
     if overrides.intake_pressure is not None:
         data["pump_submergence"] = None
+    if overrides.tubing_size is not None:
+        data["tubing_anchored"] = False
     try:
         changed = type(well).model_validate(data)
     except ValidationError as exc:

@@ -45,6 +45,9 @@ def predict(
     fillage: Annotated[str | None, _well("share of the barrel filled with liquid ('80 %')")] = None,
     gas_exponent: Annotated[float | None, _well(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
+    unanchored_tubing: Annotated[str | None, typer.Option(
+        help="simulate unanchored tubing of this API size (2-3/8, 2-7/8 or 3-1/2): it stretches under the fluid "
+             "load")] = None,
     travelling_valve_leak: Annotated[str | None, typer.Option(
         help="simulate a leaking travelling valve: its leak at the full fluid-load pressure difference, a rate "
              "('5 m3/d', '30 bbl/d') or a share of the pump's displacement ('100 %')")] = None,
@@ -80,6 +83,7 @@ def predict(
         fluid_density=quantity(fluid_density, "density", "--fluid-density"),
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
+        tubing_size=unanchored_tubing,
     )
     leaks = [_leak(text, option) for text, option in ((travelling_valve_leak, "--travelling-valve-leak"),
                                                         (standing_valve_leak, "--standing-valve-leak"))]

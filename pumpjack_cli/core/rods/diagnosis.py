@@ -114,9 +114,33 @@ def _first_crossing(x: np.ndarray, y: np.ndarray, mask: np.ndarray, level: float
     return np.where(found, x[rows, j] + weight * (x[rows, i] - x[rows, j]), np.nan)
 
 
+def _running_median(values: np.ndarray, part: np.ndarray, window: int) -> np.ndarray:
+    """The running median over ``window`` (odd) samples of the samples of ``part`` (a contiguous
+    run of each row, the upstroke or the downstroke), the part's end values standing for the
+    samples beyond its ends; other samples are left as they are."""
+    samples = values.shape[1]
+    index = np.arange(samples)[None, :]
+    first = np.argmax(part, axis=1)[:, None]
+    last = (samples - 1 - np.argmax(part[:, ::-1], axis=1))[:, None]
+    clamped = np.take_along_axis(values, np.clip(index, first, last), axis=1)
+    half = window // 2
+    padded = np.pad(clamped, ((0, 0), (half, half)), mode="edge")
+    view = np.lib.stride_tricks.sliding_window_view(padded, window, axis=1)
+    return np.where(part, np.partition(view, half, axis=-1)[..., half], values)
+
+
+def _masked_median(values: np.ndarray, mask: np.ndarray) -> np.ndarray:
+    """The median of each row's values over its mask; NaN for an empty row."""
+    count = mask.sum(axis=1)
+    ordered = np.sort(np.where(mask, values, np.inf), axis=1)          # the mask's values first
+    low = np.take_along_axis(ordered, np.maximum((count - 1) // 2, 0)[:, None], axis=1)[:, 0]
+    high = np.take_along_axis(ordered, np.minimum(count // 2, values.shape[1] - 1)[:, None], axis=1)[:, 0]
+    return np.where(count > 0, 0.5 * (low + high), np.nan)
+
+
 def _masked(values: np.ndarray, mask: np.ndarray, reduce) -> np.ndarray:
     """``reduce`` (numpy.nanmedian, nanmin, nanmax, nanmean) of values over a mask per row; NaN for an empty row."""
-    empty = ~mask.any(axis=1)
+    empty = np.asarray(~mask.any(axis=1))
     with np.errstate(invalid="ignore"):
         safe = np.where(mask | empty[:, None], np.where(mask, values, 0.0), np.nan)
         return np.where(empty, np.nan, reduce(safe, axis=1))
@@ -205,12 +229,11 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     # (no feature below needs a finer resolution); spikes use a 3-point mean
     window = max(3, (samples // 40) | 1)
     with np.errstate(invalid="ignore"):
-        smooth = np.where(upstroke, np.nanmedian(_circular_window(np.where(upstroke, f, np.nan), window), axis=-1),
-                          np.nanmedian(_circular_window(np.where(downstroke, f, np.nan), window), axis=-1))
+        smooth = _running_median(_running_median(f, upstroke, window), downstroke, window)
     light = _circular_window(f, 3).mean(axis=-1)
 
     def band(mask, limits):
-        return _masked(smooth, mask & (x >= limits[0]) & (x <= limits[1]), np.nanmedian)
+        return _masked_median(smooth, mask & (x >= limits[0]) & (x <= limits[1]))
 
     up, down = band(upstroke, UPSTROKE_BAND), band(downstroke, DOWNSTROKE_BAND)
     fluid = up - down
@@ -345,22 +368,30 @@ def hanging_depth(rods: RodString, hanging_weight, fluid_density: float) -> np.n
     return np.interp(np.asarray(hanging_weight, dtype=float), above, ends)
 
 
-#: The fillage must move by this much [share of the stroke] from card to card to count as a move.
+#: A move of the fillage from card to card larger than this [share of the stroke] counts as one.
 SEQUENCE_STEP = 0.02
 #: Cards of the window that :func:`sequence_conditions` reads, the card and those before it.
 SEQUENCE_WINDOW = 8
+#: A march: the net change over the window is at least this share of the way the fillage went.
+MARCH = 0.6
+#: Back and forth: the net change is at most this share of the way the fillage went.
+JUMPS = 0.4
 
 
 def sequence_conditions(fillage, window: int = SEQUENCE_WINDOW) -> np.ndarray:
     """What a well's consecutive cards say together, one text per card (``""`` until the window holds
-    three cards): ``pump_off`` when the load-transfer point (the fillage) marches one way over the
-    window (the moves that count, larger than :data:`SEQUENCE_STEP`, mostly in one direction and
-    adding up), ``gas_interference`` when it jumps back and forth (the moves change direction
-    at least twice as often as they keep it), ``steady`` otherwise.
+    three cards), from the load-transfer point (the fillage) over the last ``window`` cards:
+
+    * ``pump_off``: it marches down: it fell by more than 3 :data:`SEQUENCE_STEP` and the fall is
+      at least :data:`MARCH` of all the way it went (an efficiency ratio, net over path);
+    * ``gas_interference``: it jumps back and forth: the moves larger than :data:`SEQUENCE_STEP` add
+      up to more than 4 of them while the net change is at most :data:`JUMPS` of the path;
+    * ``steady`` otherwise (a fillage that holds, wanders within the noise, or climbs back).
 
     A pump going off loses fillage stroke after stroke as the fluid level falls to the intake;
     gas coming and going fills the barrel more on one stroke, less on the next
-    ([McCoyRowlanPodio]; docs/diagnosis.md).
+    ([McCoyRowlanPodio]; docs/diagnosis.md). A card without a fillage (NaN: its analysis failed)
+    is left out of the windows and gets ``""``.
 
     >>> marching = np.linspace(1.0, 0.6, 10)
     >>> jumping = np.tile([0.9, 0.65], 5)
@@ -377,21 +408,20 @@ def sequence_conditions(fillage, window: int = SEQUENCE_WINDOW) -> np.ndarray:
 
 
 def _sequence(fill: np.ndarray, window: int) -> np.ndarray:
-    moves = np.diff(fill, prepend=fill[:1])
-    counted = np.where(np.abs(moves) > SEQUENCE_STEP, np.sign(moves), 0.0)
-    out = np.full(fill.size, "", dtype=object)
-    for end in range(2, fill.size):          # a short loop over a well's cards, each window vectorised
-        steps = counted[max(1, end - window + 2):end + 1]
-        signs = steps[steps != 0.0]
-        span = fill[max(0, end - window + 1):end + 1]
-        reversals = int(np.sum(signs[1:] != signs[:-1])) if signs.size > 1 else 0
-        keeps = int(np.sum(signs[1:] == signs[:-1])) if signs.size > 1 else 0
-        if signs.size >= 2 and reversals >= 2 * max(keeps, 1):
-            out[end] = "gas_interference"
-        elif signs.size >= 2 and abs(float(np.sum(signs))) >= 0.75 * signs.size and np.ptp(span) > 2 * SEQUENCE_STEP:
-            out[end] = "pump_off"
-        else:
-            out[end] = "steady"
+    """:func:`sequence_conditions` of fillages that are all known, every window at once."""
+    count = fill.size
+    out = np.full(count, "", dtype=object)
+    if count < 3:
+        return out
+    moves = np.abs(np.diff(fill))
+    path = np.concatenate([[0.0], np.cumsum(moves)])
+    big = np.concatenate([[0.0], np.cumsum(np.where(moves > SEQUENCE_STEP, moves, 0.0))])
+    end = np.arange(2, count)
+    start = np.maximum(end - window + 1, 0)
+    net, travel, jumps = fill[end] - fill[start], path[end] - path[start], big[end] - big[start]
+    off = (net < -3.0 * SEQUENCE_STEP) & (-net >= MARCH * travel)
+    gas = (jumps > 4.0 * SEQUENCE_STEP) & (np.abs(net) <= JUMPS * travel)
+    out[2:] = np.where(off, "pump_off", np.where(gas, "gas_interference", "steady"))
     return out
 
 

@@ -6,7 +6,7 @@ failing pump and the diagnosis (:mod:`.diagnosis`) can be tested on cards it did
 
 * **a leaking valve**: a worn or cut seat passes liquid from the high to the low pressure
   side whenever the valve is shut, as an orifice does, q = C_d a sqrt(2 dp / rho)
-  ([Idelchik2006]), written with the leak Q at the full pressure difference
+  ([White2011]), written with the leak Q at the full pressure difference
   dp_o = F_o / A_p (the rate a valve test measures):
 
       q(dp) = Q sqrt(dp / dp_o).
@@ -62,9 +62,9 @@ def check_faults(pump: Pump) -> None:
         raise PredictionError("valve leaks are modelled with a pump full of liquid (fillage 1, no gas)")
     if leaks and not pump.fluid_load > 0.0:
         raise PredictionError("a valve leaks under a pressure difference: the pump needs a fluid load")
-    for name, value in (("bottom stop", pump.bottom_stop), ("top stop", pump.top_stop)):
-        if value is not None and not math.isfinite(value):
-            raise PredictionError(f"{name} must be finite, got {value} m")
+    for name, stop in (("bottom stop", pump.bottom_stop), ("top stop", pump.top_stop)):
+        if stop is not None and not math.isfinite(stop):
+            raise PredictionError(f"{name} must be finite, got {stop} m")
     if pump.bottom_stop is not None and pump.top_stop is not None and not pump.bottom_stop < pump.top_stop:
         raise PredictionError(f"the bottom stop {pump.bottom_stop:.6g} m must lie below the top stop "
                               f"{pump.top_stop:.6g} m")

@@ -84,7 +84,7 @@ def test_a_leak_loses_the_liquid_it_passes_and_keeps_the_energy_balance(sk8_rods
 
 def test_the_shut_chamber_of_a_leaking_travelling_valve_follows_the_orifice_law(sk8_pump):
     # with both valves shut the chamber fills through the leak alone, q = Q sqrt(dp / dp_o)
-    # ([Idelchik2006]): the plunger rises by h q / A_p in a step while it carries F = F_o (v / v_L)^2,
+    # ([White2011]): the plunger rises by h q / A_p in a step while it carries F = F_o (v / v_L)^2,
     # v_L = Q / A_p; stepped here with the rods' relation zeta = known - c F, as the march does
     leak, h, c = 2e-4, 0.01, 1e-6
     pump = replace(sk8_pump, travelling_valve_leak=leak)
