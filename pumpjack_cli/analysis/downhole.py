@@ -136,9 +136,13 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
         Column("pump_position", pump.pump_position),
         Column("pump_load", pump.pump_load),
     )
+    f_o = reference_fluid_load(unit)   # the reference load lines of [Rowlan2008] on both cards
+    lines = (("W_rf", pump.buoyant_weight), ("W_rf + F_o", pump.buoyant_weight + f_o), ("F_o (pump card)", f_o),
+             ("", 0.0))
     panels = (
         Panel("load", (), curves=(Curve("surface card", "position", "rod_load"),
-                                  Curve("pump card", "pump_position", "pump_load")), x_label="position"),
+                                  Curve("pump card", "pump_position", "pump_load")), x_label="position",
+              levels=lines),
         goodman_panel(string, loads, service_factor),
     )
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
