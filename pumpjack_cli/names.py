@@ -107,11 +107,18 @@ class Section:
 
 E = Entry
 SECTIONS: tuple[Section, ...] = (
-    Section("Bundled units (`units`)", "", (
-        E("name", TEXT, "name to give to the commands (file stem)"),
+    Section("Units (`units`, `units --catalogue`)",
+            "The bundled units, or the rows of an operator's catalogue ([catalogue.md](catalogue.md)).", (
+        E("name", TEXT, "name to give to the commands (a bundled unit's file stem, a catalogue's DESIGNATION/HOLE)"),
         E("kind", TEXT, "machine kind: beam-pump or slider-crank"),
         E("designation", TEXT, "unit designation, e.g. SK8-3,5-4000"),
         E("description", TEXT, "one line about the file"),
+        E("crank_hole", TEXT, "crank hole of a catalogue row, 1 for the longest stroke"),
+        E("unit_class", TEXT, "kind of beam unit, its [geometry] class: conventional, mark-ii, ..."),
+        E("published_stroke", "length", "stroke the catalogue gives for the crank hole (empty if none)"),
+        E("stroke_difference", "length", "exact stroke minus the published stroke"),
+        E("stroke_check", TEXT, "ok, differs (by more than 0.5 in) or not published"),
+        E("source", TEXT, "where a catalogue row's data come from"),
     )),
     Section("Kinematics (`kinematics`, and columns shared by other commands)",
             "Beam units' crank angle is measured from 12 o'clock in the direction of rotation ([API11E]).", (
@@ -314,7 +321,8 @@ SECTIONS: tuple[Section, ...] = (
           "the well positive", "d"),
         E("air_exponent", "ratio", "polytropic exponent of the air cylinder's gas", "n"),
         E("counterbalance_effect", "force", "present counterbalance effect: the polished-rod load the "
-          "counterbalance holds with the cranks horizontal, B + M sin(90° − τ)/TF(90°)", "CBE"),
+          "structure and counterbalance hold with the cranks horizontal on the upstroke (90°, a Mark II's 270°): "
+          "−(T_s + T_c)/TF there; for class I crank counterweights B + M sin(90° − τ)/TF(90°)", "CBE"),
         E("structural_torque", "torque", "torque of the structural unbalance, −TF B", "−TF B"),
         E("counterbalance_torque", "torque", "torque of the counterbalance: crank counterweights −M sin(θ − τ) "
           "(class III: +M sin(θ + τ)), a beam counterweight or an air cylinder through TF", "T_c"),
@@ -335,7 +343,7 @@ SECTIONS: tuple[Section, ...] = (
         E("recommended_air_pressure", "pressure", "the air cylinder's gauge pressure at its stated position that "
           "meets the balance criterion (--balance)"),
         E("recommended_counterbalance_effect", "force", "counterbalance effect of the recommended counterbalance, "
-          "cranks horizontal"),
+          "cranks horizontal on the upstroke"),
         E("recommended_peak_net_torque", "torque", "largest |net gearbox torque| with the recommended "
           "counterbalance"),
         E("recommended_{stroke_part}_peak_torque", "torque", "largest net gearbox torque of the {stroke_part} with "

@@ -60,7 +60,11 @@ UnitsOption = Annotated[
     UnitSystem,
     typer.Option("--units", help="si (m, m/s, N, N·m) or field (in, ft/s, lbf, lbf·in)"),
 ]
-UnitArgument = Annotated[str, typer.Argument(help="bundled unit name (see `pumpjack units`) or path to a unit file")]
+UnitArgument = Annotated[str, typer.Argument(
+    help="bundled unit name (see `pumpjack units`), path to a unit file, or DESIGNATION/HOLE of --catalogue")]
+CatalogueOption = Annotated[Path | None, typer.Option(
+    "--catalogue", help="your unit catalogue: a CSV of one row per unit and crank hole, whose units are named "
+    "DESIGNATION/HOLE (docs/catalogue.md)", dir_okay=False)]
 CardOption = Annotated[Path, typer.Option(
     "--card", help="dynamometer card file (delimited text, JSON, binary or hex block, a recording), or - for "
     "standard input (see docs/cards.md)", dir_okay=False)]

@@ -14,6 +14,7 @@ lbf = 4.4482216152605 N, kgf = 9.80665 N, hp = 745.699872 W).
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -114,6 +115,7 @@ SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "momen
 _NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 
 
+@functools.lru_cache(maxsize=1024)
 def _normalise_unit(text: str) -> str:
     """Fold the spellings of a unit: case, multiplication dots or spaces, superscripts, an
     abbreviation's final dot (``"in."``) and the names of :data:`UNIT_SPELLINGS`.

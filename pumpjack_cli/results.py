@@ -29,7 +29,8 @@ STORED = "stored"
 @dataclass(frozen=True)
 class Column:
     """A per-row series: an output name of the catalogue (:mod:`pumpjack_cli.names`, which
-    gives its quantity kind and description) and its values (SI). ``brief`` columns are the
+    gives its quantity kind and description) and its values (SI; a list may hold None where a
+    value is missing, shown empty, or null in JSON). ``brief`` columns are the
     ones the terminal table shows; CSV, JSON and plots carry every column. A results store's
     columns, already suffixed and converted, give ``quantity=STORED`` and a description."""
 
@@ -159,6 +160,6 @@ def check_finite(result: Result) -> None:
             bad = np.flatnonzero(~np.isfinite(c.values.astype(float, copy=False)))
             first = int(bad[0]) if bad.size else None
         else:
-            first = next((i for i, v in enumerate(c.values) if not math.isfinite(float(v))), None)
+            first = next((i for i, v in enumerate(c.values) if v is not None and not math.isfinite(float(v))), None)
         if first is not None:
             raise PumpjackError(f"result column {c.name} is not finite at row {first} of {len(c.values)}")

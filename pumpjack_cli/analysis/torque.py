@@ -27,6 +27,7 @@ from ..core.beam.counterbalance import (
     CounterbalanceModel,
     counterbalance_effect,
     counterweight_placement,
+    upstroke_test_angle,
 )
 from ..core.beam.loading import card_work, cyclic_load_factor
 from ..core.beam.torque import (
@@ -53,8 +54,6 @@ if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
 SUMMARY_STEPS = 3600
 #: Largest counterweight radius considered when the unit gives no slot range [m] (the schema's limit).
 MAX_RADIUS = 5.0
-#: Crank angle of the counterbalance-effect test (cranks horizontal) [rad].
-TEST_ANGLE = math.pi / 2
 @dataclass(frozen=True)
 class _Torques:
     """Torque terms [N·m] on one crank-angle grid and the net torque of the chosen method."""
@@ -141,12 +140,13 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     if method == "exact" and masses is not None:
         unit.spatial()          # refuses a kind without the spatial model
     balance, balance_known = unit.counterbalance_model()
+    test_angle = upstroke_test_angle(linkage)
     out, dense = (_torques(unit, linkage, masses if spatial else None, masses, balance, run, method) for run in runs)
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
     parts = dense.components
     recommendation = recommend_counterbalance(
-        criterion, linkage, theta, dense.run.load, balance, weights=dt, test_angle=TEST_ANGLE,
+        criterion, linkage, theta, dense.run.load, balance, weights=dt, test_angle=test_angle,
         extra_torque=dense.net - parts.rod_load - parts.structural - parts.counterbalance)
     if recommendation.value is None:
         raise PumpjackError(f"--balance {criterion}: {recommendation.note}; try --balance min-peak or min-rms")
@@ -163,7 +163,7 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
         found = peak(theta, current)
         summary += [Scalar(balance.variable, balance.value),
                     Scalar("counterbalance_effect",
-                           counterbalance_effect(linkage.motion(np.array([TEST_ANGLE])), balance)),
+                           counterbalance_effect(linkage.motion(np.array([test_angle])), balance)),
                     Scalar("peak_net_torque", found.value),
                     Scalar("peak_net_torque_crank_angle", found.crank_angle)]
         summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))

@@ -13,8 +13,8 @@ from ..analysis.batch.per_card import ANALYSES, Options
 from ..analysis.batch.run import run_batch
 from ..analysis.store_views import export_result, trend_result
 from ..errors import PumpjackError
-from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, FormatOption, Output, OutputOption,
-                       UnitSystem, finite)
+from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, CatalogueOption, FormatOption, Output,
+                       OutputOption, UnitSystem, finite)
 
 VERBS = ("run", "export", "trend")
 
@@ -54,6 +54,7 @@ def run(
     card_units: CardUnitsOption = None,
     card_format: CardFormatOption = None,
     card_points: CardPointsOption = None,
+    catalogue: CatalogueOption = None,
     workers: Annotated[int | None, typer.Option(help="local worker processes [default: every core]", min=1,
                                                 max=1024)] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -64,7 +65,7 @@ def run(
     if not chosen:
         raise PumpjackError("--analyses: name at least one of torque, downhole")
     options = Options(chosen, method, balance, damping, card_units.value if card_units else None, card_format,
-                      card_points)
+                      card_points, None if catalogue is None else str(catalogue))
     progress = _progress() if _terminal() else None
     try:
         tally = run_batch(manifest, store, options, workers or default_workers(), scheduler,

@@ -14,6 +14,7 @@ from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardUnitsOption, FormatOption, OutputOption, PlotOption, CrankMotion, CrankMotionOption,
                      CardSpmOption, StepsOption, UnitArgument, UnitsOption, UnitSystem, Output, card_source, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 class PhaseMode(str, Enum):
@@ -65,6 +66,7 @@ def compare_redundancy(
     crank_phase_mode: Annotated[PhaseMode | None, _deviation(
         "what --crank-phase turns: pin-bore (pin A1 alone) or whole-arm (side 3's arm with its counterweights)")
     ] = None,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -87,5 +89,5 @@ def compare_redundancy(
     given_joints = {field: quantity(text, JOINTS[field], "--" + field.replace("_", "-"))
                     for field, text in pins.items() if text is not None}
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
-    sink.emit(run(load_unit(unit), source, spm, steps, crank_motion.value,
+    sink.emit(run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
                   given, given_joints), SHOWN)

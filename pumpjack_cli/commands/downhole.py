@@ -14,6 +14,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption, production_share
 from ..errors import PumpjackError
 
@@ -53,6 +54,7 @@ def downhole(
              "energy per day", min=0.05, max=1.0, callback=finite)] = 1.0,
     electricity_price: Annotated[str | None, typer.Option(
         help="price of energy, '0.12 /kWh' in any currency, for the cost per day")] = None,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -72,6 +74,6 @@ def downhole(
                             quantity(electricity_price, "energy_price", "--electricity-price"))
     if production.electricity_price is not None and production.runtime is None:
         raise PumpjackError("--electricity-price: the cost per day needs --runtime (how long the unit runs a day)")
-    result = run(load_unit(unit), source, spm, crank_motion.value, method.value,
+    result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor, production)
     sink.emit(result, SHOWN)

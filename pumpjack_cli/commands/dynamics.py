@@ -15,6 +15,7 @@ from ..errors import PumpjackError
 from ..options import (CardColumnsOption, CardUnitsOption, FormatOption, Output, OutputOption, PlotOption, UnitArgument,
                        UnitsOption, UnitSystem, card_source, finite, positive)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "time", "crank_speed", "crank_acceleration", "motor_torque", "velocity", "velocity_uniform",
@@ -55,6 +56,7 @@ def dynamics(
     damping: Annotated[float | None, typer.Option(
         help="with --well-model wave: Gibbs' damping factor nu of the rods, above 0 [default: the unit file's, "
              "else 0.05]", max=2.0, callback=positive)] = None,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -71,7 +73,7 @@ def dynamics(
             if given is not None:
                 raise PumpjackError(f"{option} applies to --well-model wave")
         source = None if card is None else card_source(card, card_units, card_columns, card_format, card_points, stroke)
-        sink.emit(run(load_unit(unit), source, rtol, DEFAULT_POINTS if steps is None else steps), SHOWN)
+        sink.emit(run(load_unit(unit, catalogue), source, rtol, DEFAULT_POINTS if steps is None else steps), SHOWN)
         return
     if card is not None:
         raise PumpjackError("--card drives the unit with a measured load; --well-model wave predicts it: give one")
@@ -80,6 +82,6 @@ def dynamics(
                             "(time samples per revolution)")
     from ..analysis.predict import wave_dynamics
 
-    sink.emit(wave_dynamics(load_unit(unit), DEFAULT_POINTS if samples is None else samples, damping), ("crank_angle", "time", "crank_speed",
+    sink.emit(wave_dynamics(load_unit(unit, catalogue), DEFAULT_POINTS if samples is None else samples, damping), ("crank_angle", "time", "crank_speed",
                                                               "crank_acceleration", "motor_torque", "rod_load",
                                                               "inertia_torque"))

@@ -10,6 +10,7 @@ from ..analysis.inertia import inertia_error as run
 from ..config import load_any_unit
 from ..options import finite, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output, quantity
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN_LAWS = ("crank_angle", "time", "position", "velocity", "acceleration", "inertia_force")
 SHOWN_SUPPORT = ("crank_angle", "travel", "outer_edge_reaction", "inner_edge_reaction", "guide_friction",
@@ -32,6 +33,7 @@ def inertia_error(
         help="slider-crank only: friction in the crosshead guide from the redundant supports of the stepped slider",
     )] = False,
     steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=10_000_000)] = 360,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -42,6 +44,6 @@ def inertia_error(
 
     Errors at the peak and over the cycle, for slider-crank and beam pumping units."""
     sink = Output(fmt, units, out, plot, what)
-    result = run(load_any_unit(unit), spm, quantity(mass, "mass", "--mass"), support_friction, steps)
+    result = run(load_any_unit(unit, catalogue), spm, quantity(mass, "mass", "--mass"), support_friction, steps)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in (SHOWN_SUPPORT if support_friction else SHOWN_LAWS) if name in names))

@@ -10,6 +10,7 @@ from ..analysis.kinematics import kinematics as run
 from ..config import load_unit
 from ..options import SpmOption, FormatOption, OutputOption, PlotOption, UnitArgument, UnitsOption, UnitSystem, Output
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN = ("crank_angle", "time", "position", "velocity", "acceleration", "torque_factor")
 
@@ -18,6 +19,7 @@ def kinematics(
     unit: UnitArgument,
     spm: SpmOption = None,
     steps: Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=10_000_000)] = 360,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -28,4 +30,4 @@ def kinematics(
 
     The elementary and refined textbook approximations are printed beside it."""
     sink = Output(fmt, units, out, plot, what)
-    sink.emit(run(load_unit(unit), spm, steps), SHOWN)
+    sink.emit(run(load_unit(unit, catalogue), spm, steps), SHOWN)

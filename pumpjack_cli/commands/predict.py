@@ -14,6 +14,7 @@ from ..errors import PumpjackError
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
 
@@ -64,6 +65,7 @@ def predict(
              "('55 %'); nothing hangs on the free end")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -91,7 +93,8 @@ def predict(
     faults = Faults(leaks[0][0], leaks[1][0], (leaks[0][1], leaks[1][1]),
                     quantity(tag_bottom, "length", "--tag-bottom"), quantity(tag_top, "length", "--tag-top"),
                     parted[0], parted[1])
-    result = run(load_unit(unit), spm, crank_motion.value, samples, damping, overrides, service_factor, faults=faults)
+    result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor,
+                 faults=faults)
     torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
     sink.emit(result, (*SHOWN, torque))
 

@@ -13,6 +13,7 @@ from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOp
                        PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
 from ..options import What, WhatOption
+from ..options import CatalogueOption
 from ..options import CardFormatOption, CardPointsOption, StrokeOption
 
 SHOWN = ("crank_angle", "rod_load", "torque_factor", "net_torque", "recommended_net_torque", "exact_net_torque",
@@ -50,6 +51,7 @@ def torque(
     drive_efficiency: Annotated[float, typer.Option(
         help="efficiency of belt and gearbox between motor and crank, for the motor power", min=0.1, max=1.0,
         callback=finite)] = 1.0,
+    catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
     units: UnitsOption = UnitSystem.si,
@@ -62,7 +64,7 @@ def torque(
     balance criterion, loading against the unit's ratings, the permissible load diagram."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
-    result = run(load_unit(unit), source, spm, steps, crank_motion.value,
+    result = run(load_unit(unit, catalogue), source, spm, steps, crank_motion.value,
                  method.value, balance.value, drive_efficiency)
     names = {c.name for c in result.columns}
     sink.emit(result, tuple(name for name in SHOWN if name in names))

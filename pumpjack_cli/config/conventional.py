@@ -7,6 +7,7 @@ of the six-link mechanism ([Spatial7SK12]) when the pin spacings are given.
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field
@@ -15,7 +16,7 @@ from ..core.beam.geometry import Linkage, beam_linkage
 from ..errors import ConfigError
 from .geometry_names import ROTATION_SIGNS
 from .letters import BeamLetters
-from .quantities import Length, at_least
+from .quantities import Angle, Length, at_least
 
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.counterbalance import Counterbalance
@@ -23,6 +24,10 @@ if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.masses import MassModel
     from ..core.beam.spatial import SpatialLinkage
     from .beam_unit import CounterbalanceConfig
+
+
+#: Largest difference between the crank offset of the counterweight blocks and the one stated [rad].
+OFFSET_TOLERANCE = math.radians(0.5)
 
 
 class ConventionalGeometry(BeamLetters):
@@ -62,6 +67,20 @@ class ConventionalGeometry(BeamLetters):
         return SpatialLinkage(self.mechanism(), self.crank_half_spacing, self.equalizer_half_length)
 
 
+class PhasedCrankGeometry(BeamLetters):
+    """The letters of a kind whose crank counterweights are phased by a crank offset (Mark II,
+    reverse-mark): ``crank_offset`` and the counterweights it places."""
+
+    crank_offset: Angle = Field(
+        ge=-1.0, le=1.0, description="tau: crank offset angle as catalogues print it: on class I units the lag of "
+        "the counterweights behind the crank pin in T = TF (W - B) - M sin(theta - tau), on class III units their "
+        "lead ahead of the crank's tail in T = TF (W - B) + M sin(theta + tau) (docs/units.md) [rad]")
+
+    def counterbalance(self, given: CounterbalanceConfig | None, masses: MassModel | None) -> tuple[Counterbalance, bool]:
+        """Crank counterweights with the crank offset (:func:`crank_counterweights`)."""
+        return crank_counterweights(self.mechanism(), given, masses, self.crank_offset)
+
+
 def crank_counterweights(mechanism: Mechanism, given: CounterbalanceConfig | None, masses: MassModel | None,
                          offset: float | None = None) -> tuple[Counterbalance, bool]:
     """Crank counterweights of a crank-balanced kind and whether M is known: the unit file's
@@ -79,6 +98,11 @@ def crank_counterweights(mechanism: Mechanism, given: CounterbalanceConfig | Non
         return (Counterbalance(given.structural_unbalance, given.moment or 0.0, tau, mechanism.lever_class == "III"),
                 given.moment is not None)
     if masses is not None:
-        return counterbalance_from_masses(mechanism, masses), True
+        found = counterbalance_from_masses(mechanism, masses)
+        if offset is not None and abs(math.remainder(found.offset - offset, 2.0 * math.pi)) > OFFSET_TOLERANCE:
+            raise ConfigError(f"[masses] counterweights put the crank offset at {math.degrees(found.offset):.4g} deg, "
+                              f"[geometry] crank_offset says {math.degrees(offset):.4g} deg: give the blocks' phase "
+                              f"that matches (docs/units.md)")
+        return found, True
     raise ConfigError("neither [counterbalance] nor [masses]: give at least [counterbalance] structural_unbalance "
                       "(and moment for the present net torque)")

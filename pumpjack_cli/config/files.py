@@ -21,7 +21,8 @@ from typing import Any, Callable
 
 from ..errors import ConfigError
 from ..quantities import SI_LABELS, parse_quantity
-from ..readers.unit_files import bundled_units, read_table, unit_path
+from ..readers.catalogue import Catalogue, CatalogueRow, read_catalogue
+from ..readers.unit_files import bundled_units, read_table, unit_source
 from .geometry_names import slider_crank_of
 from .unit_classes import UNIT_CLASSES, raw_stroke
 
@@ -113,11 +114,13 @@ def error_message(error: dict, model: Any = None) -> str:
     return f"{message}{unit}; got {value:.6g}{unit}"
 
 
-def format_validation_error(source: str, error, model: Any = None) -> str:
+def format_validation_error(source: str, error, model: Any = None,
+                            place: Callable[[tuple], str] = field_path) -> str:
     """One line naming the file, the field and what is wrong with it (a pydantic
-    ValidationError of ``model``)."""
+    ValidationError of ``model``); ``place`` names the field of an error location (default
+    its key path, ``geometry.pitman``)."""
     first = error.errors()[0]
-    where = field_path(first["loc"]) or "(top level)"
+    where = place(first["loc"]) or "(top level)"
     more = len(error.errors()) - 1
     tail = f" (and {more} more problem{'s' if more > 1 else ''})" if more else ""
     return f"{source}: {where}: {error_message(first, model)}{tail}"
@@ -134,15 +137,16 @@ def _kind(data: Any, source: str) -> Kind:
     return UNIT_KINDS[kind]
 
 
-def parse_unit(data: Any, source: str):
-    """Validate parsed file contents; ``source`` names the file in error messages."""
+def parse_unit(data: Any, source: str, place: Callable[[tuple], str] = field_path):
+    """Validate parsed file contents; ``source`` names the file in error messages and ``place``
+    the field (:func:`format_validation_error`)."""
     from pydantic import ValidationError
 
     model = _kind(data, source).model()
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise ConfigError(format_validation_error(source, exc, model)) from None
+        raise ConfigError(format_validation_error(source, exc, model, place)) from None
 
 
 def read_unit_file(path: Path):
@@ -163,14 +167,23 @@ def unit_listing() -> list[dict[str, Any]]:
     return rows
 
 
-def load_any_unit(spec: str):
-    """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``) or by file path."""
-    return read_unit_file(unit_path(spec))
+def load_any_unit(spec: str, catalogue: Catalogue | Path | None = None):
+    """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``), by file path, or
+    as ``DESIGNATION/HOLE`` of an operator's ``catalogue`` (read, or its file; docs/catalogue.md)."""
+    if isinstance(catalogue, Path):
+        catalogue = read_catalogue(catalogue)
+    found = unit_source(spec, catalogue)
+    if isinstance(found, CatalogueRow):
+        from .catalogue import catalogue_unit
+
+        return catalogue_unit(found)
+    return read_unit_file(found)
 
 
-def load_unit(spec: str):
-    """A beam pumping unit by bundled name or file path; other machine kinds are an error."""
-    config = load_any_unit(spec)
+def load_unit(spec: str, catalogue: Catalogue | Path | None = None):
+    """A beam pumping unit by bundled name, file path or catalogue name (:func:`load_any_unit`);
+    other machine kinds are an error."""
+    config = load_any_unit(spec, catalogue)
     if not UNIT_KINDS[config.kind].beam_unit:
         raise ConfigError(f"{spec}: is a {config.kind} machine, not a beam pumping unit")
     return config

@@ -2,13 +2,15 @@
 
 A unit file is UTF-8 text of at most :data:`MAX_BYTES`, parsed with duplicate keys and
 YAML aliases refused and nested at most :data:`MAX_DEPTH` deep; nothing is validated
-here (the schemas are :mod:`pumpjack_cli.config`). :func:`unit_path` is the one place
-that turns what a user writes for a unit (a bundled unit's name or a file path) into a
-file, for loading it and for the content keys of `pumpjack batch` alike.
+here (the schemas are :mod:`pumpjack_cli.config`). :func:`unit_source` is the one place
+that turns what a user writes for a unit (a bundled unit's name, a file path or a unit of
+an operator's catalogue, :mod:`.catalogue`) into a file or a catalogue row, for loading it
+and for the content keys of `pumpjack batch` alike.
 """
 
 from __future__ import annotations
 
+import difflib
 import importlib
 import json
 import os
@@ -18,6 +20,7 @@ from typing import Any
 
 from ..errors import ConfigError
 from ..text_input import read_text
+from .catalogue import Catalogue, CatalogueRow, designation_key, names_a_crank_hole
 
 BUNDLED_PACKAGE = "pumpjack_cli.configs"
 SUFFIXES = (".toml", ".yaml", ".yml", ".json")
@@ -139,18 +142,34 @@ def bundled_units() -> dict[str, Path]:
 
 def names_a_file(spec: str) -> bool:
     """Whether a unit spec is written as a file (a unit-file suffix or a folder in it) rather
-    than as a bundled unit's name."""
-    return Path(spec).suffix.lower() in SUFFIXES or os.sep in spec
+    than as a bundled unit's name or a catalogue's ``DESIGNATION/HOLE``."""
+    return Path(spec).suffix.lower() in SUFFIXES or (os.sep in spec and not names_a_crank_hole(spec))
 
 
-def unit_path(spec: str) -> Path:
-    """The file a unit spec names: a file path (written as one, or an existing file), else a
+def unit_source(spec: str, catalogue: Catalogue | None = None) -> Path | CatalogueRow:
+    """What a unit spec names: a file path (written as one, or an existing file), else a
     bundled unit by name, case-insensitive and with the GOST decimal comma
-    (``SK8-3,5-4000`` is ``sk8-3.5-4000``); an unknown name is a :class:`ConfigError`."""
+    (``SK8-3,5-4000`` is ``sk8-3.5-4000``), else a row of the ``catalogue``
+    (``DESIGNATION/HOLE``, :meth:`~.catalogue.Catalogue.find`); an unknown name is a
+    :class:`ConfigError` listing the names close to it."""
     if names_a_file(spec) or os.path.lexists(spec):
         return Path(spec)
     units = bundled_units()
-    key = spec.lower().replace(",", ".")
-    if key not in units:
-        raise ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(units)}")
-    return units[key]
+    key = designation_key(spec)
+    if key in units:
+        return units[key]
+    row = catalogue.find(spec) if catalogue is not None else None
+    if row is None:
+        raise _unknown(spec, list(units), catalogue)
+    return row
+
+
+def _unknown(spec: str, bundled: list[str], catalogue: Catalogue | None) -> ConfigError:
+    """The error of a unit spec that names nothing: the bundled units, or the names close to it."""
+    if catalogue is None:
+        hint = "; DESIGNATION/HOLE names a unit of --catalogue FILE" if names_a_crank_hole(spec) else ""
+        return ConfigError(f"unknown unit {spec!r}: give a file path or one of {', '.join(bundled)}{hint}")
+    names = {designation_key(name): name for name in [*bundled, *(row.name for row in catalogue.rows)]}
+    close = [names[key] for key in difflib.get_close_matches(designation_key(spec), names, n=6)]
+    listed = f"close: {', '.join(close)}" if close else f"`pumpjack units --catalogue {catalogue.source}` lists its units"
+    return ConfigError(f"unknown unit {spec!r}: not a file, a bundled unit or a unit of {catalogue.source}; {listed}")

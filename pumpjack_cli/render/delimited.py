@@ -21,9 +21,10 @@ PARALLEL_ROWS = 100_000
 
 
 def _csv_block(result: Result, system: str, start: int) -> str:
-    """CSV text of the rows [start, start + CSV_BLOCK): floats by ``repr``, text quoted as CSV needs."""
+    """CSV text of the rows [start, start + CSV_BLOCK): floats by ``repr``, text quoted as CSV needs,
+    a missing value (None) as an empty cell."""
     columns = [display_values(c, c.values[start:start + CSV_BLOCK], system) for c in result.columns]
-    if any(c.quantity in (TEXT, STORED) for c in result.columns):
+    if any(c.quantity in (TEXT, STORED) for c in result.columns) or any(None in values for values in columns):
         buffer = io.StringIO()
         csv.writer(buffer, lineterminator="\n").writerows(
             [v if isinstance(v, str) else "" if v is None else repr(v) for v in row] for row in zip(*columns))
@@ -80,11 +81,12 @@ def write_summary_csv(result: Result, system: str, stream: TextIO) -> None:
 
 def _json_values(column: Column, values: Any, system: str) -> str:
     """A slice of a column as the lines of a JSON array indented as ``json.dump(indent=1)``
-    writes them inside the document's "series" (floats by ``repr``, as json does)."""
+    writes them inside the document's "series" (floats by ``repr``, as json does; a missing
+    value is null)."""
     shown = display_values(column, values, system)
     if column.quantity in (TEXT, STORED):
         return ",\n   ".join(map(json.dumps, shown))
-    return ",\n   ".join(map(repr, shown))
+    return ",\n   ".join("null" if v is None else repr(v) for v in shown)
 
 
 def write_json(result: Result, system: str, stream: TextIO) -> None:

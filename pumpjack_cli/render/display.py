@@ -17,13 +17,14 @@ def _is_array(values: Any) -> bool:
 
 
 def display_values(column: Column, values: Any, system: str) -> list:
-    """Values (a slice of a column) in display units as Python objects; text passes through."""
+    """Values (a slice of a column) in display units as Python objects; text and missing values
+    (None) pass through."""
     if column.quantity in (TEXT, STORED):
         return list(values)
     unit = output_unit(column.quantity, system)
     if _is_array(values):
         return unit.convert(values.astype(float, copy=False)).tolist()
-    return [unit.convert(float(v)) for v in values]
+    return [None if v is None else unit.convert(float(v)) for v in values]
 
 
 def unit_label(quantity: str, system: str) -> str:

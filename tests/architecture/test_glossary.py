@@ -25,6 +25,7 @@ GLOSSARY = REPO_ROOT / "docs" / "glossary.md"
 
 RUNS = [
     ("units",),
+    ("units", "--catalogue", REPO_ROOT / "samples" / "catalogue.csv"),
     ("kinematics", "sk8-3.5-4000", "--steps", "8"),
     ("reactions", "sk8-3.5-4000", "--card", SK8_CARD, "--steps", "8"),
     ("compare-redundancy", "7sk12-2.5-5600", "--card", sample_card("7sk12-2.5-5600"), "--spm", "8", "--steps", "8"),

@@ -85,14 +85,15 @@ def test_tests_do_not_import_command_modules(path):
     assert not {name for name in _imports(path) if name.startswith("pumpjack_cli.commands")}
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"]])
+@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"],
+                                  ["units", "--catalogue", str(REPO_ROOT / "samples" / "catalogue.csv"), "-f", "csv"]])
 def test_startup_imports_no_numpy_and_no_unit_model(argv):
     probe = (
         "import sys, io, contextlib\n"
         "from pumpjack_cli.cli import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"
         f"    code = main({argv!r})\n"
-        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pumpjack_cli.config.beam_unit',\n"
+        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pydantic', 'pumpjack_cli.config.beam_unit',\n"
         "                           'pumpjack_cli.config.slider_crank') if m in sys.modules)\n"
         "print(code, heavy)\n"
     )

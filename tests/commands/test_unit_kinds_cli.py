@@ -75,3 +75,34 @@ def test_the_spatial_model_is_refused_for_a_class_three_unit_with_masses(run_cli
     for argv in (("reactions", unit, "--card", card), ("torque", unit, "--card", card, "--method", "exact")):
         code, out, err = run_cli(*argv)
         assert code == 2 and err.count("\n") == 1 and "is a mark-ii unit; the spatial kinetostatics" in err, err
+
+
+def test_batch_names_a_mark_ii_and_an_air_balanced_unit_of_a_catalogue(run_cli, tmp_path):
+    """Manifest rows naming catalogue units by designation and crank hole: the Mark II of the
+    sample catalogue ([LufkinM912]) and an air-balanced row with the example's letters; the
+    torque of each equals the single command's on the same catalogue unit."""
+    catalogue = tmp_path / "field.csv"
+    sample = (REPO_ROOT / "samples" / "catalogue.csv").read_text(encoding="utf-8")
+    header = next(line for line in sample.splitlines() if line and not line.startswith("#"))
+    mark = next(line for line in sample.splitlines() if line.startswith("M-912D-365-168,1,"))
+    catalogue.write_text(
+        "designation,crank_hole,class,rotation,A_in,C_in,I_in,P_in,H_in,G_in,R_in,B_lbf,air_piston_diameter_in,"
+        "air_bottom_volume_ft3,air_lever_in,air_pressure_psi\n"
+        "A-228D-213-86,1,air-balanced,ccw,120,70,70,100,140,45,24.5,-500,12,7,50,230\n", encoding="utf-8")
+    marks = tmp_path / "marks.csv"
+    marks.write_text(f"{header}\n{mark}\n", encoding="utf-8")
+    for units, name, card in ((catalogue, "A-228D-213-86/1", sample_card("air-balanced-example")),
+                              (marks, "M-912D-365-168/1", sample_card("m-912d-365-168"))):
+        manifest = tmp_path / "manifest.csv"
+        manifest.write_text(f"well,unit,card\nw1,{name},{card}\n", encoding="utf-8")
+        store = tmp_path / f"{name[0]}.sqlite"
+        code, out, err = run_cli("batch", "run", manifest, "--store", store, "--catalogue", units,
+                                 "--analyses", "torque", "--workers", "1")
+        assert code == 0, err
+        stored = sqlite3.connect(store).execute(
+            "SELECT status, recommended_peak_net_torque_n_m FROM results").fetchall()
+        assert len(stored) == 1 and stored[0][0] == "ok"
+        code, out, err = run_cli("torque", name, "--card", card, "--catalogue", units, "-f", "json")
+        assert code == 0, err
+        assert stored[0][1] == pytest.approx(json.loads(out)["summary"]["recommended_peak_net_torque_n_m"],
+                                             rel=1e-12)

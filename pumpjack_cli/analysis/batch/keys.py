@@ -15,7 +15,8 @@ from pathlib import Path
 
 from ...errors import ConfigError
 from ...readers.manifest import Job
-from ...readers.unit_files import unit_path
+from ...readers.catalogue import Catalogue, CatalogueRow
+from ...readers.unit_files import unit_source
 from .per_card import Options
 
 
@@ -37,12 +38,16 @@ def card_digest(path: str) -> str:
         return "unreadable:" + hashlib.sha256(path.encode()).hexdigest()
 
 
-def unit_digest(spec: str) -> str:
-    """The content hash of the file a unit spec names (a bundled name, resolved as
-    :func:`pumpjack_cli.config.load_unit` resolves it, or a file), or the spec itself when
-    it cannot be read (the analysis then records the error)."""
+def unit_digest(spec: str, catalogue: Catalogue | None = None) -> str:
+    """The content hash of what a unit spec names, resolved as :func:`pumpjack_cli.config.load_unit`
+    resolves it: a file's bytes (a bundled unit or a path), or a catalogue row's table and
+    published stroke (so that editing another row of the catalogue changes nothing); the
+    spec itself when it cannot be read (the analysis then records the error)."""
     try:
-        return _sha256(unit_path(spec))
+        found = unit_source(spec, catalogue)
+        if isinstance(found, CatalogueRow):
+            return hashlib.sha256(json.dumps([found.table, found.stroke], sort_keys=True).encode()).hexdigest()
+        return _sha256(found)
     except (ConfigError, OSError):
         return f"unreadable:{spec}"
 

@@ -18,7 +18,8 @@ from datetime import datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ...errors import PumpjackError, collected_warnings
+from ...errors import PumpjackError, collected_warnings, warn
+from ...readers.catalogue import read_catalogue
 from ...readers.manifest import Job
 from ...readers.unit_files import read_table
 from ...results import check_finite, converted_summary
@@ -47,6 +48,8 @@ class Options:
     #: The cards' format (None: told from each file) and the points of a card block (None: 200).
     card_format: str | None = None
     card_points: int | None = None
+    #: The operator's catalogue file whose units the manifest may name (DESIGNATION/HOLE), if any.
+    catalogue: str | None = None
 
     def __post_init__(self):
         from ...readers.cards import check_options
@@ -94,20 +97,30 @@ def stroke_time(base: str, start: object) -> str:
 
 
 _UNITS: dict = {}
+_CATALOGUES: dict = {}
 
 
-def _unit(job: Job):
-    """The unit of a job with its overrides, loaded once per process."""
-    key = (job.unit, job.counterbalance_moment, job.rod_string)
+def _catalogue(path: str | None):
+    """The catalogue of a run, read once per process."""
+    if path is not None and path not in _CATALOGUES:
+        _CATALOGUES[path] = read_catalogue(Path(path))
+    return None if path is None else _CATALOGUES[path]
+
+
+def _unit(job: Job, catalogue: str | None) -> tuple[UnitConfig, tuple[str, ...]]:
+    """The unit of a job with its overrides, loaded once per process, and the warnings of loading
+    it (a catalogue unit's stroke), for every card that uses it."""
+    key = (job.unit, job.counterbalance_moment, job.rod_string, catalogue)
     if key not in _UNITS:
         from ...config import load_unit
 
-        unit = load_unit(job.unit)
-        if job.counterbalance_moment is not None:
-            unit = _with_moment(unit, job.counterbalance_moment)
-        if job.rod_string is not None:
-            unit = _with_rod_string(unit, job.rod_string)
-        _UNITS[key] = unit
+        with collected_warnings() as noted:
+            unit = load_unit(job.unit, _catalogue(catalogue))
+            if job.counterbalance_moment is not None:
+                unit = _with_moment(unit, job.counterbalance_moment)
+            if job.rod_string is not None:
+                unit = _with_rod_string(unit, job.rod_string)
+        _UNITS[key] = unit, tuple(noted)
     return _UNITS[key]
 
 
@@ -168,7 +181,9 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> di
     from ..downhole import Production, downhole
     from ..torque import torque
 
-    unit = _unit(job)  # loaded once per process
+    unit, noted = _unit(job, options.catalogue)  # loaded once per process
+    for text in noted:
+        warn(text)
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
@@ -184,7 +199,7 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     from ..card_runs import CardSource
 
     source = CardSource(Path(job.card), options.card_units, None, options.card_format, options.card_points)
-    status, error, raw = _attempt(lambda: (_unit(job), source.raw())[1])  # the unit first, as a single command
+    status, error, raw = _attempt(lambda: (_unit(job, options.catalogue), source.raw())[1])  # the unit first
     if raw is None:
         return [Outcome(analysis, status, error, "", {}, "", job.timestamp) for analysis in options.analyses]
     base = job.timestamp or str(raw.metadata.get("timestamp", ""))

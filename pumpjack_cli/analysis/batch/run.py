@@ -7,6 +7,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from ...errors import PumpjackError
+from ...readers.catalogue import Catalogue, read_catalogue
 from ...readers.manifest import Job, read_manifest
 from ...readers.store import Store
 from .executors import in_process, on_dask, on_pool
@@ -49,14 +50,14 @@ def _check(options: Options) -> None:
     check_options(options.method, options.balance)
 
 
-def _pending(jobs: list[Job], options: Options, done: set) -> dict[int, _Pending]:
+def _pending(jobs: list[Job], options: Options, done: set, catalogue: Catalogue | None) -> dict[int, _Pending]:
     """The jobs (by index) with an analysis not in ``done`` (the store's keys; a card named
-    twice in the manifest is analysed once)."""
+    twice in the manifest is analysed once); units named in the ``catalogue`` by its rows."""
     digests: dict[str, str] = {}
     pending = {}
     for index, job in enumerate(jobs):
         if job.unit not in digests:
-            digests[job.unit] = unit_digest(job.unit)
+            digests[job.unit] = unit_digest(job.unit, catalogue)
         card = card_digest(job.card)
         hashes = {a: options_hash(job, a, options, digests[job.unit]) for a in options.analyses}
         wanted = tuple(a for a in options.analyses if (job.well, card, a, hashes[a]) not in done)
@@ -74,9 +75,10 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
     start = time.perf_counter()
     _check(options)
     jobs = read_manifest(manifest)
+    catalogue = None if options.catalogue is None else read_catalogue(Path(options.catalogue))
     store = Store(store_path)
     try:
-        pending = _pending(jobs, options, with_files(store.done()))
+        pending = _pending(jobs, options, with_files(store.done()), catalogue)
         indices = list(pending)
         chunks = [[(i, asdict(jobs[i])) for i in indices[k:k + CHUNK]] for k in range(0, len(indices), CHUNK)]
         settings = asdict(options)

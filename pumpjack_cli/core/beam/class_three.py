@@ -15,10 +15,11 @@ and keeps the crank angle from 12 o'clock): A_III = mirror(A_I), and B_III = C e
 -C e(-psi), so psi_III(theta) = -psi_I(theta). Hence, exactly,
 
 * s_III(theta) = S - s_I(theta) (the top of one is the bottom of the other), TF_III = -TF_I;
-* the class III bottom of the stroke is the class I top, and its upstroke crank travel is
-  the class I downstroke travel: with the same letters, a class III unit has the stroke of
-  the class I unit and the upstroke travel of that unit turning the other way, which is
-  why strokes cannot tell the classes apart (the phase of PR(theta) and TF(theta) can);
+* the class III bottom of the stroke is the mirror's top, and its upstroke crank travel the
+  mirror's downstroke travel, which is the upstroke travel of the class I unit of the same
+  letters turning the *same* way: with the same letters and rotation a class III unit has
+  the stroke and upstroke travel of the class I unit, which is why strokes cannot tell the
+  classes apart (the phase of PR(theta) and TF(theta) against the crank angle can);
 * the pitman direction chi_III = pi - chi_I, the joints' x-components change sign.
 
 The class I kinematics is therefore computed once (:mod:`.linkage`) and mirrored here;

@@ -388,3 +388,18 @@ def upstroke_mask(linkage: Mechanism, crank_angle: np.ndarray) -> np.ndarray:
     """True at crank angles [rad] on the upstroke: from the bottom dead position through the upstroke travel."""
     dead = linkage.dead_positions()
     return ((np.asarray(crank_angle, dtype=float) - dead.crank_angle_bottom) % (2.0 * np.pi)) < dead.upstroke_crank_travel
+
+
+def upstroke_test_angle(linkage: Mechanism) -> float:
+    """The crank angle of the counterbalance-effect test: the cranks horizontal on the upstroke,
+    90 deg where that lies on the upstroke (a conventional unit), else 270 deg (a Mark II,
+    whose upstroke runs through 270 deg) [rad] ([Rowlan2004]: the effect is measured with the
+    cranks horizontal).
+
+    >>> from pumpjack_cli.core.beam.geometry import Linkage
+    >>> round(math.degrees(upstroke_test_angle(Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0))))
+    90
+    """
+    quarter = math.pi / 2
+    return quarter if bool(upstroke_mask(linkage, np.array([quarter]))[0]) else 3.0 * quarter
+

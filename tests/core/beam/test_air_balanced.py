@@ -6,6 +6,7 @@ from any volume, up to a constant), so the gearbox torque that holds the beam ag
 dU/dtheta, computed here by central differences of U along the crank angle from the unit's
 beam angle alone. The cylinder's torque then has zero work over a turn (a conservative
 force), and the mean net torque equals the polished-rod work per radian whatever the pressure.
+The balance of the air pressure against a brute-force scan is in ``test_unit_kinds.py``.
 """
 
 from __future__ import annotations
@@ -17,12 +18,11 @@ import pytest
 
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.air_balanced import ATMOSPHERE, AirCylinder
-from pumpjack_cli.core.beam.balance import balance_criteria, recommend_counterbalance
 from pumpjack_cli.core.beam.class_three import ClassThreeLinkage
 from pumpjack_cli.core.beam.geometry import COUNTERCLOCKWISE
 from pumpjack_cli.core.sampling import crank_grid
 
-from helpers import INCH, POUND_FORCE, zoom_scan
+from helpers import INCH, POUND_FORCE
 
 UNIT = ClassThreeLinkage(120 * INCH, 70 * INCH, 24.5 * INCH, 100 * INCH, 70 * INCH, 95 * INCH, COUNTERCLOCKWISE)
 H = 1e-5
@@ -79,35 +79,6 @@ def test_the_stated_pressure_holds_at_its_position_and_the_gas_follows_the_polyt
     v_b, v_t = air.volume(np.array(dead.beam_angle_bottom)), air.volume(np.array(dead.beam_angle_top))
     p_b, p_t = bottom / air.piston_area + ATMOSPHERE, top / air.piston_area + ATMOSPHERE
     assert p_b * v_b**1.4 == pytest.approx(p_t * v_t**1.4, rel=1e-12)
-
-
-@pytest.mark.parametrize("criterion", balance_criteria())
-def test_the_balance_pressure_agrees_with_a_brute_force_scan(criterion):
-    theta = crank_grid(3600)
-    m = UNIT.motion(theta)
-    up = UNIT.torque_factor(theta) > 0
-    load = np.where(up, 55e3, 30e3) + 3e3 * np.sin(3 * theta)
-    air = _cylinder()
-
-    def net(pressures):
-        return np.array([m.torque_factor * load + air.structural_torque(m)
-                         + air.with_value(p).counterbalance_torque(m) for p in pressures])
-
-    def upstroke_mask():
-        dead = UNIT.dead_positions()
-        return ((theta - dead.crank_angle_bottom) % (2 * np.pi)) < dead.upstroke_crank_travel
-
-    mask = upstroke_mask()
-    objectives = {
-        "min-peak": lambda p: np.abs(net(p)).max(axis=1),
-        "min-rms": lambda p: np.mean(net(p) ** 2, axis=1),
-        "equal-peaks": lambda p: np.abs(np.where(mask, net(p), -np.inf).max(axis=1)
-                                        - np.where(mask, -np.inf, net(p)).max(axis=1)),
-    }
-    found = recommend_counterbalance(criterion, UNIT, theta, load, air)
-    scanned = zoom_scan(objectives[criterion], 0.0, 5e6, rounds=8, points=201)
-    assert found.value == pytest.approx(scanned, rel=1e-6)
-    assert found.peak_net_torque == pytest.approx(np.abs(net([found.value])[0]).max(), rel=1e-9)
 
 
 def test_the_bundled_example_builds_its_cylinder_from_the_clearance():

@@ -23,7 +23,7 @@ from pumpjack_cli.core.dynamics.coefficients import gravity_torque
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import ConfigError
 
-from helpers import INCH, POUND_FORCE, zoom_scan
+from helpers import INCH, POUND_FORCE, REPO_ROOT, zoom_scan
 
 LETTERS = 'A = "72 in"\nC = "64 in"\nP = "74.5 in"\nH = "116 in"\nG = "41 in"\nR = "24 in"\n'
 FILES = {
@@ -164,3 +164,21 @@ def test_a_kind_refuses_what_it_cannot_be(tmp_path, text, message):
     path.write_text(f'name = "x"\n{text}', encoding="utf-8")
     with pytest.raises(ConfigError, match=message.replace("[", r"\[").replace("(", r"\(")):
         load_unit(str(path)).counterbalance_model()
+
+
+def test_blocks_that_contradict_the_crank_offset_are_refused(tmp_path):
+    # a Mark II with [masses] whose blocks sit in line with the pin (phase 0, tau = -180 deg on the
+    # tail) while crank_offset says 19 deg: refused with both angles; blocks at 180 + 19 = -161 deg pass
+    mark = (REPO_ROOT / "configs" / "m-912d-365-168.toml").read_text(encoding="utf-8")
+    start, end = mark.index("[counterbalance]"), mark.index("# ILLUSTRATIVE well")
+    conventional = (REPO_ROOT / "configs" / "c-114d-133-54.toml").read_text(encoding="utf-8")
+    blocks = conventional[conventional.index("[masses.crank_arm]"):conventional.index("# ILLUSTRATIVE well")]
+    # crank arms of negligible mass, so that the blocks alone set the offset
+    blocks = blocks.replace('phase = "0 deg"', 'phase = "{phase}"').replace('mass = "300 kg"', 'mass = "0.001 kg"', 1)
+    path = tmp_path / "mark.toml"
+    path.write_text(mark[:start] + blocks.format(phase="0 deg") + mark[end:], encoding="utf-8")
+    with pytest.raises(ConfigError, match="put the crank offset at -180 deg, \\[geometry\\] crank_offset says 19 deg"):
+        load_unit(str(path)).counterbalance_model()
+    path.write_text(mark[:start] + blocks.format(phase="-161 deg") + mark[end:], encoding="utf-8")
+    balance, known = load_unit(str(path)).counterbalance_model()
+    assert known and balance.offset == pytest.approx(math.radians(19.0))
