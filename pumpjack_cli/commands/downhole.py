@@ -72,8 +72,10 @@ def downhole(
     production = Production(production_share(runtime, "runtime", "--runtime"),
                             production_share(pump_efficiency, "fraction", "--pump-efficiency"), drive_efficiency,
                             quantity(electricity_price, "energy_price", "--electricity-price"))
-    if production.electricity_price is not None and production.runtime is None:
-        raise PumpjackError("--electricity-price: the cost per day needs --runtime (how long the unit runs a day)")
+    for option, given in (("--electricity-price", production.electricity_price),
+                          ("--pump-efficiency", production.pump_efficiency)):
+        if given is not None and production.runtime is None:
+            raise PumpjackError(f"{option}: a rate per day needs --runtime (how long the unit runs a day)")
     result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, method.value,
                  damping, samples, service_factor, production)
     sink.emit(result, SHOWN)

@@ -28,6 +28,10 @@ def _well(help_text: str):
     return typer.Option(help=f"{help_text} [default: the unit's [well]]")
 
 
+def _fault(help_text: str):
+    return typer.Option(help=f"simulate {help_text} [default: a sound pump; uniform rotation only]")
+
+
 def predict(
     unit: UnitArgument,
     spm: SpmOption = None,
@@ -46,23 +50,21 @@ def predict(
     fillage: Annotated[str | None, _well("share of the barrel filled with liquid ('80 %')")] = None,
     gas_exponent: Annotated[float | None, _well(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
-    unanchored_tubing: Annotated[str | None, typer.Option(
-        help="simulate unanchored tubing of this API size (2-3/8, 2-7/8 or 3-1/2): it stretches under the fluid "
-             "load")] = None,
-    travelling_valve_leak: Annotated[str | None, typer.Option(
-        help="simulate a leaking travelling valve: its leak at the full fluid-load pressure difference, a rate "
-             "('5 m3/d', '30 bbl/d') or a share of the pump's displacement ('100 %')")] = None,
-    standing_valve_leak: Annotated[str | None, typer.Option(
-        help="simulate a leaking standing valve, as --travelling-valve-leak")] = None,
-    tag_bottom: Annotated[str | None, typer.Option(
-        help="simulate a pump tagging down: the plunger meets the pump's bottom this far above the lowest point of "
-             "its free stroke ('5 cm')")] = None,
-    tag_top: Annotated[str | None, typer.Option(
-        help="simulate a pump tagging up: the plunger meets the barrel's top this far below the highest point of "
-             "its free stroke ('5 cm')")] = None,
-    parted_at: Annotated[str | None, typer.Option(
-        help="simulate a parted rod string: the break's depth along the rods ('800 m') or share of the pump depth "
-             "('55 %'); nothing hangs on the free end")] = None,
+    unanchored_tubing: Annotated[str | None, _fault(
+        "unanchored tubing of this API size (2-3/8, 2-7/8 or 3-1/2): it stretches under the fluid load")] = None,
+    travelling_valve_leak: Annotated[str | None, _fault(
+        "a leaking travelling valve: its leak at the full fluid-load pressure difference, a rate ('5 m3/d', "
+        "'30 bbl/d') or a share of the pump's displacement ('100 %')")] = None,
+    standing_valve_leak: Annotated[str | None, _fault("a leaking standing valve, as --travelling-valve-leak")] = None,
+    tag_bottom: Annotated[str | None, _fault(
+        "a pump tagging down: the plunger meets the pump's bottom this far above the lowest point of its free "
+        "stroke ('5 cm')")] = None,
+    tag_top: Annotated[str | None, _fault(
+        "a pump tagging up: the plunger meets the barrel's top this far below the highest point of its free "
+        "stroke ('5 cm')")] = None,
+    parted_at: Annotated[str | None, _fault(
+        "a parted rod string: the break's depth along the rods ('800 m') or share of the pump depth ('55 %'); "
+        "nothing hangs on the free end")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
     catalogue: CatalogueOption = None,

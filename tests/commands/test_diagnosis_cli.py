@@ -144,7 +144,8 @@ def test_the_slippage_past_the_plunger_comes_off_the_production(run_cli, tmp_pat
     (("--runtime", "25 h"), "--runtime: '25 h' is outside 0 .. 100 %"),
     (("--runtime", "0 %"), "--runtime: '0 %' is outside"),
     (("--pump-efficiency", "120 %", "--runtime", "24 h"), "--pump-efficiency: '120 %' is outside"),
-    (("--electricity-price", "0.1 /kWh"), "--electricity-price: the cost per day needs --runtime"),
+    (("--electricity-price", "0.1 /kWh"), "--electricity-price: a rate per day needs --runtime"),
+    (("--pump-efficiency", "85 %"), "--pump-efficiency: a rate per day needs --runtime"),
     (("--electricity-price", "0.1 kWh", "--runtime", "24 h"), "--electricity-price"),
 ])
 def test_bad_production_options_get_one_line_and_exit_2(run_cli, argv, words):
