@@ -67,7 +67,7 @@ def study(wells, dampings, records: list | None = None) -> tuple[collections.Cou
                     label = str(found.label[0])
                     if records is not None:
                         records.append((item.well, item.spm, damping, item.condition, item.severity, samples, scale,
-                                        label, {k: float(v[0]) for k, v in vars(found.features).items()}))
+                                        label, {k: float(v[0]) for k, v in vars(found.features).items()}, nu))
                     confusion[(item.condition, label)] += 1
                     if label != item.condition:
                         misses.append((item.well, round(item.spm, 1), damping, item.condition, item.severity, samples,
@@ -114,6 +114,13 @@ def main() -> None:
         print(f"\n{condition}: unloading-point fillage minus liquid fillage {error[:, 0].min():+.1f} .. "
               f"{error[:, 0].max():+.1f} points; travelling-valve opening minus liquid fillage "
               f"{error[:, 1].min():+.1f} .. {error[:, 1].max():+.1f} points")
+    if records:
+        ratio = collections.defaultdict(list)
+        for record in records:
+            if record[6] == 1.0:
+                ratio[record[3]].append(record[9] / record[2])
+        print("\nenergy-balance damping / true damping: " + "; ".join(
+            f"{condition} {min(values):.2f}-{max(values):.2f}" for condition, values in ratio.items()))
     print(f"\n{len(misses)} cards labelled wrong:")
     for miss in misses:
         print("   ", miss)

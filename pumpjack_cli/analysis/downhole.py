@@ -77,8 +77,7 @@ def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, meth
     nu, reason = balanced_damping(rod_string, card.period, card.position, card.load, fluid_load,
                                   fluid_density=well.fluid_density, fallback=DEFAULT_DAMPING_FACTOR, method=method)
     if reason:
-        warn(f"unit {unit.name}: no damping balances this card's energy ({reason}); damping factor "
-             f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
+        warn(f"unit {unit.name}: {reason}; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
         return nu, "assumed"
     return nu, "energy balance"
 

@@ -425,23 +425,35 @@ def _sequence(fill: np.ndarray, window: int) -> np.ndarray:
     return out
 
 
+#: The damping factors the energy balance may give before its premise is doubted: below, the rods
+#: would ring on for tens of strokes; above, a quarter of the first mode's critical damping. A
+#: stated choice, not a published range (docs/diagnosis.md).
+PLAUSIBLE_DAMPING = (0.01, 0.5)
+
+
 def balanced_damping(string: RodString, period: float, position, load, fluid_load: float, *, fluid_density: float,
                      fallback: float, method: str = "gibbs") -> tuple[float, str]:
     """Gibbs' nu from the energy balance of the rods with the pump's hydraulic work F_o S_n
-    (:func:`.downhole.damping_from_fluid_load`), or ``fallback`` with the reason when the balance
-    has no root: a card whose pump does less work than F_o S_n even with undamped rods (a parted
-    string, a pump that lifts nothing, a fluid level far higher than the well file says) or more
-    than the largest damping explains. Returns (nu, reason), the reason empty when the balance held.
+    (:func:`.downhole.damping_from_fluid_load`), or ``fallback`` with the reason: when the balance
+    has no root (a parted string, a pump that lifts nothing, a card doing less work than F_o S_n
+    even with undamped rods or more than the largest damping explains), or when its root lies
+    outside :data:`PLAUSIBLE_DAMPING` (a pump whose work is not F_o S_n: a leaking valve, a
+    fluid level far from the well file's). Returns (nu, reason), the reason empty when the
+    balance held.
 
-    The balance is exact for a full or fluid-pounding pump with the well's fluid level; on cards
-    whose pump work is not F_o S_n (leaking valves, gas) or with a stale fluid level it drifts
-    (nu 0.02-0.27 for a true 0.07-0.15 on the corpus of docs/diagnosis.md), and the labels are
-    made to hold for such a damping and 15 % either side of it.
+    The balance is exact for a full or fluid-pounding pump with the well's fluid level; on other
+    cards it drifts (0.02 to 1.9 times the true damping on the corpus of docs/diagnosis.md), and
+    the labels are made to hold for such a damping and 15 % either side of it.
     """
     from .downhole import damping_from_fluid_load
 
     try:
-        return damping_from_fluid_load(string, period, position, load, fluid_load, fluid_density=fluid_density,
-                                       method=method), ""
+        nu = damping_from_fluid_load(string, period, position, load, fluid_load, fluid_density=fluid_density,
+                                     method=method)
     except DownholeError as exc:
-        return fallback, str(exc)
+        return fallback, f"no damping balances this card's energy ({exc})"
+    low, high = PLAUSIBLE_DAMPING
+    if not low <= nu <= high:
+        return fallback, (f"the energy balance gives damping factor {nu:.3g}, outside {low:g}-{high:g}: the pump's "
+                          f"work is not F_o S_n (a leaking valve, gas, a fluid level far from the well's)")
+    return nu, ""
