@@ -408,6 +408,60 @@ SECTIONS: tuple[Section, ...] = (
         E("taper_{taper}_goodman_loading", "percent", "modified Goodman loading of taper {taper}: stress range over "
           "the allowable range ([API11BR])"),
     )),
+    Section("Pump condition, production and fluid level (`downhole`)",
+            "What the pump card says ([Rowlan2008], [McCoyRowlanPodio], [EchometerLeakValve]); rules, sources and "
+            "the accuracy study in `docs/diagnosis.md`. Positions along the stroke are shares of the gross pump "
+            "stroke from its bottom; loads on the pump card are shares of the card's fluid load.", (
+        E("pump_condition", TEXT, "condition of the pump read off the pump card: full, fluid_pound, gas_interference, "
+          "travelling_valve_leak, standing_valve_leak, tagging_down, tagging_up, unanchored_tubing or rod_part"),
+        E("pump_condition_confidence", "ratio", "0..1: the score of the condition's rule less half the next best"),
+        E("pump_condition_second", TEXT, "the next best condition where its score reaches 0.25, else empty"),
+        E("reference_fluid_load", "force", "F_o line of the pump card, (p_d − p_i) A_p from the well's fluid level "
+          "(with none, the fluid level at the pump) ([Rowlan2008])", "F_o"),
+        E("travelling_valve_closing", "percent", "where the load has risen 10 % of the fluid load on the upstroke: "
+          "the travelling valve has closed"),
+        E("standing_valve_opening", "percent", "where the load has risen 90 % of the fluid load on the upstroke: the "
+          "standing valve opens"),
+        E("standing_valve_closing", "percent", "where the load has fallen 10 % of the fluid load on the downstroke: "
+          "the standing valve has closed"),
+        E("travelling_valve_opening", "percent", "where the load has fallen 90 % of the fluid load on the "
+          "downstroke: the travelling valve opens (on a gas card, the liquid and the gas compressed to p_d)"),
+        E("pickup_travel", "length", "plunger travel from the travelling valve's closing to the standing valve's "
+          "opening (the load-transfer slope is 0.8 F_o over it)"),
+        E("unloading_travel", "length", "plunger travel from the standing valve's closing to the travelling valve's "
+          "opening"),
+        E("slow_upstroke_load", "percent", "mean load of the plunger rising slowly near the top (15-50 % of its mean "
+          "speed, top quarter of the stroke); below 100 %: the load leaves before the top (a leaking travelling "
+          "valve)"),
+        E("slow_downstroke_load", "percent", "mean load of the plunger falling slowly near the bottom; above 0: the "
+          "load comes back before the bottom (a leaking standing valve)"),
+        E("bottom_spike", "percent", "how far the load falls below the downstroke level in the lowest 10 % of the "
+          "stroke (tagging down)"),
+        E("top_spike", "percent", "how far the load rises above the upstroke level in the highest 10 % of the "
+          "stroke (tagging up)"),
+        E("card_area_ratio", "percent", "pump card work / (reference fluid load × gross pump stroke): the card "
+          "against the ideal rectangle"),
+        E("rod_break_depth", "length", "depth along the rods of a parted string's break: the free end the wave "
+          "equation finds (`docs/cards.md`), else where the rods above weigh the card's mean load"),
+        E("discharge_pressure", "pressure", "pressure above the plunger: tubing-head pressure + fluid gradient × "
+          "the pump's true vertical depth", "p_d"),
+        E("pump_submergence", "length", "producing fluid level above the pump from the card's intake pressure and "
+          "the casing-head pressure, gas-free gradient, (p_i − p_c)/(rho g)", "h"),
+        E("fluid_level_depth", "length", "producing fluid level below the surface, true vertical: pump true vertical "
+          "depth − pump_submergence"),
+        E("runtime", "percent", "share of the day the unit runs (--runtime, the manifest's runtime)"),
+        E("pump_slippage", "flow_rate", "liquid slipping past the plunger, laminar flow through its clearance while "
+          "it carries the load ([Wang2019]), averaged over the day's running time"),
+        E("pump_efficiency", "percent", "stated volumetric efficiency of the pump (--pump-efficiency), instead of "
+          "the slippage"),
+        E("inferred_production", "flow_rate", "liquid produced per day: net stroke × plunger area × strokes per day "
+          "× runtime, less slippage (or × the stated pump efficiency)", "Q"),
+        E("system_efficiency", "ratio", "efficiency from the electricity supply to the polished rod "
+          "(--system-efficiency; 1: the polished rod's own energy)", "η_s"),
+        E("energy_per_day", "daily_energy", "energy the well takes from the supply per day: polished-rod power / "
+          "system efficiency × 24 h × runtime"),
+        E("electricity_cost", "daily_cost", "cost of the energy per day at --electricity-price, in its currency"),
+    )),
     Section("Predicted cards (`predict`, `dynamics --well-model wave`)",
             "The rods as a damped wave equation driven by the exact polished-rod motion, the pump's valves at the "
             "bottom ([Gibbs1963]); definitions in `docs/predict.md`. Card columns and pump-card names as in "
@@ -490,6 +544,9 @@ SECTIONS: tuple[Section, ...] = (
         E("error", TEXT, "the one-line message the single command prints"),
         E("warnings", TEXT, "the analysis' warnings, joined by ` | `"),
         E("{analysis}_status", TEXT, "(`trend`) the status of the {analysis} analysis of the card"),
+        E("sequence_condition", TEXT, "(`trend`) what the well's consecutive cards say together: pump_off (the "
+          "load-transfer point marches one way), gas_interference (it jumps back and forth), steady; empty for the "
+          "first two cards"),
     )),
 )
 del E

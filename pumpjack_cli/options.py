@@ -175,3 +175,16 @@ def deviation(survey: Path | None, friction: float | None, guide_limit: str | No
     if limit is not None and not limit > 0:
         raise PumpjackError(f"--guide-limit {guide_limit}: must be above 0")
     return Deviation(survey, friction, limit, profile)
+
+ElectricityPriceOption = Annotated[float | None, typer.Option(
+    "--electricity-price", help="price of a kWh of electricity, in any currency: the energy cost per day is given in "
+    "the same currency", min=0.0, max=1e6, callback=finite)]
+
+
+def production_share(text: str | None, dimension: str, option: str) -> float | None:
+    """A share in (0, 1] given with its unit (``--runtime "18 h"`` or ``"75 %"``, ``--pump-efficiency
+    "85 %"``); None when not given; a value outside (0, 100 %] is refused naming the option."""
+    share = quantity(text, dimension, option)
+    if share is not None and not 0.0 < share <= 1.0:
+        raise PumpjackError(f"{option}: {text!r} is outside 0 .. 100 % (24 h a day)")
+    return share

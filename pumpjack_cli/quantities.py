@@ -81,6 +81,10 @@ INPUT_UNITS: dict[str, dict[str, float]] = {
     # weights of a pound and a kilogram per unit length, as rod tables print them
     "weight_per_length": {"n/m": 1.0, "kn/m": 1e3, "lbf/ft": POUND_FORCE / FOOT, "lb/ft": POUND_FORCE / FOOT,
                           "kgf/m": KILOGRAM_FORCE, "kg/m": KILOGRAM_FORCE},
+    "flow_rate": {"m3/s": 1.0, "m3/d": 1 / 86400, "bbl/d": BARREL / 86400, "l/s": 1e-3, "l/min": 1e-3 / 60},
+    # the share of the day a unit runs: a percentage or hours per day
+    "runtime": {"%": 1e-2, "h/d": 1 / 24, "h": 1 / 24},
+    # a price per unit of energy, in any currency: SI per joule
 }
 
 #: Other spellings of the units above, normalised text -> key: English names, and the
@@ -98,13 +102,15 @@ UNIT_SPELLINGS = {
 _EXAMPLE_UNITS = {"length": "m", "mass": "kg", "force": "N", "torque": "N*m", "moment_of_inertia": "kg*m2",
                   "rotational_speed": "rpm", "angle": "deg", "rotational_stiffness": "N*m/rad", "power": "kW", "density": "kg/m3",
                   "kinematic_viscosity": "mm2/s", "fraction": "%", "area": "cm2", "area_moment": "cm4",
-                  "pressure": "MPa", "weight_per_length": "lbf/ft"}
+                  "pressure": "MPa", "weight_per_length": "lbf/ft",
+                  "runtime": "h/d", "flow_rate": "m3/d"}
 
 #: The SI unit every value of a dimension is converted to, as messages print it.
 SI_LABELS = {"length": "m", "mass": "kg", "force": "N", "torque": "N·m", "moment_of_inertia": "kg·m²",
              "rotational_speed": "rad/s", "angle": "rad", "rotational_stiffness": "N·m/rad", "power": "W",
              "density": "kg/m³", "kinematic_viscosity": "m²/s", "fraction": "", "area": "m²", "area_moment": "m⁴",
-             "pressure": "Pa", "weight_per_length": "N/m", "volume": "m³"}
+             "pressure": "Pa", "weight_per_length": "N/m", "volume": "m³",
+             "runtime": "", "flow_rate": "m³/s"}
 
 _NUMBER = re.compile(r"^\s*([+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(.*?)\s*$")
 

@@ -4,12 +4,15 @@ The card is put on a uniform time grid over one period (its time stamps, or the 
 exact kinematics and crank speed for a card of positions only); the damped wave
 equation of the tapered string turns it into the pump card ([Gibbs1963],
 [EverittJennings1992]); the pump card is read for strokes, fillage and fluid load, the
-rods for stresses and Goodman loading ([API11BR]).
+rods for stresses and Goodman loading ([API11BR]), the pump's condition with its evidence
+(:mod:`pumpjack_cli.core.rods.diagnosis`), and the well's production, intake pressure,
+fluid level and energy per day (:mod:`pumpjack_cli.core.rods.production`).
 """
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -23,13 +26,17 @@ from ..core.rods.analysis import (
     summarise_pump_card,
     taper_loads,
 )
+from ..core.rods.diagnosis import balanced_damping, diagnose, hanging_depth
 from ..core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
-    damping_from_fluid_load,
     downhole_methods,
     pump_card,
 )
 from ..core.rods.deviated_diagnostic import deviated_pump_card
+from ..core.rods.plausibility import PARTED_FLATNESS, free_end
+from ..core.rods.production import (energy_per_day, fluid_above_pump, inferred_production,
+                                    intake_pressure_from_load, slippage_rate)
+from ..core.rods.pump import discharge_pressure
 from ..errors import DownholeError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
@@ -43,6 +50,19 @@ if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
 
 #: Samples per period of the surface card on its uniform time grid.
 DEFAULT_SAMPLES = 360
+
+
+@dataclass(frozen=True)
+class Production:
+    """What turns a pump card into the office's numbers: the share of the day the unit runs
+    (None: no rate is given), a stated pump efficiency (None: the slippage from the plunger's
+    clearance, if the well gives it), the system's efficiency (supply to polished rod) and a price of energy per J (None:
+    no cost)."""
+
+    runtime: float | None = None
+    pump_efficiency: float | None = None
+    system_efficiency: float = 1.0
+    electricity_price: float | None = None
 
 
 def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, method: str,
@@ -61,17 +81,21 @@ def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, meth
              f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
         return DEFAULT_DAMPING_FACTOR, "assumed"
     fluid_load = (found[0] - found[1]) * math.pi * well.plunger_diameter**2 / 4.0
-    nu = damping_from_fluid_load(rod_string, card.period, card.position, card.load, fluid_load,
-                                 fluid_density=well.fluid_density, method=method, solve=solve)
+    nu, reason = balanced_damping(rod_string, card.period, card.position, card.load, fluid_load,
+                                  fluid_density=well.fluid_density, fallback=DEFAULT_DAMPING_FACTOR, method=method,
+                                  solve=solve)
+    if reason:
+        warn(f"unit {unit.name}: {reason}; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
+        return nu, "assumed"
     return nu, "energy balance"
 
 
 def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion: str, method: str | None,
              damping: float | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
-             deviation: Deviation = Deviation()) -> Result:
-    """Pump card, pump-card figures and rod stresses of one surface card; in a deviated well
-    (``deviation``'s survey or the unit's) with the drag and gravity along the hole
-    (:mod:`.deviated`), method None choosing."""
+             deviation: Deviation = Deviation(), production: Production = Production()) -> Result:
+    """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
+    of one surface card; in a deviated well (``deviation``'s survey or the unit's) with the drag
+    and gravity along the hole (:mod:`.deviated`), method None choosing."""
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     method = method_for(unit, method)
     if method not in downhole_methods():
@@ -123,6 +147,9 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
     found = unit.pump_pressures()
     if found is not None:
         summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0]))))
+    summary += condition_summary(unit, surface, pump, string)
+    summary += well_summary(unit, figures, pump, surface_work / surface.period, surface.period, production,
+                            intake_known=found is not None)
     summary += taper_summary(string, loads, service_factor)
     columns = (
         Column("time", surface.time),
@@ -141,7 +168,10 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
         curves += more_curves
         title += f", survey {Path(well.survey).name}" + (f", friction {deviated.friction_coefficient:g}"
                                                          if deviated is not None else "")
-    panels: tuple[Panel, ...] = (Panel("load", (), curves=curves, x_label="position"),
+    f_o = reference_fluid_load(unit)   # the reference load lines of [Rowlan2008] on both cards
+    lines = (("W_rf", pump.buoyant_weight), ("W_rf + F_o", pump.buoyant_weight + f_o), ("F_o (pump card)", f_o),
+             ("", 0.0))
+    panels: tuple[Panel, ...] = (Panel("load", (), curves=curves, x_label="position", levels=lines),
                                  goodman_panel(string, loads, service_factor))
     if deviation.profile:
         profile = deviated.profile if deviated is not None else deviated_pump_card(
@@ -167,3 +197,89 @@ def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[
     curve = Curve("pump card ignoring friction", "pump_position_without_friction", "pump_load_without_friction",
                   style="--")
     return rows, columns, (curve,)
+
+
+def reference_fluid_load(unit: UnitConfig) -> float:
+    """F_o of the pump card's reference lines [N] ([Rowlan2008]): from the well's fluid level or intake
+    pressure, else with the fluid level at the pump (the intake at the casing-head pressure)."""
+    well = unit.require_well()
+    area = math.pi * well.plunger_diameter**2 / 4.0
+    found = unit.pump_pressures()
+    if found is not None:
+        return (found[0] - found[1]) * area
+    return (discharge_pressure(well.pump_vertical_depth(), well.fluid_density, well.tubing_head_pressure)
+            - well.casing_head_pressure) * area
+
+
+def condition_summary(unit: UnitConfig, surface, pump, string) -> list[Scalar]:
+    """The pump's condition ([Rowlan2008], docs/diagnosis.md): the label, its confidence, the
+    second-best label, and the evidence; a parted string's break depth from the wave equation's free
+    end on the surface card (:func:`~pumpjack_cli.core.rods.plausibility.free_end`), else from the
+    hanging weight."""
+    well = unit.require_well()
+    found = diagnose(pump.pump_position, pump.pump_load, reference_fluid_load(unit))
+    ft = found.features
+    label = str(found.label[0])
+    rows = [Scalar("pump_condition", label),
+            Scalar("pump_condition_confidence", float(found.confidence[0])),
+            Scalar("pump_condition_second", str(found.second[0])),
+            Scalar("reference_fluid_load", float(ft.reference_load[0]))]
+    for name in ("travelling_valve_closing", "standing_valve_opening", "standing_valve_closing",
+                 "travelling_valve_opening", "pickup_travel", "unloading_travel", "slow_upstroke_load",
+                 "slow_downstroke_load", "bottom_spike", "top_spike"):
+        value = float(getattr(ft, name)[0])
+        if math.isfinite(value):      # a point the card never reaches is left out, not printed as NaN
+            rows.append(Scalar(name, value))
+    rows.append(Scalar("card_area_ratio", float(ft.area_ratio[0])))
+    if label == "rod_part":
+        depth, off = free_end(surface.load, surface.position, surface.period, string, well.fluid_density)
+        if not off <= PARTED_FLATNESS:
+            depth = float(hanging_depth(string, float(np.mean(surface.load)), well.fluid_density))
+        rows.append(Scalar("rod_break_depth", depth))
+    return rows
+
+
+def well_summary(unit: UnitConfig, figures, pump, polished_rod_power: float, period: float, production: Production,
+                 intake_known: bool) -> list[Scalar]:
+    """Intake pressure, fluid level, production and energy per day from the pump card ([Rowlan2009PIP],
+    [Wang2019]); a rate or an energy only with a runtime."""
+    well = unit.require_well()
+    area = math.pi * well.plunger_diameter**2 / 4.0
+    depth = well.pump_vertical_depth()
+    outlet = discharge_pressure(depth, well.fluid_density, well.tubing_head_pressure)
+    intake = float(intake_pressure_from_load(float(figures.fluid_load), area, outlet))
+    rows = [Scalar("discharge_pressure", outlet)]
+    if not intake_known:
+        rows.append(Scalar("pump_intake_pressure", intake))
+    above = float(fluid_above_pump(intake, well.casing_head_pressure, well.fluid_density))
+    if not 0.0 <= above <= depth:
+        warn(f"unit {unit.name}: the card's fluid load {float(figures.fluid_load) / 1e3:.4g} kN puts the fluid level "
+             f"{'below the pump' if above < 0 else 'above the surface'} (intake pressure {intake / 1e6:.4g} MPa, "
+             f"casing-head pressure {well.casing_head_pressure / 1e6:.4g} MPa): the level is clipped")
+        above = min(max(above, 0.0), depth)
+    rows += [Scalar("pump_submergence", above), Scalar("fluid_level_depth", depth - above)]
+    if production.runtime is None:
+        return rows
+    rows.append(Scalar("runtime", production.runtime))
+    slip: float | None = None
+    if production.pump_efficiency is not None:
+        rows.append(Scalar("pump_efficiency", production.pump_efficiency))
+    elif None in (well.plunger_clearance, well.plunger_length, well.fluid_kinematic_viscosity):
+        warn(f"unit {unit.name}: no slippage deducted from the inferred production: give --pump-efficiency, or the "
+             f"well's plunger_clearance, plunger_length and fluid_kinematic_viscosity")
+    else:
+        slip = float(slippage_rate(well.plunger_diameter, well.plunger_clearance, well.plunger_length,
+                                   well.fluid_kinematic_viscosity * well.fluid_density,
+                                   max(float(figures.fluid_load), 0.0) / area))
+    middle = 0.5 * (float(figures.upstroke_load) + float(figures.downstroke_load))
+    loaded = float(np.mean(np.asarray(pump.pump_load) > middle))
+    if slip is not None:
+        rows.append(Scalar("pump_slippage", slip * loaded * production.runtime))
+    rows.append(Scalar("inferred_production", float(inferred_production(
+        float(figures.net_stroke), area, period, production.runtime,
+        pump_efficiency=production.pump_efficiency or 1.0, slippage=slip or 0.0, loaded_share=loaded))))
+    energy = float(energy_per_day(max(polished_rod_power, 0.0), production.system_efficiency, production.runtime))
+    rows += [Scalar("system_efficiency", production.system_efficiency), Scalar("energy_per_day", energy)]
+    if production.electricity_price is not None:
+        rows.append(Scalar("electricity_cost", energy * production.electricity_price))
+    return rows

@@ -11,7 +11,7 @@ stress and Goodman summary of `pumpjack downhole` ([API11BR]).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -24,6 +24,7 @@ from ..core.rods.analysis import taper_loads
 from ..core.rods.downhole import DEFAULT_DAMPING_FACTOR
 from ..core.rods.deviated_predict import predict_deviated, predict_deviated_cards
 from ..core.rods.predict import Prediction, predict_cards
+from ..core.rods.pump_faults import hanging_pump, parted_damping, parted_string, tag_stops
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
@@ -58,6 +59,8 @@ class WellOverrides:
     survey: str | None = None
     friction_coefficient: float | None = None
     guide_limit: float | None = None
+    #: An API tubing size ("2-7/8"): the tubing unanchored, stretching under the fluid load.
+    tubing_size: str | None = None
 
 
 #: Override field -> (the well's field, the option that sets it).
@@ -72,6 +75,7 @@ _OVERRIDES = {
     "survey": ("survey", "--survey"),
     "friction_coefficient": ("rod_friction_coefficient", "--friction-coefficient"),
     "guide_limit": ("rod_guide_side_load_limit", "--guide-limit"),
+    "tubing_size": ("tubing_size", "--unanchored-tubing"),
 }
 
 
@@ -93,6 +97,8 @@ def with_overrides(unit: UnitConfig, overrides: WellOverrides):
         data["pump_intake_pressure"] = None
     if overrides.intake_pressure is not None:
         data["pump_submergence"] = None
+    if overrides.tubing_size is not None:
+        data["tubing_anchored"] = False
     try:
         changed = type(well).model_validate(data)
     except ValidationError as exc:
@@ -101,6 +107,66 @@ def with_overrides(unit: UnitConfig, overrides: WellOverrides):
         option = next((option for f, option in _OVERRIDES.values() if f == field), f"well.{field}")
         raise PumpjackError(f"{option}: {error_message(error, type(well))}") from None
     return unit.model_copy(update={"well": changed})
+
+
+@dataclass(frozen=True)
+class Faults:
+    """Pump faults to simulate (:mod:`pumpjack_cli.core.rods.pump_faults`), SI; None: none. A valve's
+    leak at the full fluid-load pressure difference [m^3/s], or as a share of the pump's
+    displacement rate (A_p S N with the polished-rod stroke S); the interference of a stop at
+    the bottom or top [m]: how far short of the end of its free stroke the plunger meets it;
+    the depth along the rods [m] or the share of the pump depth where the string is parted."""
+
+    travelling_valve_leak: float | None = None
+    standing_valve_leak: float | None = None
+    leak_shares: tuple[float | None, float | None] = (None, None)
+    tag_bottom: float | None = None
+    tag_top: float | None = None
+    parted_at: float | None = None
+    parted_share: float | None = None
+
+    @property
+    def any(self) -> bool:
+        """True when a fault is asked for."""
+        return any(value is not None for value in (self.travelling_valve_leak, self.standing_valve_leak,
+                                                   *self.leak_shares, self.tag_bottom, self.tag_top,
+                                                   self.parted_at, self.parted_share))
+
+    def words(self) -> str:
+        """The faults for a title: "travelling valve leak, tagging down"."""
+        found = [name for name, on in (
+            ("travelling valve leak", self.travelling_valve_leak is not None or self.leak_shares[0] is not None),
+            ("standing valve leak", self.standing_valve_leak is not None or self.leak_shares[1] is not None),
+            ("tagging down", self.tag_bottom is not None), ("tagging up", self.tag_top is not None),
+            ("parted rods", self.parted_at is not None or self.parted_share is not None)) if on]
+        return ", ".join(found)
+
+
+def _faulty(unit: UnitConfig, string, well_pump, omega: float, nu: float, samples: int, faults: Faults):
+    """The rods, pump and damping of the well with the faults (a parted string keeps the damping
+    force per length of the whole string), and its cards ([Gibbs1963]; :mod:`~pumpjack_cli.core.rods.pump_faults`)."""
+    well, mechanism = unit.well, unit.geometry.mechanism()
+
+    def cards(rods, pump, damping):
+        return predict_cards(mechanism, omega, rods, pump, damping=damping, fluid_density=well.fluid_density,
+                             samples=samples, rod_density=well.rod_density)
+
+    depth = faults.parted_at if faults.parted_share is None else faults.parted_share * string.total_length
+    if depth is not None:
+        if faults.words() != "parted rods":
+            raise PumpjackError("--parted-at: nothing hangs on a parted string's free end; no other pump fault "
+                                "applies")
+        hanging = parted_string(string, depth)
+        return hanging, cards(hanging, hanging_pump(well_pump), parted_damping(string, hanging, nu))
+    displacement = well_pump.plunger_area * mechanism.stroke * omega / (2.0 * np.pi)
+    leaks = [rate if share is None else share * displacement
+             for rate, share in zip((faults.travelling_valve_leak, faults.standing_valve_leak), faults.leak_shares)]
+    pump = replace(well_pump, travelling_valve_leak=leaks[0] or 0.0, standing_valve_leak=leaks[1] or 0.0)
+    if faults.tag_bottom is not None or faults.tag_top is not None:
+        free = cards(string, pump, nu)
+        bottom, top = tag_stops(free.plunger_position, free.pump_load, pump, faults.tag_bottom, faults.tag_top)
+        pump = replace(pump, bottom_stop=bottom, top_stop=top)
+    return string, cards(string, pump, nu)
 
 
 def damping_factor(unit: UnitConfig, given: float | None) -> float:
@@ -126,9 +192,12 @@ class Predicted:
     damping: float
     #: In a deviated well, the profile, drag and grid (:class:`~pumpjack_cli.core.rods.deviated_predict.DeviatedPrediction`).
     deviated: object | None = None
+    #: The rods the cards hang from (a parted string's: those above the break); None: the unit's.
+    rods: object | None = None
 
 
-def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None) -> Predicted:
+def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
+              faults: Faults = Faults()) -> Predicted:
     """Solve the well at uniform crank speed (``--spm`` or the drive) or coupled with the machine."""
     if crank_motion not in CRANK_MOTIONS:
         raise PumpjackError(f"--crank-motion {crank_motion}: use one of {', '.join(CRANK_MOTIONS)}")
@@ -137,14 +206,23 @@ def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: i
     if crank_motion == "uniform":
         omega = unit.crank_speed(spm)
         nu = damping_factor(unit, damping)
+        if faults.any:
+            if path is not None:
+                raise PumpjackError(f"{faults.words()}: the pump faults are simulated on the rods of a vertical well; "
+                                    f"this one has a deviation survey")
+            rods, cards = _faulty(unit, string, well_pump, omega, nu, samples, faults)
+            return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu, rods=rods)
         if path is not None:
             found = predict_deviated_cards(unit.geometry.mechanism(), omega, string, path, well_pump, damping=nu,
                                            fluid_density=well.fluid_density, samples=samples,
                                            friction_coefficient=friction_coefficient(unit))
-            return Predicted(found.cards, np.full(samples, omega), np.zeros(samples), None, nu, found)
+            return Predicted(found.cards, np.full(samples, omega), np.zeros(samples), None, nu, deviated=found)
         cards = predict_cards(unit.geometry.mechanism(), omega, string, well_pump, damping=nu,
                               fluid_density=well.fluid_density, samples=samples, rod_density=well.rod_density)
         return Predicted(cards, np.full(samples, omega), np.zeros(samples), None, nu)
+    if faults.any:
+        raise PumpjackError(f"{faults.words()}: the pump faults are simulated at uniform crank speed "
+                            f"(--crank-motion uniform)")
     if spm is not None:
         raise PumpjackError("--spm sets a uniform crank speed; with --crank-motion dynamic the motor sets the speed")
     for section in ("masses", "drive"):
@@ -166,7 +244,7 @@ def predicted(unit: UnitConfig, spm: float | None, crank_motion: str, samples: i
     if margin < 1.0:
         warn(f"unit {unit.name}: the motor would need {1.0 / margin:.3g} x its pull-out torque; the linear motor "
              f"characteristic is used beyond its validity (the motor would stall)")
-    return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu, deviated)
+    return Predicted(both.cards, both.crank_speed, both.crank_acceleration, both, nu, deviated=deviated)
 
 
 def _runs(found: Predicted, steps: int) -> tuple[Card, list[CardRun]]:
@@ -283,18 +361,20 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
 
 def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
-            steps: int = SUMMARY_STEPS, deviation: Deviation = Deviation()) -> Result:
+            steps: int = SUMMARY_STEPS, deviation: Deviation = Deviation(), faults: Faults = Faults()) -> Result:
     """The result of `pumpjack predict` (module docstring); a survey (``deviation`` or the unit's)
     adds the deviated well's figures (:mod:`.deviated`)."""
     unit = with_survey(with_overrides(unit, overrides), deviation.survey, deviation.friction, deviation.guide_limit)
-    found = predicted(unit, spm, crank_motion, samples, damping)
+    found = predicted(unit, spm, crank_motion, samples, damping, faults)
     cards = found.cards
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
     if found.deviated is not None:  # the cards' datum is the weight along the hole; W_rf stays the whole string's
         whole = unit.rods().buoyant_weight(unit.well.fluid_density)
         summary = [Scalar(s.name, whole) if s.name == "buoyant_rod_weight" else s for s in summary]
+    if faults.parted_at is not None or faults.parted_share is not None:   # no pump hangs on a parted string
+        summary = [Scalar(s.name, 0.0) if s.name in ("net_pump_stroke", "pump_displacement") else s for s in summary]
     summary += _survey_rows(unit, found)
-    string = unit.rods()
+    string = unit.rods() if found.rods is None else found.rods
     joint = np.vstack([cards.taper_top_load, cards.taper_bottom_load[-1:]])
     loads = taper_loads(string, joint)
     summary += taper_summary(string, loads, service_factor)
@@ -326,7 +406,7 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
         panels.insert(2, Panel("motor torque", ("motor_torque",), x="crank_angle",
                                levels=motor_levels(unit.machine(elastic_rods=True).motor)))
     title = (f"{unit.name}: predicted cards, {crank_motion} rotation at {60.0 / cards.summary.period:.4g} strokes/min, "
-             f"damping {found.damping:.3g}")
+             f"damping {found.damping:.3g}" + (f", {faults.words()}" if faults.any else ""))
     if surveyed(unit):
         title += f", survey {Path(unit.well.survey).name}"
     if deviation.profile:

@@ -20,6 +20,8 @@ TREND = (
     ("min_rod_load_n", "downhole"),
     ("fluid_load_n", "downhole"),
     ("pump_fillage_percent", "downhole"),
+    ("pump_condition", "downhole"),
+    ("pump_condition_confidence", "downhole"),
     ("net_pump_stroke_m", "downhole"),
     ("pump_displacement_m3_d", "downhole"),
     ("surface_card_work_j", "downhole"),
@@ -75,6 +77,8 @@ def trend_result(path: Path, well: str) -> Result:
         columns.append(Column(name, [cards[key][analysis][index[name]] if analysis in cards[key] else None
                                      for key in order], quantity=kinds[name],
                               description=f"{name.replace('_', ' ')} ({analysis})"))
+    if "pump_fillage_percent" in index:
+        columns.append(_sequence_column(columns))
     return Result(f"{well}: {len(order)} cards in time order ({path})", (), tuple(columns))
 
 
@@ -162,3 +166,15 @@ def field_page(path: Path):
             "" if condition else "; pump condition: not available (the store holds no diagnosis)"),
              "text" if condition else "missing")))
     return Page(f"Field report: {len(wells)} wells", f"results store {path}", (field, *sections))
+
+def _sequence_column(columns: list[Column]) -> Column:
+    """What the well's consecutive cards say together, from the fillage card after card
+    (:func:`~pumpjack_cli.core.rods.diagnosis.sequence_conditions`); a card without a fillage
+    (its downhole analysis failed) keeps its neighbours' reading apart."""
+    import numpy as np
+
+    from ..core.rods.diagnosis import sequence_conditions
+
+    fillage = next(c for c in columns if c.name == "pump_fillage_percent").values
+    shares = np.array([np.nan if value is None else value / 100.0 for value in fillage], dtype=float)
+    return Column("sequence_condition", [str(text) for text in sequence_conditions(shares)])

@@ -7,16 +7,19 @@ from typing import Annotated
 
 import typer
 
-from ..analysis.downhole import DEFAULT_SAMPLES
 from ..analysis.deviated import profile_shown
+from ..analysis.downhole import DEFAULT_SAMPLES, Production
 from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite)
+                       card_source, finite, quantity)
 from ..options import What, WhatOption
 from ..options import CatalogueOption
-from ..options import CardFormatOption, CardPointsOption, StrokeOption
+from ..errors import PumpjackError
+from ..quantities import KWH
+from ..options import CardFormatOption, CardPointsOption, StrokeOption, production_share
+from ..options import ElectricityPriceOption
 from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
@@ -49,6 +52,16 @@ def downhole(
     friction_coefficient: FrictionCoefficientOption = None,
     guide_limit: GuideLimitOption = None,
     profile: ProfileOption = False,
+    runtime: Annotated[str | None, typer.Option(
+        help="share of the day the unit runs, '75 %' or '18 h', for the inferred production and the energy per day "
+             "[default: no rate is given]")] = None,
+    pump_efficiency: Annotated[str | None, typer.Option(
+        help="stated volumetric efficiency of the pump, '85 %', instead of the slippage from the plunger's clearance "
+             "[default: the slippage, if the well gives plunger_clearance, plunger_length and viscosity]")] = None,
+    system_efficiency: Annotated[float, typer.Option(
+        help="efficiency from the electricity supply to the polished rod (motor, belts, gearbox, unit), for the "
+             "energy per day [default: 1, the polished rod's own energy]", min=0.05, max=1.0, callback=finite)] = 1.0,
+    electricity_price: ElectricityPriceOption = None,
     catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,
@@ -58,10 +71,20 @@ def downhole(
 ) -> None:
     """Pump card from a surface dynamometer card through the rod string's wave equation.
 
-    Pump strokes, fillage, fluid load and displacement; rod stresses and Goodman loading."""
+    Pump strokes, fillage, fluid load and displacement; the pump's condition (full, fluid pound,
+    gas, leaking valves, tagging, unanchored tubing, parted rods) with its evidence; intake
+    pressure, fluid level, inferred production and energy per day; rod stresses and Goodman
+    loading."""
     sink = Output(fmt, units, out, plot, what)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
+    production = Production(production_share(runtime, "runtime", "--runtime"),
+                            production_share(pump_efficiency, "fraction", "--pump-efficiency"), system_efficiency,
+                            None if electricity_price is None else electricity_price / KWH)
+    for option, given in (("--electricity-price", production.electricity_price),
+                          ("--pump-efficiency", production.pump_efficiency)):
+        if given is not None and production.runtime is None:
+            raise PumpjackError(f"{option}: a rate per day needs --runtime (how long the unit runs a day)")
     options = deviation(survey, friction_coefficient, guide_limit, profile)
     result = run(load_unit(unit, catalogue), source, spm, crank_motion.value, None if method is None else method.value,
-                 damping, samples, service_factor, options)
+                 damping, samples, service_factor, options, production)
     sink.emit(result, profile_shown(result.columns) if profile else SHOWN)

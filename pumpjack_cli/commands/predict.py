@@ -8,9 +8,10 @@ from typing import Annotated
 import typer
 
 from ..analysis.deviated import profile_shown
-from ..analysis.predict import DEFAULT_SAMPLES, WellOverrides
+from ..analysis.predict import DEFAULT_SAMPLES, Faults, WellOverrides
 from ..analysis.predict import predict as run
 from ..config import load_unit
+from ..errors import PumpjackError
 from ..options import (FormatOption, Output, OutputOption, PlotOption, ServiceFactorOption, SpmOption, UnitArgument, UnitsOption,
                        UnitSystem, finite, positive, quantity)
 from ..options import What, WhatOption
@@ -27,6 +28,10 @@ class CrankMotion(str, Enum):
 
 def _well(help_text: str):
     return typer.Option(help=f"{help_text} [default: the unit's [well]]")
+
+
+def _fault(help_text: str):
+    return typer.Option(help=f"simulate {help_text} [default: a sound pump; uniform rotation only]")
 
 
 def predict(
@@ -47,6 +52,21 @@ def predict(
     fillage: Annotated[str | None, _well("share of the barrel filled with liquid ('80 %')")] = None,
     gas_exponent: Annotated[float | None, _well(
         "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
+    unanchored_tubing: Annotated[str | None, _fault(
+        "unanchored tubing of this API size (2-3/8, 2-7/8 or 3-1/2): it stretches under the fluid load")] = None,
+    travelling_valve_leak: Annotated[str | None, _fault(
+        "a leaking travelling valve: its leak at the full fluid-load pressure difference, a rate ('5 m3/d', "
+        "'30 bbl/d') or a share of the pump's displacement ('100 %')")] = None,
+    standing_valve_leak: Annotated[str | None, _fault("a leaking standing valve, as --travelling-valve-leak")] = None,
+    tag_bottom: Annotated[str | None, _fault(
+        "a pump tagging down: the plunger meets the pump's bottom this far above the lowest point of its free "
+        "stroke ('5 cm')")] = None,
+    tag_top: Annotated[str | None, _fault(
+        "a pump tagging up: the plunger meets the barrel's top this far below the highest point of its free "
+        "stroke ('5 cm')")] = None,
+    parted_at: Annotated[str | None, _fault(
+        "a parted rod string: the break's depth along the rods ('800 m') or share of the pump depth ('55 %'); "
+        "nothing hangs on the free end")] = None,
     samples: Annotated[int, typer.Option(help="time samples per cycle", min=64, max=20_000)] = DEFAULT_SAMPLES,
     service_factor: ServiceFactorOption = 1.0,
     survey: SurveyOption = None,
@@ -73,11 +93,38 @@ def predict(
         fluid_density=quantity(fluid_density, "density", "--fluid-density"),
         fillage=quantity(fillage, "fraction", "--fillage"),
         gas_exponent=finite(gas_exponent),
+        tubing_size=unanchored_tubing,
     )
+    leaks = [_leak(text, option) for text, option in ((travelling_valve_leak, "--travelling-valve-leak"),
+                                                        (standing_valve_leak, "--standing-valve-leak"))]
+    parted = _share_or(parted_at, "length", "--parted-at")
+    faults = Faults(leaks[0][0], leaks[1][0], (leaks[0][1], leaks[1][1]),
+                    quantity(tag_bottom, "length", "--tag-bottom"), quantity(tag_top, "length", "--tag-top"),
+                    parted[0], parted[1])
     result = run(load_unit(unit, catalogue), spm, crank_motion.value, samples, damping, overrides, service_factor,
-                 deviation=deviation(survey, friction_coefficient, guide_limit, profile))
+                 deviation=deviation(survey, friction_coefficient, guide_limit, profile), faults=faults)
     if profile:
         sink.emit(result, profile_shown(result.columns))
         return
     torque = "net_torque" if any(c.name == "net_torque" for c in result.columns) else "recommended_net_torque"
     sink.emit(result, (*SHOWN, torque))
+
+
+def _share_or(text: str | None, dimension: str, option: str) -> tuple[float | None, float | None]:
+    """An option given as a quantity of ``dimension`` or as a percentage: (value, None) or (None, share)."""
+    if text is None:
+        return None, None
+    if text.strip().endswith("%"):
+        share = quantity(text, "fraction", option)
+        if not 0.0 < share:
+            raise PumpjackError(f"{option}: {text!r} must be above 0 %")
+        return None, share
+    value = quantity(text, dimension, option)
+    if not value > 0.0:
+        raise PumpjackError(f"{option}: {text!r} must be above 0")
+    return value, None
+
+
+def _leak(text: str | None, option: str) -> tuple[float | None, float | None]:
+    """A valve's leak: a rate at the full fluid-load pressure difference, or a share of the displacement."""
+    return _share_or(text, "flow_rate", option)

@@ -10,6 +10,7 @@ import typer
 from ..analysis.report import ReportOptions, report as run
 from ..analysis.torque import Energy
 from ..config import load_unit
+from ..options import ElectricityPriceOption
 from ..options import (CatalogueOption, CardColumnsOption, CardFormatOption, CardOption, CardPointsOption, CardSpmOption, CardUnitsOption,
                        CrankMotion, CrankMotionOption, OutputOption, ServiceFactorOption, StepsOption, StrokeOption,
                        UnitArgument, UnitsOption, UnitSystem, card_source, finite)
@@ -50,8 +51,7 @@ def report(
         help="efficiency of belt and gearbox, as `pumpjack torque`", min=0.1, max=1.0, callback=finite)] = 1.0,
     motor_efficiency: Annotated[float, typer.Option(
         help="efficiency of the motor, as `pumpjack torque`", min=0.1, max=1.0, callback=finite)] = 1.0,
-    electricity_price: Annotated[float | None, typer.Option(
-        help="price of a kWh, in any currency, as `pumpjack torque`", min=0.0, max=1e6, callback=finite)] = None,
+    electricity_price: ElectricityPriceOption = None,
     catalogue: CatalogueOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,

@@ -9,6 +9,7 @@ import typer
 
 from ..analysis.torque import Energy, torque as run
 from ..config import load_unit
+from ..options import ElectricityPriceOption
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, StepsOption, UnitArgument, UnitsOption, UnitSystem,
                        card_source, finite)
@@ -55,9 +56,7 @@ def torque(
     motor_efficiency: Annotated[float, typer.Option(
         help="efficiency of the motor, for the energy it takes a day [default: 1, the energy at its shaft]", min=0.1,
         max=1.0, callback=finite)] = 1.0,
-    electricity_price: Annotated[float | None, typer.Option(
-        help="price of a kWh of electricity, in any currency: the energy cost per day is given in the same "
-             "currency", min=0.0, max=1e6, callback=finite)] = None,
+    electricity_price: ElectricityPriceOption = None,
     catalogue: CatalogueOption = None,
     fmt: FormatOption = None,
     what: WhatOption = What.columns,

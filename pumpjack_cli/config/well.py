@@ -86,8 +86,11 @@ class Well(Section):
     tubing_head_pressure: Pressure = Field(default=0.0, ge=0, le=1e8, description="tubing (wellhead) pressure [Pa]")
     casing_head_pressure: Pressure = Field(default=0.0, ge=0, le=1e8, description="casing head pressure [Pa]")
     plunger_clearance: Annotated[Length, at_least(1e-6, "1 um")] | None = Field(
-        default=None, gt=0, le=1e-3, description="clearance between plunger and barrel, for the plunger friction [m]"
+        default=None, gt=0, le=1e-3, description="diametral clearance (fit) between plunger and barrel, for the "
+        "plunger friction and the slippage [m]"
     )
+    plunger_length: Annotated[Length, at_least(0.1, "0.1 m")] | None = Field(
+        default=None, gt=0, le=15, description="length of the plunger, for the slippage past it [m]")
     pump_submergence: Length | None = Field(
         default=None, ge=0, le=5000, description="depth of the pump below the dynamic fluid level, h [m]"
     )

@@ -25,7 +25,7 @@ from .unit_files import names_a_file
 
 #: Manifest columns: required, then optional.
 REQUIRED_COLUMNS = ("well", "unit", "card")
-OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp", "survey")
+OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp", "survey", "runtime")
 #: Largest manifest [bytes].
 MAX_MANIFEST_BYTES = 64 << 20
 
@@ -44,6 +44,8 @@ class Job:
     rod_string: str | None = None
     timestamp: str = ""
     survey: str | None = None
+    #: Share of the day the unit runs (0, 1], for the inferred production of `downhole`.
+    runtime: float | None = None
 
 
 def _row_error(source: str, line: int, message: str) -> PumpjackError:
@@ -125,6 +127,20 @@ def _moment(row: dict, number: int, source: str) -> float | None:
         raise _row_error(source, number, f"counterbalance_moment: {exc}") from None
 
 
+def _runtime(row: dict, number: int, source: str) -> float | None:
+    """The row's runtime as a share of the day, if given (``"75 %"``, ``"18 h"``)."""
+    text = row.get("runtime")
+    if text is None or text == "":
+        return None
+    try:
+        share = parse_quantity(text, "runtime", require_unit=True)
+    except ValueError as exc:
+        raise _row_error(source, number, f"runtime: {exc}") from None
+    if not 0.0 < share <= 1.0:
+        raise _row_error(source, number, f"runtime: {text!r} is outside 0 .. 100 % (24 h a day)")
+    return share
+
+
 def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     for name in REQUIRED_COLUMNS:
         if not isinstance(row.get(name), str) or not row[name].strip():
@@ -150,4 +166,6 @@ def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     timestamp = row.get("timestamp") or ""
     if not isinstance(timestamp, str):
         timestamp = str(timestamp)
-    return [Job(row["well"].strip(), unit, card, number, spm, moment, rod_string, timestamp, survey) for card in cards]
+    runtime = _runtime(row, number, source)
+    return [Job(row["well"].strip(), unit, card, number, spm, moment, rod_string, timestamp, survey, runtime)
+            for card in cards]

@@ -80,6 +80,8 @@ def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) ->
             "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
     if job.survey is not None:  # absent without one, so that the stores written before surveys keep their keys
         made["survey"] = _sha256(job.survey) if os.path.isfile(job.survey) else job.survey
+    if job.runtime is not None and analysis == "downhole":  # a row without one keeps the hash stores had before
+        made["runtime"] = job.runtime
     text = json.dumps(made, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()
 

@@ -182,7 +182,7 @@ def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
 
 def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
     """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
-    from ..downhole import downhole
+    from ..downhole import Production, downhole
     from ..torque import torque
 
     unit, noted = _unit(job, options.catalogue)  # loaded once per process
@@ -191,7 +191,8 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> di
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
-        result = downhole(unit, card, job.spm, "auto", None, options.damping)  # Everitt-Jennings with drag if deviated
+        result = downhole(unit, card, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
+                          production=Production(runtime=job.runtime))
     check_finite(result)
     return converted_summary(result, "si")
 

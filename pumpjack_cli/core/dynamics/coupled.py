@@ -262,6 +262,9 @@ class _CoupledMarch:
         self.carry = states[:, 1] - model.response.hat[:, 0] * forcing[:, 1]
         self.last_load, self.last_position = float(load[0]), -float(uniform.plunger_position[0])
         f_o = model.pump.fluid_load
+        if model.pump.faulty:
+            raise PredictionError("valve leaks and stops are modelled at uniform crank speed (predict), not coupled "
+                                  "with the machine")
         self.chamber = PumpChamber(model.pump, 0.0, (f_o - load[0]) / model.pump.tubing_stiffness
                                    + uniform.plunger_position[0])
         self.theta, self.omega, self.epsilon = 0.0, omega, 0.0

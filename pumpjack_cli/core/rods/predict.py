@@ -32,7 +32,8 @@ from ..mechanism import Mechanism
 from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
 from .predict_solver import (Convergence, PumpMarch, WellModel, converge, periodic_carry,
                              periodic_fields, spectral_derivatives, well_model)
-from .pump import Pump, PumpChamber
+from .pump import Pump
+from .pump_faults import pump_chamber
 from .string import RodString
 
 #: Default largest relative change of pump load and plunger position between cycles.
@@ -170,7 +171,8 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
     guess = np.where(velocity > 0.0, f_o, 0.0)
     carry = periodic_carry(model, guess)
     start = periodic_fields(model, guess, -s, -velocity, top_drive).plunger_down[-1]
-    chamber = PumpChamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start)
+    chamber = pump_chamber(pump, model.compliance, (f_o - guess[-1]) / pump.tubing_stiffness - start,
+                           period / samples)
     march = PumpMarch(model, chamber, carry, float(guess[-1]), float(start))
     load, _, discharged, convergence = converge(march, driven, max(f_o, 1.0), stroke, tolerance, max_cycles)
     time = np.arange(samples) * (period / samples)

@@ -128,6 +128,12 @@ class Pump:
         Chamber volume left at the bottom of the stroke [m^3] (used by the gas option).
     tubing_stiffness : float
         k_t [N/m]; math.inf for anchored tubing.
+    travelling_valve_leak, standing_valve_leak : float
+        Leak of the travelling (with the plunger) and standing valve [m^3/s] at the full
+        fluid-load pressure difference F_o / A_p; 0: tight (:mod:`.pump_faults`).
+    bottom_stop, top_stop : float or None
+        Plunger position relative to the barrel [m] where it meets the pump's bottom or top
+        (tagging, :mod:`.pump_faults`); None: no contact.
     """
 
     plunger_area: float
@@ -137,6 +143,16 @@ class Pump:
     gas_exponent: float | None = None
     dead_volume: float = 0.0
     tubing_stiffness: float = math.inf
+    travelling_valve_leak: float = 0.0
+    standing_valve_leak: float = 0.0
+    bottom_stop: float | None = None
+    top_stop: float | None = None
+
+    @property
+    def faulty(self) -> bool:
+        """True when a valve leaks or a stop is set (the chamber of :mod:`.pump_faults`)."""
+        return (self.travelling_valve_leak > 0.0 or self.standing_valve_leak > 0.0
+                or self.bottom_stop is not None or self.top_stop is not None)
 
     @property
     def fluid_load(self) -> float:
@@ -167,6 +183,9 @@ class Pump:
             raise PredictionError(f"dead volume must be >= 0, got {self.dead_volume} m³")
         if not self.tubing_stiffness > 0:
             raise PredictionError(f"tubing stiffness must be positive (math.inf: anchored), got {self.tubing_stiffness}")
+        from .pump_faults import check_faults
+
+        check_faults(self)
 
 
 class PumpChamber:
