@@ -176,6 +176,9 @@ def deviation(survey: Path | None, friction: float | None, guide_limit: str | No
         raise PumpjackError(f"--guide-limit {guide_limit}: must be above 0")
     return Deviation(survey, friction, limit, profile)
 
+RuntimeOption = Annotated[str | None, typer.Option(
+    "--runtime", help="share of the day the unit runs, '75 %' or '18 h', for the inferred production and the energy "
+    "per day [default: no rate is given]")]
 ElectricityPriceOption = Annotated[float | None, typer.Option(
     "--electricity-price", help="price of a kWh of electricity, in any currency: the energy cost per day is given in "
     "the same currency", min=0.0, max=1e6, callback=finite)]

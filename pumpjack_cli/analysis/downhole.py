@@ -199,6 +199,19 @@ def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[
     return rows, columns, (curve,)
 
 
+#: The features of the pump card a label rests on, by their output names ([Rowlan2008], docs/diagnosis.md).
+CARD_EVIDENCE = ("travelling_valve_closing", "standing_valve_opening", "standing_valve_closing",
+                 "travelling_valve_opening", "pickup_travel", "unloading_travel", "slow_upstroke_load",
+                 "slow_downstroke_load", "bottom_spike", "top_spike")
+#: The summary names of the pump's condition and its evidence, in the order a page shows them.
+CONDITION_NAMES = ("pump_condition", "pump_condition_confidence", "pump_condition_second", "reference_fluid_load",
+                   *CARD_EVIDENCE, "card_area_ratio", "rod_break_depth")
+#: The summary names of the well's production, fluid level and energy, in the order a page shows them.
+PRODUCTION_NAMES = ("pump_displacement", "pump_fillage", "net_pump_stroke", "discharge_pressure",
+                    "pump_intake_pressure", "pump_submergence", "fluid_level_depth", "runtime", "pump_efficiency",
+                    "pump_slippage", "inferred_production", "system_efficiency", "energy_per_day", "electricity_cost")
+
+
 def reference_fluid_load(unit: UnitConfig) -> float:
     """F_o of the pump card's reference lines [N] ([Rowlan2008]): from the well's fluid level or intake
     pressure, else with the fluid level at the pump (the intake at the casing-head pressure)."""
@@ -224,9 +237,7 @@ def condition_summary(unit: UnitConfig, surface, pump, string) -> list[Scalar]:
             Scalar("pump_condition_confidence", float(found.confidence[0])),
             Scalar("pump_condition_second", str(found.second[0])),
             Scalar("reference_fluid_load", float(ft.reference_load[0]))]
-    for name in ("travelling_valve_closing", "standing_valve_opening", "standing_valve_closing",
-                 "travelling_valve_opening", "pickup_travel", "unloading_travel", "slow_upstroke_load",
-                 "slow_downstroke_load", "bottom_spike", "top_spike"):
+    for name in CARD_EVIDENCE:
         value = float(getattr(ft, name)[0])
         if math.isfinite(value):      # a point the card never reaches is left out, not printed as NaN
             rows.append(Scalar(name, value))

@@ -6,10 +6,10 @@ them out as a :class:`~pumpjack_cli.results.Page` in the order a production engi
 reads: the unit and the well, the cards, the gearbox torque against the ratings, the
 balance recommendation, the rod loading (modified Goodman, [API11BR]), the pump condition
 and its evidence, production and fluid level, the warnings, and the provenance (tool
-version, input files' SHA-256, options). The pump condition and any production or
-fluid-level figure are read from the downhole result by name (``pump_condition*``,
-``*production*``, ``*fluid_level*``): where the downhole analysis gives none, the page says
-"not available". A unit without ``[well]`` gets the torque sections only, and says why.
+version, input files' SHA-256, options). The pump condition with its evidence and the
+production figures are those of the downhole result (:data:`.downhole.CONDITION_NAMES`,
+:data:`.downhole.PRODUCTION_NAMES`); a rate per day needs the runtime (``--runtime``). A unit
+without ``[well]`` gets the torque sections only, and says why.
 """
 
 from __future__ import annotations
@@ -46,12 +46,13 @@ class ReportOptions:
     method: str = "api"
     balance: str = "equal-peaks"
     damping: float | None = None
-    downhole_method: str = "gibbs"
+    downhole_method: str | None = None
     steps: int = 360
     samples: int | None = None
     service_factor: float = 1.0
     energy: object | None = None
     system: str = "si"
+    runtime: float | None = None
 
 
 def sha256(path: Path) -> str:
@@ -65,7 +66,7 @@ def sha256(path: Path) -> str:
 
 def report(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportOptions) -> tuple[Page, dict]:
     """The page and the results it shows by command (``{"torque": Result, "downhole": Result}``)."""
-    from .downhole import DEFAULT_SAMPLES, downhole
+    from .downhole import DEFAULT_SAMPLES, Production, downhole
     from .torque import Energy, torque
 
     if str(card.path) == "-":
@@ -77,7 +78,8 @@ def report(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportO
         downhole_result = None
         if unit.well is not None:
             downhole_result = downhole(unit, card, options.spm, options.crank_motion, options.downhole_method,
-                                       options.damping, options.samples or DEFAULT_SAMPLES, options.service_factor)
+                                       options.damping, options.samples or DEFAULT_SAMPLES, options.service_factor,
+                                       production=Production(runtime=options.runtime))
     warnings = tuple(dict.fromkeys(noted))
     for text in warnings:   # the CLI prints them too
         warn(text)
@@ -215,26 +217,30 @@ def _rods_section(downhole_result: Result | None) -> Section:
 
 
 def _condition_section(downhole_result: Result | None) -> Section:
-    names = tuple(s.name for s in downhole_result.summary if s.name.startswith("pump_condition")) \
-        if downhole_result is not None else ()
+    """The pump's condition, its confidence, the second label and the card's evidence
+    (:data:`.downhole.CONDITION_NAMES`, those the card gives)."""
+    from .downhole import CONDITION_NAMES
+
+    found = {s.name for s in downhole_result.summary} if downhole_result is not None else set()
+    names = tuple(n for n in CONDITION_NAMES if n in found)
     if not names:
         return Section("condition", dict(SECTIONS)["condition"],
-                       (Note(f"pump condition: {NOT_AVAILABLE} (the downhole analysis of this version gives no "
-                             "diagnosis)", "missing"),))
+                       (Note(f"pump condition: {NOT_AVAILABLE} (the unit has no [well])", "missing"),))
     return Section("condition", dict(SECTIONS)["condition"], (Values("downhole", downhole_result, names),))
 
 
 def _production_section(downhole_result: Result | None) -> Section:
+    """Pump displacement, intake pressure, fluid level, production and energy
+    (:data:`.downhole.PRODUCTION_NAMES`, those the analysis gives: a rate only with a runtime)."""
+    from .downhole import PRODUCTION_NAMES
+
     if downhole_result is None:
         return Section("production", dict(SECTIONS)["production"],
                        (Note(f"{NOT_AVAILABLE}: the unit has no [well]", "missing"),))
-    found = [s.name for s in downhole_result.summary]
-    names = ("pump_displacement", "pump_fillage", "net_pump_stroke", "pump_intake_pressure") + tuple(
-        n for n in found if ("production" in n or "fluid_level" in n) and not n.startswith("pump_condition"))
-    blocks: list[object] = [Values("downhole", downhole_result, names)]
-    if not any("fluid_level" in n for n in found):
-        blocks.append(Note(f"fluid level: {NOT_AVAILABLE} from the card (the pump intake pressure above is its "
-                           "measure)", "missing"))
+    found = {s.name for s in downhole_result.summary}
+    blocks: list[object] = [Values("downhole", downhole_result, tuple(n for n in PRODUCTION_NAMES if n in found))]
+    if "inferred_production" not in found:
+        blocks.append(Note("inferred production: give the unit's runtime (--runtime) for a rate per day", "missing"))
     return Section("production", dict(SECTIONS)["production"], tuple(blocks))
 
 

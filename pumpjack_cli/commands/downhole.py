@@ -19,7 +19,7 @@ from ..options import CatalogueOption
 from ..errors import PumpjackError
 from ..quantities import KWH
 from ..options import CardFormatOption, CardPointsOption, StrokeOption, production_share
-from ..options import ElectricityPriceOption
+from ..options import ElectricityPriceOption, RuntimeOption
 from ..options import FrictionCoefficientOption, GuideLimitOption, ProfileOption, SurveyOption, deviation
 
 SHOWN = ("time", "position", "rod_load", "pump_position", "pump_load")
@@ -52,9 +52,7 @@ def downhole(
     friction_coefficient: FrictionCoefficientOption = None,
     guide_limit: GuideLimitOption = None,
     profile: ProfileOption = False,
-    runtime: Annotated[str | None, typer.Option(
-        help="share of the day the unit runs, '75 %' or '18 h', for the inferred production and the energy per day "
-             "[default: no rate is given]")] = None,
+    runtime: RuntimeOption = None,
     pump_efficiency: Annotated[str | None, typer.Option(
         help="stated volumetric efficiency of the pump, '85 %', instead of the slippage from the plunger's clearance "
              "[default: the slippage, if the well gives plunger_clearance, plunger_length and viscosity]")] = None,

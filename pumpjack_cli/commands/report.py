@@ -10,7 +10,7 @@ import typer
 from ..analysis.report import ReportOptions, report as run
 from ..analysis.torque import Energy
 from ..config import load_unit
-from ..options import ElectricityPriceOption
+from ..options import ElectricityPriceOption, RuntimeOption, production_share
 from ..options import (CatalogueOption, CardColumnsOption, CardFormatOption, CardOption, CardPointsOption, CardSpmOption, CardUnitsOption,
                        CrankMotion, CrankMotionOption, OutputOption, ServiceFactorOption, StepsOption, StrokeOption,
                        UnitArgument, UnitsOption, UnitSystem, card_source, finite)
@@ -40,8 +40,9 @@ def report(
     crank_motion: CrankMotionOption = CrankMotion.auto,
     method: Annotated[Method, typer.Option(help="torque method, as `pumpjack torque --method`")] = Method["api"],
     balance: Annotated[Balance, typer.Option(help="balance criterion, as `pumpjack torque --balance`")] = Balance["equal-peaks"],
-    downhole_method: Annotated[DownholeMethod, typer.Option(
-        help="pump-card method, as `pumpjack downhole --method`")] = DownholeMethod["gibbs"],
+    downhole_method: Annotated[DownholeMethod | None, typer.Option(
+        help="pump-card method, as `pumpjack downhole --method` [default: gibbs, everitt-jennings with the drag in a "
+             "deviated well]")] = None,
     damping: Annotated[float | None, typer.Option(
         help="Gibbs' damping factor nu, as `pumpjack downhole --damping`", min=0.0, max=2.0, callback=finite)] = None,
     samples: Annotated[int | None, typer.Option(
@@ -52,6 +53,7 @@ def report(
     motor_efficiency: Annotated[float, typer.Option(
         help="efficiency of the motor, as `pumpjack torque`", min=0.1, max=1.0, callback=finite)] = 1.0,
     electricity_price: ElectricityPriceOption = None,
+    runtime: RuntimeOption = None,
     catalogue: CatalogueOption = None,
     units: UnitsOption = UnitSystem.si,
     out: OutputOption = None,
@@ -63,8 +65,9 @@ def report(
     sink = PageOutput(units.value, out)
     source = card_source(card, card_units, card_columns, card_format, card_points, stroke)
     energy = Energy(drive_efficiency, motor_efficiency, None if electricity_price is None else electricity_price / KWH)
-    options = ReportOptions(spm, crank_motion.value, method.value, balance.value, damping, downhole_method.value, steps,
-                            samples, service_factor, energy, units.value)
+    options = ReportOptions(spm, crank_motion.value, method.value, balance.value, damping,
+                            None if downhole_method is None else downhole_method.value, steps, samples, service_factor,
+                            energy, units.value, production_share(runtime, "runtime", "--runtime"))
     try:   # the file the provenance hashes: the unit file, or the catalogue that holds the unit
         unit_file = unit_source(unit)
     except ConfigError:

@@ -99,6 +99,7 @@ EXAMPLES: dict[str, str] = {
     "masses.counterweights.phase": '"0 deg"',
     "well.fluid_kinematic_viscosity": '"5 mm2/s"',
     "well.survey": '"j-well-survey.csv"',
+    "well.plunger_length": '"4 ft"',
     "well.rod_friction_coefficient": "0.2",
     "well.rod_guide_side_load_limit": '"500 lbf"',
     "well.rod_joint_length": '"25 ft"',

@@ -314,6 +314,19 @@ EXEMPT: dict[tuple[str, str], str] = {
                     "tapers with sinker bars |"):
         "convergence of the core's finite-difference march, measured by tests/core/rods/test_rods_downhole.py",
     ("downhole.md", "| claim | test |"): "test list",
+    ("diagnosis.md", "| option | meaning |"): "options",
+    ("diagnosis.md", "| label | what the pump does | what the pump card shows | sources |"): "definitions and sources",
+    ("diagnosis.md", "| feature (output name) | definition |"): "definitions",
+    ("diagnosis.md", "| label | score (evidence 0..1 each) | thresholds | source |"):
+        "the rules' constants (pumpjack_cli/core/rods/diagnosis.py) and their sources",
+    ("diagnosis.md", "| feature | condition: smallest (1st percentile) | the others: largest (99th percentile) | rule |"):
+        "margins of the rules measured by benchmarks/diagnosis_study.py",
+    ("diagnosis.md", "| output | formula | source |"): "formulas",
+    ("diagnosis.md", "| option | model |"): "options",
+    ("diagnosis.md", "| simulated \\ labelled | full | fluid pound | gas interference | travelling valve leak | "
+                     "standing valve leak | tagging down | tagging up | unanchored tubing | rod part | recall |"):
+        "the confusion matrix of benchmarks/diagnosis_study.py (about 90 s); the tests check a smaller corpus",
+    ("diagnosis.md", "| claim | test |"): "test list",
     ("deviated.md", "| claim | test | measured |"): "test list with the tolerances the tests measure",
     ("deviated.md", "| | pump-card work | plunger position | upstroke level | downstroke level | rms load error | "
                     "drag work |"): "the round trip measured by tests/core/rods/test_deviated_round_trip.py",

@@ -48,7 +48,10 @@ def test_a_vertical_survey_gives_the_vertical_results(run_cli, tmp_path, method)
     assert code == 0, err
     plain, surveyed = json.loads(plain), json.loads(surveyed)
     for name, value in plain["summary"].items():
-        assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
+        if isinstance(value, str):      # a label: the pump's condition
+            assert surveyed["summary"][name] == value, name
+        else:
+            assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
     for name, column in plain["series"].items():
         assert np.allclose(surveyed["series"][name], column, rtol=1e-9, atol=1e-9), name
     extra = surveyed["summary"]
@@ -197,7 +200,10 @@ def test_predict_with_a_vertical_survey_is_the_vertical_prediction(run_json, tmp
     plain = run_json("predict", SK8, "--samples", "64", "--damping", "0.1")
     surveyed = run_json("predict", SK8, "--samples", "64", "--damping", "0.1", "--survey", _vertical_survey(tmp_path))
     for name, value in plain["summary"].items():
-        assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
+        if isinstance(value, str):      # a label: the pump's condition
+            assert surveyed["summary"][name] == value, name
+        else:
+            assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
     assert surveyed["summary"]["friction_work_per_cycle_j"] == 0.0
 
 

@@ -146,7 +146,6 @@ def test_the_slippage_past_the_plunger_comes_off_the_production(run_cli, tmp_pat
     (("--pump-efficiency", "120 %", "--runtime", "24 h"), "--pump-efficiency: '120 %' is outside"),
     (("--electricity-price", "0.1"), "--electricity-price: a rate per day needs --runtime"),
     (("--pump-efficiency", "85 %"), "--pump-efficiency: a rate per day needs --runtime"),
-    (("--electricity-price", "cheap", "--runtime", "24 h"), "--electricity-price"),
 ])
 def test_bad_production_options_get_one_line_and_exit_2(run_cli, argv, words):
     code, out, err = run_cli("downhole", "sk8-3.5-4000", "--card", Path(__file__).resolve().parents[2] / "samples" /
