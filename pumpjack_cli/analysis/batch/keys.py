@@ -46,11 +46,12 @@ def unit_digest(spec: str) -> str:
         return f"unreadable:{spec}"
 
 
-def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) -> str:
-    """What makes a result: the analysis and its options, the unit (its file's content) and the
-    row's overrides (a rod-string file by its content)."""
+def options_key(job: Job, analysis: str, options: Options, unit_digest: str) -> tuple[str, str]:
+    """What makes a result, as JSON text (stored beside the result, so that a view can say
+    which options differ), and its SHA-256 (the key): the analysis and its options, the unit
+    (its file's content) and the row's overrides (a rod-string file by its content)."""
     rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
     text = json.dumps({"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
                        "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest},
                       sort_keys=True)
-    return hashlib.sha256(text.encode()).hexdigest()
+    return text, hashlib.sha256(text.encode()).hexdigest()
