@@ -90,7 +90,7 @@ def _report(line: str) -> None:
         raise
     except OSError as exc:
         drop_stdout()
-        raise PumpjackError(f"cannot write standard output: {describe_os_error(exc)} (the results are stored)") \
+        raise PumpjackError(f"standard output: cannot write: {describe_os_error(exc)} (the results are stored)") \
             from None
 
 

@@ -69,7 +69,7 @@ class Store:
                 if self.db is not None:
                     self.db.close()
                 self.db = self._writable()
-                self._check()
+                self.types = self._types()
         except sqlite3.Error as exc:
             self.close()
             raise self._fault(exc, "cannot open") from None
@@ -105,11 +105,12 @@ class Store:
             raise self._refuse("is an empty file, not a results store; remove it or name another --store")
         try:
             with open(self.path, "rb") as handle:
-                header = handle.read(len(_HEADER))
+                header = handle.read(100)
         except OSError as exc:
             raise self._refuse(f"cannot read: {describe_os_error(exc)}") from None
-        if header != _HEADER:
+        if not header.startswith(_HEADER) or len(header) < 100:
             raise self._refuse("not an SQLite database, so not a results store")
+        self._check_marks(int.from_bytes(header[68:72], "big"), int.from_bytes(header[60:64], "big"))
         return True
 
     def _read_only(self) -> sqlite3.Connection:
@@ -129,21 +130,16 @@ class Store:
         return sqlite3.connect(f"{uri}?immutable=1", uri=True, isolation_level=None)
 
     def _check(self) -> None:
-        """Refuse what is not a results store of a version this program knows, or is damaged."""
+        """Refuse what is not a results store of a version this program knows, or is damaged;
+        note the columns' types."""
         assert self.db is not None
         application, version = (self.db.execute(f"PRAGMA {name}").fetchone()[0]
                                 for name in ("application_id", "user_version"))
-        if application not in (0, APPLICATION_ID):
-            raise self._refuse(f"another application's SQLite database (application id {application:#x}), "
-                               f"not a results store")
-        if version > VERSION:
-            raise self._refuse(f"a results store of version {version}, written by a later pumpjack-cli (this one "
-                               f"knows versions up to {VERSION}); update pumpjack-cli to read or extend it")
+        self._check_marks(application, version)
         columns = list(self.db.execute("PRAGMA table_info(results)"))
         if not columns:
             raise self._refuse("an SQLite database without a results table, not a results store")
-        #: Column name -> its declared SQL type.
-        self.types = {name: kind.upper() for _, name, kind, _, _, _ in columns}
+        self.types = self._types()
         for _, name, kind, notnull, _, key in columns:
             known = (name == "id" and key) or (name in FIXED and kind.upper() == "TEXT") or (
                 _NAME.match(name) and kind.upper() in ("REAL", "TEXT") and not notnull and not key)
@@ -157,6 +153,20 @@ class Store:
         if problems != ["ok"]:
             raise self._refuse(f"is damaged ({problems[0]}); restore it from a copy")
 
+    def _types(self) -> dict[str, str]:
+        """Column name -> its declared SQL type (TEXT for the fixed fields)."""
+        return {row[1]: row[2].upper() for row in self.db.execute("PRAGMA table_info(results)")}
+
+    def _check_marks(self, application: int, version: int) -> None:
+        """Refuse another application's database and a store of a later version (from the
+        file's header before SQLite opens it, and as SQLite reads them)."""
+        if application not in (0, APPLICATION_ID):
+            raise self._refuse(f"another application's SQLite database (application id {application:#x}), "
+                               f"not a results store")
+        if version > VERSION:
+            raise self._refuse(f"a results store of version {version}, written by a later pumpjack-cli (this one "
+                               f"knows versions up to {VERSION}); update pumpjack-cli to read or extend it")
+
     def _writable_directory(self) -> bool:
         return os.access(self.path.parent, os.W_OK | os.X_OK)
 
@@ -168,7 +178,7 @@ class Store:
         except OSError:
             read_only = False
         if read_only:
-            return f"{describe_os_error(OSError(errno.EROFS, ''))} (directory {directory})"
+            return f"read-only file system (directory {directory})"
         if not self._writable_directory():
             return f"directory {directory} is not writable (SQLite writes its journal beside the store)"
         if self.path.exists() and not os.access(self.path, os.W_OK):
@@ -242,7 +252,7 @@ class Store:
         (called under the write lock: a column another run added meanwhile is seen first)."""
         if all(name in self.types for name in summary):
             return
-        self.types = {row[1]: row[2].upper() for row in self.db.execute("PRAGMA table_info(results)")}
+        self.types = self._types()
         for name, value in summary.items():
             if name not in self.types:
                 if not _NAME.match(name):
@@ -272,7 +282,7 @@ class Store:
             self.db.execute("COMMIT")
         except sqlite3.Error as exc:
             self._rollback()
-            raise self._fault(exc, "cannot write") from None
+            raise PumpjackError(f"{self._fault(exc, 'cannot write')}; every card stored before is kept") from None
         except BaseException:
             self._rollback()
             raise

@@ -137,21 +137,27 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
     idle_since = None
     while pending:
         try:
-            finished, pending = wait(pending, timeout=1.0, return_when="FIRST_COMPLETED")
-        except TimeoutError:
-            finished = set()
-        if client.status != "running":
-            raise PumpjackError(f"--scheduler {address}: lost the connection to the scheduler; {RESUME}")
-        for future in finished:
             try:
-                results = future.result()
-            except Exception as exc:  # noqa: BLE001 - a lost worker or a broken cluster, not a card
-                raise PumpjackError(f"--scheduler {address}: a task failed ({type(exc).__name__}: "
-                                    f"{' '.join(str(exc).split())}); {RESUME}") from None
-            store_chunk(results)
-        if finished or client.nthreads():
+                finished, pending = wait(pending, timeout=1.0, return_when="FIRST_COMPLETED")
+            except TimeoutError:
+                finished = set()
+            results = [future.result() for future in finished]
+            working = bool(finished) or bool(client.nthreads())
+        except Exception as exc:  # noqa: BLE001 - a lost scheduler or worker, a broken cluster: not a card
+            raise PumpjackError(_cluster_failure(client, address, exc)) from None
+        for chunk in results:
+            store_chunk(chunk)
+        if working:
             idle_since = None
         elif idle_since is None:
             idle_since = time.monotonic()
         elif time.monotonic() - idle_since > DASK_LOST:
             raise PumpjackError(f"--scheduler {address}: no worker in the cluster for {DASK_LOST:g} s; {RESUME}")
+
+
+def _cluster_failure(client, address: str, exc: Exception) -> str:
+    """One line for what went wrong on the cluster: the scheduler lost, or a task that failed."""
+    if client.status != "running":
+        return f"--scheduler {address}: lost the connection to the scheduler; {RESUME}"
+    first = (str(exc).strip().splitlines() or [""])[0][:200]
+    return f"--scheduler {address}: a task failed ({type(exc).__name__}: {first}); {RESUME}"
