@@ -66,8 +66,7 @@ class Store:
                 self._check_writable()
                 if not exists:
                     self._create()
-                if self.db is not None:
-                    self.db.close()
+                self.close()
                 self.db = self._writable()
                 self.types = self._types()
         except sqlite3.Error as exc:

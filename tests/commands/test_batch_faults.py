@@ -68,23 +68,33 @@ def test_kill_9_of_the_parent_leaves_whole_cards_and_no_worker(tmp_path, pumpjac
     assert len(counts) == 80 and all(n == 1 for _, _, n in counts)
 
 
-@pytest.mark.parametrize("name", ["SIGINT", "SIGTERM"])
-def test_sigint_or_sigterm_ends_a_run_with_one_line_and_a_resumable_store(run_cli, tmp_path, pumpjack_script, name):
-    """Ctrl-C (SIGINT to the whole process group) or SIGTERM to the run: one line naming
-    the signal, exit code 2, the workers gone, whole cards in the store, and the store
-    goes on taking cards."""
+#: How a run is stopped (a signal to the run, to its process group, or to one of its
+#: workers) and the line it ends with.
+STOPS = {
+    "SIGINT": ("interrupted (SIGINT) after storing ", "run the same command again to go on"),
+    "SIGTERM": ("interrupted (SIGTERM) after storing ", "run the same command again to go on"),
+    "worker-killed": ("a worker process ended abruptly (killed, or out of memory)", "the cards stored so far are kept"),
+}
+
+
+@pytest.mark.parametrize("how", STOPS)
+def test_a_stopped_run_ends_with_one_line_and_a_resumable_store(run_cli, tmp_path, pumpjack_script, how):
+    """Ctrl-C (SIGINT to the whole process group), SIGTERM to the run, or one of its workers
+    killed (as by the kernel when out of memory): one line, exit code 2, every worker gone,
+    whole cards in the store, and the store goes on taking cards."""
     path, store = _wells(tmp_path, 4, 400), tmp_path / "r.sqlite"
     process = subprocess.Popen([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     assert wait_for_rows(store, 2, process) >= 2
     workers = children_of(process.pid)
-    if name == "SIGINT":
+    if how == "SIGINT":
         os.killpg(process.pid, signal.SIGINT)
-    else:
+    elif how == "SIGTERM":
         os.kill(process.pid, signal.SIGTERM)
+    else:
+        os.kill(workers[0], signal.SIGKILL)
     out, err = process.communicate(timeout=120)
-    one_line_error(process.returncode, out, err, f"interrupted ({name}) after storing ",
-                   "run the same command again to go on")
+    one_line_error(process.returncode, out, err, *STOPS[how])
     assert len(workers) == 2 and gone(workers)
     _whole_cards(store)
     first = field_manifest(tmp_path, [line.split(",") for line in path.read_text().splitlines()[1:41]], "first.csv")
@@ -112,6 +122,17 @@ def test_two_runs_on_one_fresh_store_both_finish(tmp_path, pumpjack_script):
 
 
 # --- Dask -----------------------------------------------------------------------------------
+
+def _guarded(run_cli, *argv):
+    """``run_cli(*argv)`` in this process, interrupted after five minutes if it hangs (SIGINT,
+    which the run turns into its one line): a guard, not a timing."""
+    timer = threading.Timer(300, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        return run_cli(*argv)
+    finally:
+        timer.cancel()
+
 
 def _kill_when(process: subprocess.Popen, ready) -> None:
     """Kill ``process`` in a thread of its own once ``ready()`` (a guard of two minutes against a hang)."""
@@ -156,7 +177,7 @@ def test_a_dask_cluster_gives_the_local_results_and_its_losses_end_the_run_with_
             client.wait_for_workers(1, timeout=120)
 
         assert run_cli("batch", small, "--store", tmp_path / "local.sqlite", "--workers", "2")[0] == 0
-        code, out, err = run_cli("batch", small, "--store", tmp_path / "dask.sqlite", "--scheduler", address)
+        code, out, err = _guarded(run_cli, "batch", small, "--store", tmp_path / "dask.sqlite", "--scheduler", address)
         assert code == 0 and err == "", err
         local, remote = stored_results(tmp_path / "local.sqlite"), stored_results(tmp_path / "dask.sqlite")
         assert local.keys() == remote.keys() and len(local) == 24
@@ -165,18 +186,19 @@ def test_a_dask_cluster_gives_the_local_results_and_its_losses_end_the_run_with_
 
         lost_worker = tmp_path / "lost-worker.sqlite"
         _kill_when(worker, lambda: stored_count(lost_worker) > 0)
-        one_line_error(*run_cli("batch", big, "--store", lost_worker, "--scheduler", address),
+        one_line_error(*_guarded(run_cli, "batch", big, "--store", lost_worker, "--scheduler", address),
                        f"--scheduler {address}: no worker in the cluster for {DASK_LOST:g} s",
                        "the cards stored so far are kept")
         _whole_cards(lost_worker)
 
         lost_scheduler = tmp_path / "lost-scheduler.sqlite"
         _kill_when(scheduler, lost_scheduler.exists)  # the store is made once the client is connected
-        one_line_error(*run_cli("batch", big, "--store", lost_scheduler, "--scheduler", address),
+        one_line_error(*_guarded(run_cli, "batch", big, "--store", lost_scheduler, "--scheduler", address),
                        f"--scheduler {address}: lost the connection to the scheduler",
                        "the cards stored so far are kept")
 
-        one_line_error(*run_cli("batch", small, "--store", tmp_path / "refused.sqlite", "--scheduler", address),
+        one_line_error(*_guarded(run_cli, "batch", small, "--store", tmp_path / "refused.sqlite", "--scheduler",
+                                 address),
                        f"--scheduler {address}: cannot connect")
         assert not (tmp_path / "refused.sqlite").exists()
     finally:

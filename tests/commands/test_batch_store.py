@@ -251,7 +251,7 @@ def test_permissions_are_named(run_cli, tmp_path):
     store = _store(tmp_path / "box" / "r.sqlite", 1)
     store.chmod(0o000)
     try:
-        one_line_error(*run_cli("batch", "export", "--store", store), "cannot read: permission denied")
+        one_line_error(*run_cli("batch", "export", "--store", store), "is not readable")
     finally:
         store.chmod(0o644)
     store.parent.chmod(0o555)

@@ -25,6 +25,9 @@ PARENT_POLL = 0.5
 #: Seconds a Dask run goes on without its scheduler, or with no worker in the cluster,
 #: before it ends (the stated timeout of docs/batch.md).
 DASK_LOST = 10.0
+#: Seconds to fetch a finished task's results before it counts as pending again (its
+#: worker lost between the task's end and the fetch).
+DASK_FETCH = 2.0
 #: What the end of a stopped run tells the user to do.
 RESUME = "the cards stored so far are kept; run the same command again to go on"
 
@@ -113,6 +116,7 @@ def _dask_client(address: str):
         from distributed import Client
     except ImportError:
         raise PumpjackError("--scheduler needs Dask: pip install 'pumpjack-cli[dask]'") from None
+    silenced = logging.root.manager.disable
     logging.disable(logging.CRITICAL)
     try:
         try:
@@ -124,13 +128,14 @@ def _dask_client(address: str):
         finally:
             client.close(timeout=DASK_LOST)
     finally:
-        logging.disable(logging.NOTSET)
+        logging.disable(silenced)
 
 
 def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
     """The chunks on the Dask cluster, stored as they finish. The run ends with one line
     when a task fails, the scheduler is lost, or the cluster has had no worker for
-    :data:`DASK_LOST` seconds."""
+    :data:`DASK_LOST` seconds (a task whose results were lost with their worker waits for
+    another worker like any other)."""
     from distributed import wait
 
     pending = {client.submit(analyse_chunk, chunk, settings, pure=False) for chunk in chunks}
@@ -141,8 +146,13 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
                 finished, pending = wait(pending, timeout=1.0, return_when="FIRST_COMPLETED")
             except TimeoutError:
                 finished = set()
-            results = [future.result() for future in finished]
-            working = bool(finished) or bool(client.nthreads())
+            results = []
+            for future in finished:
+                try:
+                    results.append(future.result(timeout=DASK_FETCH))
+                except TimeoutError:  # the worker that held the result is gone: the task runs again
+                    pending.add(future)
+            working = bool(results) or bool(client.nthreads())
         except Exception as exc:  # noqa: BLE001 - a lost scheduler or worker, a broken cluster: not a card
             raise PumpjackError(_cluster_failure(client, address, exc)) from None
         for chunk in results:
