@@ -162,7 +162,9 @@ def test_a_dask_cluster_gives_the_local_results_and_its_losses_end_the_run_with_
     processes = []
 
     def start(*argv) -> subprocess.Popen:
+        """A Dask process whose files (the scheduler's address, a worker's scratch space) stay in this test's folder."""
         processes.append(subprocess.Popen([str(dask), *argv, "--no-dashboard"], cwd=tmp_path,
+                                          env={**os.environ, "DASK_TEMPORARY_DIRECTORY": str(tmp_path)},
                                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
         return processes[-1]
 

@@ -147,8 +147,8 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
             if pending:
                 _analyse(jobs, pending, store_path, options, workers, scheduler, progress, stored)
         except KeyboardInterrupt as exc:
-            raise PumpjackError(f"interrupted ({exc or 'SIGINT'}) after storing {stored['ok'] + stored['error']} results; "
-                                f"{RESUME}") from None
+            raise PumpjackError(f"interrupted ({exc or 'SIGINT'}) after storing {stored['ok'] + stored['error']} "
+                                f"results; {RESUME}") from None
     return Tally(len(jobs), len(pending), len(jobs) - len(pending), stored["ok"], stored["error"],
                  stored["another"], time.perf_counter() - start)
 
