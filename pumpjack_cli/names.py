@@ -540,6 +540,8 @@ SECTIONS: tuple[Section, ...] = (
         E("analysis", TEXT, "`torque` or `downhole`"),
         E("options_sha256", TEXT, "hash of what makes the result: analysis, its options, the unit file's content, "
           "the row's overrides"),
+        E("options", TEXT, "what makes the result, the JSON text hashed in `options_sha256`; in `trend`, what "
+          "differs between the results of a card (`--method exact`)"),
         E("status", TEXT, "`ok` or `error`"),
         E("error", TEXT, "the one-line message the single command prints"),
         E("warnings", TEXT, "the analysis' warnings, joined by ` | `"),

@@ -40,6 +40,14 @@ _FILE_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pip
                (stat.S_ISBLK, "a device"), (stat.S_ISSOCK, "a socket"))
 
 
+def file_kind(mode: int) -> str | None:
+    """What a file that is not a regular file is ("a directory", "a device"), from its
+    ``st_mode``; None for a regular file."""
+    if stat.S_ISREG(mode):
+        return None
+    return next((name for test, name in _FILE_KINDS if test(mode)), "not a regular file")
+
+
 def describe_os_error(exc: OSError) -> str:
     """A few words for an OSError (the errno's meaning, else its strerror)."""
     return _OS_ERRORS.get(exc.errno, exc.strerror or str(exc))
@@ -109,8 +117,8 @@ def _read_file(path: Path | str, limit: int, what: str, source: str, error: type
         raise error(f"{source}: cannot read: the name holds a NUL character") from None
     try:
         info = os.fstat(fd)
-        if not stat.S_ISREG(info.st_mode):
-            kind = next((name for test, name in _FILE_KINDS if test(info.st_mode)), "not a regular file")
+        kind = file_kind(info.st_mode)
+        if kind is not None:
             raise error(f"{source}: is {kind}, not a {what}")
         if info.st_size > limit:
             raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")

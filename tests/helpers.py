@@ -8,6 +8,9 @@ Fixtures live in ``tests/conftest.py``.
 from __future__ import annotations
 
 import math
+import os
+import sqlite3
+import time
 from pathlib import Path
 
 import numpy as np
@@ -86,3 +89,107 @@ def zoom_scan(objective, lo: float, hi: float, rounds: int = 12, points: int = 4
         k = int(np.argmin(objective(grid)))
         lo, hi = grid[max(k - 2, 0)], grid[min(k + 2, points - 1)]
     return float(grid[k])
+
+
+def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:
+    """A refusal as the CLI prints it: exit code 2, nothing on stdout, one line on stderr
+    holding every fragment, no traceback."""
+    assert code == 2, (code, err)
+    assert out == ""
+    assert err.startswith("pumpjack: error: ") and err.count("\n") == 1, err
+    assert "Traceback" not in err
+    for fragment in fragments:
+        assert fragment in err, (fragment, err)
+
+
+# --- `pumpjack batch`: fields of cards, manifests, stores, processes -----------------------
+
+def field_cards(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
+    """``count`` cards of the bundled units (sample cards with scaled swing, noise and speed)
+    written to ``folder``: (well, unit, card file name, timestamp) rows."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for k in range(start, start + count):
+        unit = CARD_UNITS[k % len(CARD_UNITS)]
+        lines = sample_card(unit).read_text(encoding="utf-8").splitlines()
+        body = [line for line in lines if not line.startswith("#")]
+        data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
+        mean = data[:, 2].mean()
+        data[:, 2] = mean + rng.uniform(0.95, 1.05) * (data[:, 2] - mean) + rng.normal(0, 1e-3 * np.ptp(data[:, 2]),
+                                                                                      len(data))
+        data[:, 0] /= rng.uniform(0.97, 1.03)
+        name = f"card-{k:04d}.csv"
+        (folder / name).write_text(body[0] + "\n" + "".join(f"{t:.4f},{s:.5f},{w:.4f}\n" for t, s, w in data))
+        rows.append((f"well-{k % 5}", unit, name, f"2026-11-{1 + k // 5:02d}T00:00"))
+    return rows
+
+
+def field_manifest(folder: Path, rows, name: str = "manifest.csv") -> Path:
+    """A CSV manifest of (well, unit, card, timestamp) rows."""
+    path = folder / name
+    path.write_text("well,unit,card,timestamp\n" + "".join(",".join(row) + "\n" for row in rows))
+    return path
+
+
+def stored_results(store: Path) -> dict[tuple[str, str], dict]:
+    """(card file name, analysis) -> the stored row."""
+    db = sqlite3.connect(store)
+    db.row_factory = sqlite3.Row
+    rows = {(Path(r["card"]).name, r["analysis"]): dict(r) for r in db.execute("SELECT * FROM results")}
+    db.close()
+    return rows
+
+
+def stored_count(store: Path) -> int:
+    """Rows in a results store, 0 while it is missing or cannot be read."""
+    try:
+        db = sqlite3.connect(f"file:{store}?mode=ro", uri=True, timeout=5)
+        try:
+            return db.execute("SELECT COUNT(*) FROM results").fetchone()[0]
+        finally:
+            db.close()
+    except sqlite3.Error:
+        return 0
+
+
+def wait_for_rows(store: Path, count: int, process=None, timeout: float = 120.0) -> int:
+    """Wait until the store holds at least ``count`` rows (or ``process`` has ended); the
+    rows found. The timeout only guards a hang."""
+    deadline = time.monotonic() + timeout
+    found = stored_count(store)
+    while found < count and time.monotonic() < deadline and (process is None or process.poll() is None):
+        time.sleep(0.02)
+        found = stored_count(store)
+    return found
+
+
+def children_of(pid: int) -> list[int]:
+    """The live processes whose parent is ``pid``, from the process table (/proc)."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat", encoding="ascii", errors="replace") as handle:
+                    fields = handle.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[1]) == pid and fields[0] != "Z":
+                found.append(int(entry))
+    return found
+
+
+def alive(pid: int) -> bool:
+    """Whether the process ``pid`` exists and is not a zombie (from /proc)."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii", errors="replace") as handle:
+            return handle.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return False
+
+
+def gone(pids, timeout: float = 60.0) -> bool:
+    """Whether every process of ``pids`` has ended within ``timeout`` seconds (a guard against a hang)."""
+    deadline = time.monotonic() + timeout
+    while any(alive(pid) for pid in pids) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return not any(alive(pid) for pid in pids)

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from helpers import REPO_ROOT, SK8_CARD, SK8_TOML
+from helpers import REPO_ROOT, SK8_CARD, SK8_TOML, one_line_error
 
 UNB = REPO_ROOT / "configs" / "unb-600a.toml"
 
@@ -39,15 +39,6 @@ COMMANDS = {
     "downhole": lambda unit: ["downhole", unit, "--card", SK8_CARD, "--samples", "32"],
     "predict": lambda unit: ["predict", unit, "--samples", "64", "--damping", "0.1"],
 }
-
-
-def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:
-    assert code == 2, (code, err)
-    assert out == ""
-    assert err.startswith("pumpjack: error: ") and err.count("\n") == 1, err
-    assert "Traceback" not in err
-    for fragment in fragments:
-        assert fragment in err, (fragment, err)
 
 
 # --- files that are not unit files ------------------------------------------------------

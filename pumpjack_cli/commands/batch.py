@@ -15,6 +15,8 @@ from ..analysis.store_views import export_result, field_page, trend_result
 from ..errors import PumpjackError
 from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, CatalogueOption, FormatOption, Output,
                        OutputOption, UnitsOption, UnitSystem, finite)
+from ..render import drop_stdout
+from ..text_input import describe_os_error
 
 VERBS = ("run", "export", "trend", "report")
 
@@ -73,9 +75,28 @@ def run(
     finally:
         if progress is not None:
             progress.stop()
-    typer.echo(f"{tally.cards} cards: {tally.analysed} analysed, {tally.skipped} already in {store}; "
-               f"{tally.ok} results ok, {tally.errors} errors; {tally.seconds:.1f} s, "
-               f"{tally.analysed / tally.seconds if tally.seconds > 0 else 0.0:.0f} cards/s")
+    another = f" ({tally.stored_by_another} stored first by another run)" if tally.stored_by_another else ""
+    _report(f"{tally.cards} cards: {tally.analysed} analysed, {tally.skipped} already in {store}; stored "
+            f"{tally.ok} results ok, {tally.errors} errors{another}; {tally.seconds:.1f} s, "
+            f"{tally.analysed / tally.seconds if tally.seconds > 0 else 0.0:.0f} cards/s")
+
+
+def _report(line: str) -> None:
+    """The run's line on standard output (none if it is closed); one that cannot be written
+    (a full disk) is one error line, the results being stored."""
+    import sys
+
+    if sys.stdout is None:
+        return
+    try:
+        sys.stdout.write(line + "\n")
+        sys.stdout.flush()
+    except BrokenPipeError:
+        raise
+    except OSError as exc:
+        drop_stdout()
+        raise PumpjackError(f"standard output: cannot write: {describe_os_error(exc)} (the results are stored)") \
+            from None
 
 
 @app.command("export")
@@ -83,12 +104,13 @@ def export(
     store: StoreOption,
     analysis: Annotated[str | None, typer.Option(help="only this analysis (torque or downhole)")] = None,
     well: Annotated[str | None, typer.Option(help="only this well")] = None,
+    units: UnitsOption = UnitSystem.si,
     fmt: FormatOption = None,
     out: OutputOption = None,
 ) -> None:
     """The stored results as CSV, JSON or a table: one row per card and analysis."""
-    sink = Output(fmt, UnitSystem.si, out, None)
-    result = export_result(store, analysis, well)
+    sink = Output(fmt, units, out, None)
+    result = export_result(store, analysis, well, units.value)
     sink.emit(result, ("well", "card", "analysis", "status", "error"))
 
 
@@ -96,12 +118,13 @@ def export(
 def trend(
     store: StoreOption,
     well: Annotated[str, typer.Option(help="the well whose cards are shown in time order")],
+    units: UnitsOption = UnitSystem.si,
     fmt: FormatOption = None,
     out: OutputOption = None,
 ) -> None:
     """A well's summary numbers card after card, in time order (peak torque, loading, fillage, loads)."""
-    sink = Output(fmt, UnitSystem.si, out, None)
-    result = trend_result(store, well)
+    sink = Output(fmt, units, out, None)
+    result = trend_result(store, well, units.value)
     sink.emit(result, tuple(c.name for c in result.columns))
 
 

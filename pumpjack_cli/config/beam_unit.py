@@ -130,9 +130,12 @@ class JointsConfig(Section):
 class Rating(Section):
     """Ratings of the unit, completing or overriding what its designation gives ([API11E], [GOST5866])."""
 
-    gearbox_torque: Torque | None = Field(default=None, gt=0, le=1e7, description="gearbox (reducer) peak torque rating [N·m]")
-    structure_load: Force | None = Field(default=None, gt=0, le=1e7, description="structure (polished-rod load) rating [N]")
-    max_stroke: Length | None = Field(default=None, gt=0, le=20, description="maximum polished-rod stroke [m]")
+    gearbox_torque: Annotated[Torque, at_least(1.0, "1 N*m")] | None = Field(
+        default=None, gt=0, le=1e7, description="gearbox (reducer) peak torque rating [N·m]")
+    structure_load: Annotated[Force, at_least(1.0, "1 N")] | None = Field(
+        default=None, gt=0, le=1e7, description="structure (polished-rod load) rating [N]")
+    max_stroke: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
+        default=None, gt=0, le=20, description="maximum polished-rod stroke [m]")
 
 
 class CounterbalanceConfig(Section):

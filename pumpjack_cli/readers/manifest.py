@@ -14,6 +14,8 @@ import csv
 import glob
 import io
 import math
+import os
+import re
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -28,12 +30,14 @@ REQUIRED_COLUMNS = ("well", "unit", "card")
 OPTIONAL_COLUMNS = ("spm", "counterbalance_moment", "rod_string", "timestamp", "survey", "runtime")
 #: Largest manifest [bytes].
 MAX_MANIFEST_BYTES = 64 << 20
+#: The header of a TOML manifest's card table.
+_CARDS_TABLE = re.compile(r"^[ \t]*\[\[[ \t]*cards[ \t]*\]\]", re.MULTILINE)
 
 
 @dataclass(frozen=True)
 class Job:
     """One card of the manifest with its well, unit and overrides (spm [1/min], counterbalance
-    moment [N·m]), and its manifest line."""
+    moment [N·m]), and its manifest line (where its CSV row or its TOML table starts)."""
 
     well: str
     unit: str
@@ -69,7 +73,8 @@ def read_manifest(path: Path) -> list[Job]:
 
 
 def _toml_records(text: str, source: str) -> list[tuple[int, dict]]:
-    """(number, row) of each ``[[cards]]`` table."""
+    """(line, row) of each ``[[cards]]`` table: the line of its header (of the ``cards`` key
+    for an inline array of tables)."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -77,13 +82,19 @@ def _toml_records(text: str, source: str) -> list[tuple[int, dict]]:
     rows = data.get("cards")
     if not isinstance(rows, list) or not all(isinstance(row, dict) for row in rows):
         raise PumpjackError(f"{source}: a TOML manifest lists its cards as [[cards]] tables")
-    return [(i + 1, dict(row)) for i, row in enumerate(rows)]
+    lines = [text.count("\n", 0, match.start()) + 1 for match in _CARDS_TABLE.finditer(text)]
+    if len(lines) != len(rows):
+        key = re.search(r"^[ \t]*cards[ \t]*=", text, re.MULTILINE)
+        lines = [text.count("\n", 0, key.start()) + 1 if key else 1] * len(rows)
+    return [(line, dict(row)) for line, row in zip(lines, rows)]
 
 
 def _csv_records(text: str, source: str) -> list[tuple[int, dict]]:
-    """(line, row) of each non-blank line after the header, cells stripped."""
+    """(line, row) of each non-blank record after the header (the line where it starts: a
+    quoted cell may hold line breaks), cells stripped."""
     reader = csv.reader(io.StringIO(text))
-    header = [cell.strip().lstrip("\ufeff").lower() for cell in next(reader, [])]
+    cells_of = _checked(reader, source)
+    header = [cell.strip().lstrip("\ufeff").lower() for cell in next(cells_of, [])]
     missing = [name for name in REQUIRED_COLUMNS if name not in header]
     if missing:
         raise PumpjackError(f"{source}: line 1: the manifest needs the columns {', '.join(REQUIRED_COLUMNS)} "
@@ -93,7 +104,9 @@ def _csv_records(text: str, source: str) -> list[tuple[int, dict]]:
         raise PumpjackError(f"{source}: line 1: unknown column {unknown[0]!r}; columns: "
                             f"{', '.join(REQUIRED_COLUMNS + OPTIONAL_COLUMNS)}")
     records = []
-    for number, cells in enumerate(reader, start=2):
+    start = reader.line_num + 1
+    for cells in cells_of:
+        number, start = start, reader.line_num + 1
         if not any(cell.strip() for cell in cells):
             continue
         if len(cells) != len(header):
@@ -102,11 +115,22 @@ def _csv_records(text: str, source: str) -> list[tuple[int, dict]]:
     return records
 
 
+def _checked(reader, source: str):
+    """The records of a CSV reader; a record it refuses (a cell over its size limit) is one
+    line naming its line."""
+    try:
+        yield from reader
+    except csv.Error as exc:
+        raise _row_error(source, reader.line_num, f"not a CSV row: {exc}") from None
+
+
 def _spm(row: dict, number: int, source: str) -> float | None:
     """The row's strokes per minute [1/min], if given."""
     spm = row.get("spm")
-    if spm in (None, ""):
+    if spm is None or spm == "":
         return None
+    if isinstance(spm, bool):
+        raise _row_error(source, number, f"spm: {str(spm).lower()} is not a number (strokes per minute)")
     try:
         spm = float(spm)
     except (TypeError, ValueError):
@@ -153,6 +177,8 @@ def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     if names_a_file(unit) and not Path(unit).is_absolute():
         unit = str(folder / unit)
     rod_string = row.get("rod_string") or None
+    if rod_string is not None and not isinstance(rod_string, str):
+        raise _row_error(source, number, f"rod_string: {rod_string!r} is not a file name (text)")
     if rod_string is not None and not Path(rod_string).is_absolute():
         rod_string = str(folder / rod_string)
     survey = row.get("survey") or None
@@ -160,7 +186,7 @@ def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
         survey = str(folder / survey)
     pattern = row["card"].strip()
     pattern = pattern if Path(pattern).is_absolute() else str(folder / pattern)
-    cards = sorted(glob.glob(pattern)) if glob.has_magic(pattern) else [pattern]
+    cards = sorted(glob.glob(pattern)) if glob.has_magic(pattern) and not os.path.exists(pattern) else [pattern]
     if not cards:
         raise _row_error(source, number, f"card: no file matches {row['card']!r}")
     timestamp = row.get("timestamp") or ""

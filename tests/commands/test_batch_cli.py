@@ -1,8 +1,9 @@
 """`pumpjack batch` as an operator runs it: a field of cards into a results store.
 
 Checked against the single-card commands (the same numbers to 1e-9 and the same error
-messages), by killing a run with SIGKILL and resuming it, by re-running it, by a real
-Dask LocalCluster on the loopback interface, and with manifests that are broken.
+messages), by re-running it, and with manifests that are broken. Runs killed, interrupted,
+run twice at once or on a Dask cluster that fails are in ``test_batch_faults.py``; stores
+that are not stores, damaged or on read-only and full file systems in ``test_batch_store.py``.
 """
 
 from __future__ import annotations
@@ -11,53 +12,15 @@ import csv
 import io
 import json
 import math
-import os
-import signal
 import sqlite3
-import subprocess
-import sys
-import time
 from pathlib import Path
 
-import numpy as np
 import pytest
 
-from helpers import CARD_UNITS, REPO_ROOT, sample_card
-
-
-def field(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
-    """``count`` cards of the bundled units (sample cards with scaled swing, noise and speed):
-    (well, unit, card file name, timestamp) rows."""
-    rng = np.random.default_rng(seed)
-    rows = []
-    for k in range(start, start + count):
-        unit = CARD_UNITS[k % len(CARD_UNITS)]
-        lines = sample_card(unit).read_text(encoding="utf-8").splitlines()
-        body = [line for line in lines if not line.startswith("#")]
-        data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
-        mean = data[:, 2].mean()
-        data[:, 2] = mean + rng.uniform(0.95, 1.05) * (data[:, 2] - mean) + rng.normal(0, 1e-3 * np.ptp(data[:, 2]),
-                                                                                      len(data))
-        data[:, 0] /= rng.uniform(0.97, 1.03)
-        name = f"card-{k:04d}.csv"
-        (folder / name).write_text(body[0] + "\n" + "".join(f"{t:.4f},{s:.5f},{w:.4f}\n" for t, s, w in data))
-        rows.append((f"well-{k % 5}", unit, name, f"2026-11-{1 + k // 5:02d}T00:00"))
-    return rows
-
-
-def manifest(folder: Path, rows, name: str = "manifest.csv") -> Path:
-    path = folder / name
-    path.write_text("well,unit,card,timestamp\n" + "".join(",".join(row) + "\n" for row in rows))
-    return path
-
-
-def stored(store: Path) -> dict[tuple[str, str], dict]:
-    """(card file name, analysis) -> the stored row."""
-    db = sqlite3.connect(store)
-    db.row_factory = sqlite3.Row
-    rows = {(Path(r["card"]).name, r["analysis"]): dict(r) for r in db.execute("SELECT * FROM results")}
-    db.close()
-    return rows
+from helpers import REPO_ROOT
+from helpers import field_cards as field
+from helpers import field_manifest as manifest
+from helpers import stored_results as stored
 
 
 def single(run_cli, folder: Path, command: str, unit: str, card: str):
@@ -135,57 +98,6 @@ def test_bad_cards_and_units_become_error_rows_with_the_single_commands_message(
             assert status == "error" and error == single(run_cli, tmp_path, analysis, unit, card)
 
 
-def test_a_run_killed_at_any_moment_resumes_with_every_card_once(tmp_path):
-    """SIGKILL in the middle of a run, then the same command again: every card and analysis
-    exactly once, none lost, none doubled."""
-    rows = field(tmp_path, 60)
-    path, store = manifest(tmp_path, rows), tmp_path / "r.sqlite"
-    script = Path(sys.executable).parent / "pumpjack"
-    if not script.is_file():
-        pytest.skip("the pumpjack console script is not installed")
-    process = subprocess.Popen([str(script), "batch", str(path), "--store", str(store), "--workers", "1"],
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    deadline = time.monotonic() + 60
-    count = 0
-    while time.monotonic() < deadline and process.poll() is None:
-        if store.exists():
-            try:
-                count = sqlite3.connect(store, timeout=5).execute("SELECT COUNT(*) FROM results").fetchone()[0]
-            except sqlite3.Error:
-                count = 0
-            if count >= 20:
-                break
-        time.sleep(0.02)
-    os.kill(process.pid, signal.SIGKILL)
-    process.wait()
-    killed = sqlite3.connect(store).execute("SELECT COUNT(*) FROM results").fetchone()[0]
-    assert 0 < killed < 120 and killed % 2 == 0  # whole cards only: both analyses or none
-    done = subprocess.run([str(script), "batch", str(path), "--store", str(store), "--workers", "2"],
-                          capture_output=True, text=True, timeout=300)
-    assert done.returncode == 0, done.stderr
-    counts = sqlite3.connect(store).execute("SELECT card, analysis, COUNT(*) FROM results GROUP BY card, analysis")
-    counts = counts.fetchall()
-    assert len(counts) == 120 and all(n == 1 for _, _, n in counts)
-
-
-def test_dask_local_cluster_gives_the_local_results(run_cli, tmp_path):
-    """A real LocalCluster, two worker processes on 127.0.0.1: the same store as the local pool."""
-    distributed = pytest.importorskip("distributed")
-    rows = field(tmp_path, 12)
-    path = manifest(tmp_path, rows)
-    assert run_cli("batch", path, "--store", tmp_path / "local.sqlite", "--workers", "2")[0] == 0
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None, silence_logs=50) as cluster:
-        code, out, err = run_cli("batch", path, "--store", tmp_path / "dask.sqlite", "--scheduler",
-                                 cluster.scheduler_address)
-    assert code == 0, err
-    local, remote = stored(tmp_path / "local.sqlite"), stored(tmp_path / "dask.sqlite")
-    assert local.keys() == remote.keys() and len(local) == 24
-    for key, row in local.items():
-        other = remote[key]
-        assert {k: v for k, v in row.items() if k != "id"} == {k: v for k, v in other.items() if k != "id"}
-
-
 def test_export_and_trend(run_cli, tmp_path):
     rows = field(tmp_path, 10)
     store = tmp_path / "r.sqlite"
@@ -222,13 +134,40 @@ def test_export_and_trend(run_cli, tmp_path):
     ("well,unit,card\nw,sk8-3.5-4000,nothing-*.csv\n", "no file matches"),
     ("well,unit,card\n", "names no card"),
     ("[[cards]]\nwell = 'w'\n", "unit is empty"),
+    ("well,unit,card\nw,sk8-3.5-4000," + "x" * 200_000 + "\n", "line 2: not a CSV row: field larger than field limit"),
+    ('well,unit,card\n"W\n17",sk8-3.5-4000,x.csv\n,sk8-3.5-4000,x.csv\n', "line 4: well is empty"),
+    ("# field W\n\n[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\n\n[[cards]]\nunit = 'u'\n",
+     "line 8: well is empty"),
+    ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nrod_string = 5\n",
+     "line 1: rod_string: 5 is not a file name"),
+    ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nspm = true\n", "line 1: spm: true is not a number"),
+    ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nspm = nan\n", "line 1: spm: nan is outside"),
+    ("well,unit,card,counterbalance_moment\nw,sk8-3.5-4000,x.csv,1e300 N*m\n",
+     "line 2: counterbalance_moment: Input should be less than or equal to 10000000 N·m"),
+    ("well,unit,card,counterbalance_moment\nw,sk8-3.5-4000,x.csv,-5 kN*m\n",
+     "line 2: counterbalance_moment: Input should be greater than or equal to 0 N·m"),
 ])
 def test_broken_manifests_are_refused_with_one_line(run_cli, tmp_path, content, fragment):
-    path = tmp_path / ("m.toml" if content.startswith("[[") else "m.csv")
+    """Refused before anything runs, naming the line where the row starts in the file (a
+    quoted cell may span lines; a TOML table's header line) and the field."""
+    path = tmp_path / ("m.toml" if "[[cards]]" in content else "m.csv")
     path.write_text(content)
     code, out, err = run_cli("batch", path, "--store", tmp_path / "r.sqlite")
     assert code == 2 and out == "", err
     assert err.startswith("pumpjack: error: ") and err.count("\n") == 1 and fragment in err, err
+    assert not (tmp_path / "r.sqlite").exists()
+
+
+def test_a_card_path_with_glob_characters_that_names_a_file_is_that_file(tmp_path):
+    """`W[1].csv` is that file even though, as a pattern, it would match `W1.csv`; a
+    pattern that names no file is a pattern."""
+    from pumpjack_cli.readers.manifest import read_manifest
+
+    for name in ("W[1].csv", "W1.csv"):
+        (tmp_path / name).write_text("time,position,load\n")
+    for card, found in (("W[1].csv", ["W[1].csv"]), ("W[0-9].csv", ["W1.csv"]), ("W*.csv", ["W1.csv", "W[1].csv"])):
+        jobs = read_manifest(manifest(tmp_path, [("w", "sk8-3.5-4000", card, "")]))
+        assert [Path(job.card).name for job in jobs] == found
 
 
 def test_manifest_files_that_are_not_manifests(run_cli, tmp_path):
@@ -255,6 +194,7 @@ def test_a_store_that_is_not_a_store(run_cli, tmp_path):
     (("--analyses", ","), "--analyses"),
     (("--store", "{tmp}/missing/r.sqlite"), "directory {tmp}/missing does not exist"),
     (("--workers", "0"), "--workers"),
+    (("--damping", "nan"), "--damping"),
 ])
 def test_bad_batch_options_are_refused_before_anything_runs(run_cli, tmp_path, argv, fragment):
     """{tmp} is this test's temporary folder: a store in a folder that is surely missing."""
@@ -365,10 +305,11 @@ def test_text_summary_values_are_stored_and_shown_as_text(run_cli, tmp_path, mon
     from pumpjack_cli.readers.store import Store
 
     path = tmp_path / "r.sqlite"
-    store = Store(path)
+    store = Store(path, write=True)
     for number, (label, fillage) in enumerate((("full pump", 97.5), ("100", 41.0))):
         store.add_card([{"well": "W-1", "card": f"c{number}.csv", "card_sha256": f"{number}", "unit": "sk8-3.5-4000",
                          "timestamp": f"2026-11-2{number}", "analysis": "downhole", "options_sha256": "o",
+                         "options": "{}",
                          "status": "ok", "error": "", "warnings": "",
                          "summary": {"pump_condition": label, "pump_fillage_percent": fillage}}])
     store.close()
@@ -391,3 +332,109 @@ def test_text_summary_values_are_stored_and_shown_as_text(run_cli, tmp_path, mon
     assert trend["series"]["pump_condition"] == ["full pump", "100"]
     code, out, err = run_cli("batch", "trend", "--store", path, "--well", "W-1")
     assert code == 0 and "full pump" in out, err
+
+
+def test_trend_shows_the_results_of_every_option_set(run_cli, tmp_path):
+    """An `--method api` run and an `--method exact` run into one store: trend shows each
+    card's results of both, labelled by the option that differs, with the downhole results
+    (the same options in both runs) beside each; a unit without masses shows its exact
+    error beside its API numbers, not over them."""
+    rows = field(tmp_path, 4)
+    chosen = [rows[0], rows[3]]  # sk8-3.5-4000 with [masses], c-80d-133-48 without
+    path, store = manifest(tmp_path, chosen), tmp_path / "r.sqlite"
+    for method in ("api", "exact"):
+        assert run_cli("batch", path, "--store", store, "--workers", "1", "--method", method)[0] == 0
+    db = sqlite3.connect(store)
+    for (well, unit, card, _), exact in zip(chosen, ("ok", "error")):
+        api, downhole = (db.execute("SELECT peak_net_torque_n_m, pump_fillage_percent FROM results WHERE well = ? "
+                                    "AND analysis = ? ORDER BY id", (well, analysis)).fetchone()[i]
+                         for i, analysis in ((0, "torque"), (1, "downhole")))
+        code, out, err = run_cli("batch", "trend", "--store", store, "--well", well, "-f", "json")
+        assert code == 0, err
+        document = json.loads(out)
+        series = document["series"]
+        assert series["options"] == ["--method api", "--method exact"]
+        assert series["torque_status"] == ["ok", exact] and series["downhole_status"] == ["ok", "ok"]
+        assert series["peak_net_torque_n_m"][0] == api and series["pump_fillage_percent"] == [downhole, downhole]
+        assert (series["peak_net_torque_n_m"][1] is None) == (exact == "error")
+        assert "a row per option set" in document["title"]
+        code, out, err = run_cli("batch", "trend", "--store", store, "--well", well)
+        assert code == 0 and "--method exact" in out, err
+
+
+def test_export_and_trend_in_field_units(run_cli, tmp_path):
+    """--units field: every stored number converted, under the suffix of the single commands'
+    field output (lbf·in, lbf, in, hp, ft·lbf, bbl/d, psi), and no SI suffix left."""
+    from helpers import BARREL, FOOT, HORSEPOWER, INCH, POUND_FORCE, PSI
+
+    rows = field(tmp_path, 1)
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", manifest(tmp_path, rows), "--store", store, "--workers", "1")[0] == 0
+    documents = {}
+    for units in ("si", "field"):
+        code, out, err = run_cli("batch", "export", "--store", store, "--units", units, "-f", "json")
+        assert code == 0, err
+        documents[units] = {name: [v for v in values if v is not None] for name, values in
+                            json.loads(out)["series"].items()}
+    si, fld = documents["si"], documents["field"]
+    expected = {"peak_net_torque_n_m": ("peak_net_torque_lbf_in", 1 / (POUND_FORCE * INCH)),
+                "max_rod_load_n": ("max_rod_load_lbf", 1 / POUND_FORCE),
+                "net_pump_stroke_m": ("net_pump_stroke_in", 1 / INCH),
+                "polished_rod_power_w": ("polished_rod_power_hp", 1 / HORSEPOWER),
+                "surface_card_work_j": ("surface_card_work_ft_lbf", 1 / (POUND_FORCE * FOOT)),
+                "pump_displacement_m3_d": ("pump_displacement_bbl_d", 1 / BARREL),
+                "pump_intake_pressure_pa": ("pump_intake_pressure_psi", 1 / PSI),
+                "gearbox_loading_percent": ("gearbox_loading_percent", 1.0)}
+    for name, (field_name, factor) in expected.items():
+        assert fld[field_name] == pytest.approx([value * factor for value in si[name]], rel=1e-12), name
+    assert len(fld) == len(si)
+    si_only = ("_n", "_n_m", "_m", "_w", "_j", "_m3_d", "_pa", "_mpa", "_kg")
+    assert not [name for name in fld if name.endswith(si_only)]
+    code, out, err = run_cli("batch", "export", "--store", store, "--units", "field", "-f", "csv")
+    assert code == 0 and list(csv.DictReader(io.StringIO(out)).fieldnames) == list(fld), err
+    code, out, err = run_cli("batch", "trend", "--store", store, "--well", rows[0][0], "--units", "field", "-f",
+                             "json")
+    assert code == 0, err
+    series = json.loads(out)["series"]
+    assert series["peak_net_torque_lbf_in"] == fld["peak_net_torque_lbf_in"][:1]
+    assert "pump_displacement_bbl_d" in series and "peak_net_torque_n_m" not in series
+
+
+def test_a_rows_counterbalance_moment_and_rod_string_are_the_units_own(run_cli, tmp_path):
+    """A manifest row's counterbalance moment and rod string give the results of the single
+    commands on the unit file edited the same way."""
+    rows = field(tmp_path, 4)
+    well, unit, card, _ = rows[3]  # c-80d-133-48: [counterbalance] with a moment, one taper of 3/4 in rods
+    rods = tmp_path / "rods.toml"
+    rods.write_text('rod_string = [{ diameter = "0.875 in", fraction = "100 %", grade = "D" }]\n')
+    text = (REPO_ROOT / "configs" / f"{unit}.toml").read_text(encoding="utf-8")
+    edited = tmp_path / "edited.toml"
+    edited.write_text(text.replace('moment = "130000 lbf*in"', 'moment = "95 kN*m"').replace(
+        'diameter = "0.75 in"', 'diameter = "0.875 in"'), encoding="utf-8")
+    path = tmp_path / "overrides.csv"
+    path.write_text(f"well,unit,card,counterbalance_moment,rod_string\n{well},{unit},{card},95 kN*m,rods.toml\n")
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", path, "--store", store, "--workers", "1")[0] == 0
+    results = stored(store)
+    for analysis in ("torque", "downhole"):
+        row, expected = results[(card, analysis)], single(run_cli, tmp_path, analysis, str(edited), card)
+        assert row["status"] == "ok", row["error"]
+        for name, value in expected.items():
+            if isinstance(value, str):     # a label: the pump's condition
+                assert row[name] == value, (analysis, name)
+            else:
+                assert row[name] == pytest.approx(value, rel=1e-9, abs=1e-12), (analysis, name)
+    assert results[(card, "torque")]["counterbalance_moment_n_m"] == pytest.approx(95e3)
+
+
+def test_a_subnormal_rating_is_an_error_row_naming_the_field(run_cli, tmp_path):
+    rows = field(tmp_path, 4)
+    well, unit, card, _ = rows[3]
+    broken = tmp_path / "tiny-rating.toml"
+    broken.write_text((REPO_ROOT / "configs" / f"{unit}.toml").read_text(encoding="utf-8")
+                      + '\n[rating]\ngearbox_torque = "1e-320 N*m"\n', encoding="utf-8")
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", manifest(tmp_path, [(well, broken.name, card, "")]), "--store", store, "--workers",
+                   "1", "--analyses", "torque")[0] == 0
+    error = stored(store)[(card, "torque")]["error"]
+    assert "rating.gearbox_torque: 1e-320 is too small" in error and "not finite" not in error

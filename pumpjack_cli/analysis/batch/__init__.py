@@ -8,7 +8,7 @@ command would print. Results go to the SQLite store of :mod:`pumpjack_cli.reader
 
 * :mod:`.per_card`: the options of a run and the analyses of one card (:func:`.per_card.analyse`,
   :func:`.per_card.analyse_chunk`, the function every executor runs);
-* :mod:`.keys`: the content keys that tell a card already done (:func:`.keys.options_hash`,
+* :mod:`.keys`: the content keys that tell a card already done (:func:`.keys.options_key`,
   :func:`.keys.unit_digest`);
 * :mod:`.executors`: a local process pool and a Dask cluster;
 * :mod:`.run`: :func:`.run.run_batch`, the manifest through an executor into the store.

@@ -72,9 +72,10 @@ def _survey_of(path: Path) -> str | None:
         return f"unreadable:{file}"
 
 
-def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) -> str:
-    """What makes a result: the analysis and its options, the unit (its file's content) and the
-    row's overrides (a rod-string file by its content)."""
+def options_key(job: Job, analysis: str, options: Options, unit_digest: str) -> tuple[str, str]:
+    """What makes a result, as JSON text (stored beside the result, so that a view can say
+    which options differ), and its SHA-256 (the key): the analysis and its options, the unit
+    (its file's content) and the row's overrides (a rod-string file by its content)."""
     rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
     made = {"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
             "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
@@ -83,7 +84,7 @@ def options_hash(job: Job, analysis: str, options: Options, unit_digest: str) ->
     if job.runtime is not None and analysis == "downhole":  # a row without one keeps the hash stores had before
         made["runtime"] = job.runtime
     text = json.dumps(made, sort_keys=True)
-    return hashlib.sha256(text.encode()).hexdigest()
+    return text, hashlib.sha256(text.encode()).hexdigest()
 
 
 def with_files(done: set[tuple[str, str, str, str]]) -> set[tuple[str, str, str, str]]:

@@ -132,7 +132,7 @@ def _with_moment(unit: UnitConfig, moment: float):
     """The unit whose API counterbalance moment is ``moment`` [N·m] (B and tau kept)."""
     balance, _ = unit.counterbalance_model()
     section = {"structural_unbalance": balance.structural_unbalance, "moment": moment, "phase": balance.offset}
-    data = unit.model_dump()
+    data = unit.model_dump(by_alias=True)
     data["counterbalance"] = section
     return type(unit).model_validate(data)
 
@@ -145,7 +145,7 @@ def _with_rod_string(unit: UnitConfig, path: str):
     sections = table.get("rod_string") if isinstance(table, dict) else None
     if sections is None:
         raise PumpjackError(f"{path}: no rod_string list in the file")
-    data = unit.model_dump()
+    data = unit.model_dump(by_alias=True)
     data["well"]["rod_string"] = sections
     try:
         return type(unit).model_validate(data)

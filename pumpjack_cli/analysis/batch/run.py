@@ -1,8 +1,16 @@
-"""`pumpjack batch`: the manifest's cards not yet in the store, through an executor, into the store."""
+"""`pumpjack batch`: the manifest's cards not yet in the store, through an executor, into the store.
+
+The store is read (read-only) to find what is done; it is opened for writing only when
+there are cards to store, after the executor is ready (a Dask scheduler that refuses the
+connection leaves no store behind). SIGINT and SIGTERM end a run with one line: the
+workers are stopped, and every card stored so far is complete (the same command goes on).
+"""
 
 from __future__ import annotations
 
 import time
+from collections import Counter
+from contextlib import contextmanager
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -10,8 +18,8 @@ from ...errors import PumpjackError
 from ...readers.catalogue import Catalogue, read_catalogue
 from ...readers.manifest import Job, read_manifest
 from ...readers.store import Store
-from .executors import in_process, on_dask, on_pool
-from .keys import card_digest, options_hash, unit_digest, with_files
+from .executors import RESUME, executor
+from .keys import card_digest, options_key, unit_digest, with_files
 from .per_card import ANALYSES, Options, card_fields
 
 #: Cards per task handed to a worker.
@@ -21,22 +29,25 @@ CHUNK = 16
 @dataclass(frozen=True)
 class Tally:
     """What a run did: cards in the manifest, cards analysed now and skipped as done, the
-    results stored now by status, and the run's wall time [s]."""
+    results this run stored by status, the results another run stored first (two runs on
+    one store), and the run's wall time [s]."""
 
     cards: int
     analysed: int
     skipped: int
     ok: int
     errors: int
+    stored_by_another: int
     seconds: float
 
 
 @dataclass(frozen=True)
 class _Pending:
-    """A card to analyse: its digest, the options hash of each analysis, and the analyses not yet stored."""
+    """A card to analyse: its digest, the options (JSON text, hash) of each analysis, and
+    the analyses not yet stored."""
 
     card_digest: str
-    hashes: dict[str, str]
+    keys: dict[str, tuple[str, str]]
     wanted: tuple[str, ...]
 
 
@@ -50,6 +61,35 @@ def _check(options: Options) -> None:
     check_options(options.method, options.balance)
 
 
+def _check_jobs(jobs: list[Job], manifest: Path) -> None:
+    """Refuse a row whose counterbalance moment a unit's [counterbalance] would refuse,
+    naming its line and field, before anything runs."""
+    from pydantic import ValidationError
+
+    from ...config.beam_unit import CounterbalanceConfig
+    from ...config.files import error_message
+
+    for job in jobs:
+        if job.counterbalance_moment is not None:
+            try:
+                CounterbalanceConfig(moment=job.counterbalance_moment)
+            except ValidationError as exc:
+                first = exc.errors()[0]
+                raise PumpjackError(f"{manifest}: line {job.line}: counterbalance_moment: "
+                                    f"{error_message(first, CounterbalanceConfig)}") from None
+
+
+def _stored_keys(path: Path) -> set:
+    """The keys of the rows already in the store (read-only; none if there is no store yet)."""
+    if not path.exists() and not path.is_symlink():
+        return set()
+    store = Store(path)
+    try:
+        return store.done()
+    finally:
+        store.close()
+
+
 def _pending(jobs: list[Job], options: Options, done: set, catalogue: Catalogue | None) -> dict[int, _Pending]:
     """The jobs (by index) with an analysis not in ``done`` (the store's keys; a card named
     twice in the manifest is analysed once); units named in the ``catalogue`` by its rows."""
@@ -59,12 +99,37 @@ def _pending(jobs: list[Job], options: Options, done: set, catalogue: Catalogue 
         if job.unit not in digests:
             digests[job.unit] = unit_digest(job.unit, catalogue)
         card = card_digest(job.card)
-        hashes = {a: options_hash(job, a, options, digests[job.unit]) for a in options.analyses}
-        wanted = tuple(a for a in options.analyses if (job.well, card, a, hashes[a]) not in done)
-        done.update((job.well, card, a, hashes[a]) for a in wanted)
+        keys = {a: options_key(job, a, options, digests[job.unit]) for a in options.analyses}
+        wanted = tuple(a for a in options.analyses if (job.well, card, a, keys[a][1]) not in done)
+        done.update((job.well, card, a, keys[a][1]) for a in wanted)
         if wanted:
-            pending[index] = _Pending(card, hashes, wanted)
+            pending[index] = _Pending(card, keys, wanted)
     return pending
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM during a run (a KeyboardInterrupt, so that the executors stop as for Ctrl-C)."""
+
+
+@contextmanager
+def _signals_stop_the_run():
+    """SIGINT and SIGTERM raise :class:`Interrupted` in the main thread while the run lasts."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(number, _frame):
+        raise Interrupted(signal.Signals(number).name)
+
+    previous = {number: signal.signal(number, stop) for number in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for number, handler in previous.items():
+            signal.signal(number, signal.SIG_DFL if handler is None else handler)
 
 
 def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, scheduler: str | None = None,
@@ -75,38 +140,48 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
     start = time.perf_counter()
     _check(options)
     jobs = read_manifest(manifest)
+    _check_jobs(jobs, manifest)
     catalogue = None if options.catalogue is None else read_catalogue(Path(options.catalogue))
-    store = Store(store_path)
-    try:
-        pending = _pending(jobs, options, with_files(store.done()), catalogue)
-        indices = list(pending)
-        chunks = [[(i, asdict(jobs[i])) for i in indices[k:k + CHUNK]] for k in range(0, len(indices), CHUNK)]
-        settings = asdict(options)
-        counts = {"ok": 0, "error": 0}
-        finished = 0
+    stored: Counter = Counter()
+    with _signals_stop_the_run():
+        try:
+            pending = _pending(jobs, options, with_files(_stored_keys(store_path)), catalogue)
+            if pending:
+                _analyse(jobs, pending, store_path, options, workers, scheduler, progress, stored)
+        except KeyboardInterrupt as exc:
+            raise PumpjackError(f"interrupted ({exc or 'SIGINT'}) after storing {stored['ok'] + stored['error']} "
+                                f"results; {RESUME}") from None
+    return Tally(len(jobs), len(pending), len(jobs) - len(pending), stored["ok"], stored["error"],
+                 stored["another"], time.perf_counter() - start)
 
-        def store_chunk(results) -> None:
-            nonlocal finished
-            for index, outcomes in results:
-                job, key = jobs[index], pending[index]
-                rows = [{"well": job.well, **card_fields(job, key.card_digest, o), "unit": job.unit, "analysis": o["analysis"],
-                         "options_sha256": key.hashes[o["analysis"]], "status": o["status"], "error": o["error"],
-                         "warnings": o["warnings"], "summary": o["summary"]}
-                        for o in outcomes if o["analysis"] in key.wanted]
-                store.add_card(rows)
-                for row in rows:
-                    counts[row["status"]] += 1
-                finished += 1
-                if progress is not None:
-                    progress(finished, len(pending))
 
-        if scheduler is not None:
-            on_dask(scheduler, chunks, settings, store_chunk)
-        elif workers <= 1 or len(chunks) <= 1:
-            in_process(chunks, settings, store_chunk)
-        else:
-            on_pool(workers, chunks, settings, store_chunk)
-    finally:
-        store.close()
-    return Tally(len(jobs), len(pending), len(jobs) - len(pending), counts["ok"], counts["error"],
-                 time.perf_counter() - start)
+def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, options: Options, workers: int,
+             scheduler: str | None, progress, stored: Counter) -> None:
+    """The pending cards through the executor into the store (opened for writing once the
+    executor is ready); ``stored`` counts the results stored by status, and those another
+    run stored first as ``another``."""
+    indices = list(pending)
+    chunks = [[(i, asdict(jobs[i])) for i in indices[k:k + CHUNK]] for k in range(0, len(indices), CHUNK)]
+    finished = 0
+
+    def store_chunk(results) -> None:
+        nonlocal finished
+        for index, outcomes in results:
+            job, key = jobs[index], pending[index]
+            rows = [{"well": job.well, **card_fields(job, key.card_digest, o), "unit": job.unit, "analysis": o["analysis"],
+                     "options": key.keys[o["analysis"]][0], "options_sha256": key.keys[o["analysis"]][1],
+                     "status": o["status"], "error": o["error"], "warnings": o["warnings"], "summary": o["summary"]}
+                    for o in outcomes if o["analysis"] in key.wanted]
+            statuses = store.add_card(rows)
+            stored.update(statuses)
+            stored["another"] += len(rows) - len(statuses)
+            finished += 1
+            if progress is not None:
+                progress(finished, len(pending))
+
+    with executor(scheduler, workers, len(chunks)) as execute:
+        store = Store(store_path, write=True)
+        try:
+            execute(chunks, asdict(options), store_chunk)
+        finally:
+            store.close()
