@@ -301,6 +301,7 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("batch.md", "| column | a card | stroke 7 of a recording |"): "the key format of a stored row",
     ("batch.md", "| column | meaning |"): "store format",
     ("batch.md", "| what | result |"): "timings (docs/performance.md)",
+    ("batch.md", "| what happens | what the run does |"): "behaviour under faults (tests/commands/test_batch_faults.py)",
     ("cards.md", "| format | module | an example | recognised by content | file name endings |"): "formats",
     ("cards.md", "| option | meaning |"): "options",
     ("cards.md", "| layout | columns | how it reaches the crank-angle axis |"): "layouts",
