@@ -26,7 +26,7 @@ from ..core.rods.analysis import (
     summarise_pump_card,
     taper_loads,
 )
-from ..core.rods.diagnosis import balanced_damping, diagnose, hanging_depth
+from ..core.rods.diagnosis import balanced_damping, balanced_dampings, diagnose, hanging_depth
 from ..core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
     downhole_methods,
@@ -65,25 +65,57 @@ class Production:
     electricity_price: float | None = None
 
 
-def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, method: str,
+@dataclass(frozen=True)
+class Balanced:
+    """Gibbs' nu of one card from the energy balance and the reason it fell back to the default
+    (empty when the balance held), found beforehand with the other cards of its rod string in one
+    array computation (:func:`well_dampings`, in batch)."""
+
+    nu: float
+    reason: str
+
+
+def fluid_load_of(unit: UnitConfig) -> float | None:
+    """F_o = (p_d - p_i) A_p [N] from the well's pressures at the pump, None without them."""
+    found = unit.pump_pressures()
+    if found is None:
+        return None
+    return (found[0] - found[1]) * math.pi * unit.require_well().plunger_diameter**2 / 4.0
+
+
+def well_dampings(unit: UnitConfig, surfaces: list) -> list[Balanced]:
+    """The energy balance's nu (:func:`~pumpjack_cli.core.rods.diagnosis.balanced_dampings`) of
+    surface cards (:class:`~.card_runs.TimeCard`, one sample count) of a vertical well solved together."""
+    rod_string, fluid_load = unit.rods(), fluid_load_of(unit)
+    found = balanced_dampings(rod_string, np.array([s.period for s in surfaces]),
+                              np.array([s.position for s in surfaces]), np.array([s.load for s in surfaces]),
+                              fluid_load, fluid_density=unit.require_well().fluid_density,
+                              fallback=DEFAULT_DAMPING_FACTOR)
+    return [Balanced(nu, reason) for nu, reason in found]
+
+
+def damping_factor(unit: UnitConfig, given: float | Balanced | None, rod_string, card, method: str,
                    solve=None) -> tuple[float, str]:
     """Gibbs' nu and where it comes from: the option, the unit file, or the energy balance
     with the well's fluid load ([Gibbs1963], [EverittJennings1992]; ``solve``: the transfer
-    of a deviated well, :func:`~pumpjack_cli.core.rods.downhole.damping_from_fluid_load`)."""
+    of a deviated well, :func:`~pumpjack_cli.core.rods.downhole.damping_from_fluid_load`),
+    found here or beforehand (``given`` a :class:`Balanced`)."""
     well = unit.require_well()
-    if given is not None:
+    if isinstance(given, Balanced):
+        nu, reason = given.nu, given.reason
+    elif given is not None:
         return given, "--damping"
-    if well.damping_factor is not None:
+    elif well.damping_factor is not None:
         return well.damping_factor, "well.damping_factor"
-    found = unit.pump_pressures()
-    if found is None:
-        warn(f"unit {unit.name}: no fluid level or intake pressure for the energy balance; damping factor "
-             f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
-        return DEFAULT_DAMPING_FACTOR, "assumed"
-    fluid_load = (found[0] - found[1]) * math.pi * well.plunger_diameter**2 / 4.0
-    nu, reason = balanced_damping(rod_string, card.period, card.position, card.load, fluid_load,
-                                  fluid_density=well.fluid_density, fallback=DEFAULT_DAMPING_FACTOR, method=method,
-                                  solve=solve)
+    else:
+        fluid_load = fluid_load_of(unit)
+        if fluid_load is None:
+            warn(f"unit {unit.name}: no fluid level or intake pressure for the energy balance; damping factor "
+                 f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
+            return DEFAULT_DAMPING_FACTOR, "assumed"
+        nu, reason = balanced_damping(rod_string, card.period, card.position, card.load, fluid_load,
+                                      fluid_density=well.fluid_density, fallback=DEFAULT_DAMPING_FACTOR, method=method,
+                                      solve=solve)
     if reason:
         warn(f"unit {unit.name}: {reason}; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
         return nu, "assumed"
@@ -91,7 +123,7 @@ def damping_factor(unit: UnitConfig, given: float | None, rod_string, card, meth
 
 
 def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion: str, method: str | None,
-             damping: float | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
+             damping: float | Balanced | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
              deviation: Deviation = Deviation(), production: Production = Production()) -> Result:
     """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
     of one surface card; in a deviated well (``deviation``'s survey or the unit's) with the drag

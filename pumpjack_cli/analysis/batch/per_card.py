@@ -13,7 +13,7 @@ which :func:`card_fields` folds into the stored card's name and key (``docs/batc
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 from datetime import datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -154,18 +154,25 @@ def _with_rod_string(unit: UnitConfig, path: str):
 
 
 class _PlacedOnce:
-    """A raw card placed once for all the analyses of a card (duck-typed CardSource)."""
+    """A raw card placed once for all the analyses of a card (duck-typed CardSource), its
+    warnings given to each analysis that reads it, keeping what is computed of it (``kept``:
+    :func:`..card_runs.time_card`'s card on a time grid, with the warnings of making it)."""
 
     def __init__(self, raw, name: str):
         self.raw, self.name = raw, name
-        self._reading = None
+        self._reading: tuple | None = None
+        self.kept: dict = {}
 
     def read(self, unit, spm=None):
         from ..card_runs import noted, place
 
         if self._reading is None:
-            self._reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
-        return self._reading
+            with collected_warnings() as said:
+                reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
+            self._reading = reading, tuple(said)
+        for text in self._reading[1]:
+            warn(text)
+        return self._reading[0]
 
 
 def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
@@ -180,8 +187,9 @@ def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
         return "error", f"internal error ({type(exc).__name__}: {' '.join(str(exc).split())}); please report it", None
 
 
-def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
-    """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
+def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options, damping) -> dict:
+    """One analysis of one card as the single command runs it: its summary (SI, suffixed names);
+    ``damping`` is the option's, or the energy balance's found with the well's other cards."""
     from ..downhole import Production, downhole
     from ..torque import torque
 
@@ -191,15 +199,27 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> di
     if analysis == "torque":
         result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
     else:
-        result = downhole(unit, card, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
+        result = downhole(unit, card, job.spm, "auto", None, damping,  # Everitt-Jennings with drag if deviated
                           production=Production(runtime=job.runtime))
     check_finite(result)
     return converted_summary(result, "si")
 
 
-def analyse(job: Job, options: Options) -> list[Outcome]:
-    """Every analysis of one card, each as the single command runs it, or of every stroke of a
-    file of several; never raises for a problem of the card or the unit."""
+@dataclass
+class _Stroke:
+    """A card to analyse: its job, its stroke's label and time stamp, the card placed once, and
+    the damping its downhole analysis takes (the option's, or the energy balance's)."""
+
+    job: Job
+    label: str
+    timestamp: str
+    card: _PlacedOnce
+    damping: object = None
+
+
+def _strokes(job: Job, options: Options) -> list[_Stroke] | list[Outcome]:
+    """The cards of a job's file (each stroke of a file of several), or the outcomes of a file
+    or unit that cannot be read."""
     from ..card_runs import CardSource
 
     source = CardSource(Path(job.card), options.card_units, None, options.card_format, options.card_points)
@@ -209,27 +229,67 @@ def analyse(job: Job, options: Options) -> list[Outcome]:
     base = job.timestamp or str(raw.metadata.get("timestamp", ""))
     strokes = raw.strokes or (raw,)
     width = len(str(len(strokes)))
-    outcomes = []
-    for number, stroke in enumerate(strokes, 1):
-        label = f"{number:0{width}d}" if raw.strokes else ""
-        timestamp = stroke_time(base, stroke.metadata.get("start")) if raw.strokes else base
-        card = _PlacedOnce(stroke, source.name)
-        for analysis in options.analyses:
-            with collected_warnings() as noted:
-                status, error, summary = _attempt(lambda: _summary(analysis, job, card, options))
-            outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary or {}, label, timestamp))
-    return outcomes
+    return [_Stroke(job, f"{number:0{width}d}" if raw.strokes else "",
+                    stroke_time(base, stroke.metadata.get("start")) if raw.strokes else base,
+                    _PlacedOnce(stroke, source.name), options.damping)
+            for number, stroke in enumerate(strokes, 1)]
+
+
+def _balanced_together(strokes: list[_Stroke], options: Options) -> None:
+    """Give the cards whose downhole damping comes from the energy balance of a vertical well
+    (Gibbs' method, no damping option or file value) the nu found for all the cards of their
+    unit in one array computation (:func:`..downhole.well_dampings`); a card whose surface card
+    cannot be made keeps the single path, which reports why."""
+    from ..card_runs import time_card
+    from ..deviated import method_for
+    from ..downhole import DEFAULT_SAMPLES, fluid_load_of, well_dampings
+
+    if "downhole" not in options.analyses or options.damping is not None:
+        return
+    groups: dict[int, list[tuple[_Stroke, object]]] = {}
+    for stroke in strokes:
+        unit = _unit(stroke.job, options.catalogue)[0]
+        well = unit.well
+        if (well is None or well.damping_factor is not None or _attempt(lambda: method_for(unit, None))[2] != "gibbs"
+                or _attempt(lambda: fluid_load_of(unit))[2] is None):
+            continue
+        with collected_warnings():
+            status, _, surface = _attempt(lambda: time_card(unit, unit.geometry.mechanism(), stroke.card,
+                                                            stroke.job.spm, DEFAULT_SAMPLES, "auto")[1])
+        if status == "ok":
+            groups.setdefault(id(unit), []).append((stroke, surface))
+    for members in groups.values():
+        unit = _unit(members[0][0].job, options.catalogue)[0]
+        status, _, found = _attempt(lambda: well_dampings(unit, [surface for _, surface in members]))
+        if status == "ok":
+            for (stroke, _), balanced in zip(members, found):
+                stroke.damping = balanced
 
 
 def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[int, list[dict]]]:
     """The analyses of a chunk of jobs (index, job fields) as plain data, for a process pool
-    or a Dask worker; floating-point warnings are not printed."""
+    or a Dask worker, each card as the single commands analyse it; the downhole dampings of a
+    unit's cards are found together (:func:`_balanced_together`). Floating-point warnings
+    are not printed."""
     import warnings
 
     settings = Options(**{**options, "analyses": tuple(options["analyses"])})
     out = []
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
-        for index, fields in chunk:
-            out.append((index, [asdict(o) for o in analyse(Job(**fields), settings)]))
+        found = [(index, _strokes(Job(**fields), settings)) for index, fields in chunk]
+        _balanced_together([s for _, items in found for s in items if isinstance(s, _Stroke)], settings)
+        for index, items in found:
+            outcomes = []
+            for item in items:
+                if isinstance(item, Outcome):
+                    outcomes.append(item)
+                    continue
+                for analysis in settings.analyses:
+                    with collected_warnings() as noted:
+                        status, error, summary = _attempt(
+                            lambda: _summary(analysis, item.job, item.card, settings, item.damping))
+                    outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary or {}, item.label,
+                                            item.timestamp))
+            out.append((index, [vars(o).copy() for o in outcomes]))  # plain data, the summary shared
     return out

@@ -431,30 +431,45 @@ def _sequence(fill: np.ndarray, window: int) -> np.ndarray:
 PLAUSIBLE_DAMPING = (0.01, 0.5)
 
 
-def balanced_damping(string: RodString, period: float, position, load, fluid_load: float, *, fluid_density: float,
-                     fallback: float, method: str = "gibbs", solve=None) -> tuple[float, str]:
-    """Gibbs' nu from the energy balance of the rods with the pump's hydraulic work F_o S_n
-    (:func:`.downhole.damping_from_fluid_load`), or ``fallback`` with the reason: when the balance
+def balanced_dampings(string: RodString, period, position, load, fluid_load, *, fluid_density: float,
+                      fallback: float, method: str = "gibbs", solve=None) -> list[tuple[float, str]]:
+    """Gibbs' nu of each of K cards of one rod string (shape (K, N), periods (K,)) from the energy
+    balance of the rods with the pump's hydraulic work F_o S_n, solved together
+    (:func:`.downhole.dampings_from_fluid_load`), or ``fallback`` with the reason: when the balance
     has no root (a parted string, a pump that lifts nothing, a card doing less work than F_o S_n
     even with undamped rods or more than the largest damping explains), or when its root lies
     outside :data:`PLAUSIBLE_DAMPING` (a pump whose work is not F_o S_n: a leaking valve, a
-    fluid level far from the well file's). Returns (nu, reason), the reason empty when the
-    balance held.
+    fluid level far from the well file's). Returns (nu, reason) per card, the reason empty when
+    the balance held.
 
     The balance is exact for a full or fluid-pounding pump with the well's fluid level; on other
     cards it drifts (0.02 to 1.9 times the true damping on the corpus of docs/diagnosis.md), and
     the labels are made to hold for such a damping and 15 % either side of it. ``solve`` is the
-    diagnostic of a deviated well (:func:`.downhole.damping_from_fluid_load`).
+    diagnostic of a deviated well, for one card (:func:`.downhole.dampings_from_fluid_load`).
     """
-    from .downhole import damping_from_fluid_load
+    from .downhole import dampings_from_fluid_load
 
     try:
-        nu = damping_from_fluid_load(string, period, position, load, fluid_load, fluid_density=fluid_density,
-                                     method=method, solve=solve)
+        roots, problems = dampings_from_fluid_load(string, period, position, load, fluid_load,
+                                                   fluid_density=fluid_density, method=method, solve=solve)
     except DownholeError as exc:
-        return fallback, f"no damping balances this card's energy ({exc})"
+        roots, problems = np.full(np.atleast_2d(position).shape[0], np.nan), (str(exc),) * np.atleast_2d(position).shape[0]
     low, high = PLAUSIBLE_DAMPING
-    if not low <= nu <= high:
-        return fallback, (f"the energy balance gives damping factor {nu:.3g}, outside {low:g}-{high:g}: the pump's "
-                          f"work is not F_o S_n (a leaking valve, gas, a fluid level far from the well's)")
-    return nu, ""
+    out = []
+    for nu, problem in zip(roots, problems):
+        if problem:
+            out.append((fallback, f"no damping balances this card's energy ({problem})"))
+        elif not low <= nu <= high:
+            out.append((fallback, f"the energy balance gives damping factor {nu:.3g}, outside {low:g}-{high:g}: the "
+                                  f"pump's work is not F_o S_n (a leaking valve, gas, a fluid level far from the "
+                                  f"well's)"))
+        else:
+            out.append((float(nu), ""))
+    return out
+
+
+def balanced_damping(string: RodString, period: float, position, load, fluid_load: float, *, fluid_density: float,
+                     fallback: float, method: str = "gibbs", solve=None) -> tuple[float, str]:
+    """:func:`balanced_dampings` of ONE card (shape (N,)): (nu, reason)."""
+    return balanced_dampings(string, period, np.asarray(position)[None], np.asarray(load)[None], fluid_load,
+                             fluid_density=fluid_density, fallback=fallback, method=method, solve=solve)[0]

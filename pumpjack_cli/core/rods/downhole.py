@@ -20,7 +20,6 @@ marches the reversed string with the tension's sign flipped, the same equations.
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -199,16 +198,87 @@ def surface_card(string: RodString, period: float, pump_position, pump_load, *, 
                   method=method, harmonics=harmonics, gravity=gravity, upward=True)
 
 
+#: Largest damping factor the energy balance searches [-].
+LARGEST_DAMPING = 2.0
+#: The energy balance's root is found to this damping factor [-] (the bracket's width).
+DAMPING_TOLERANCE = 1e-10
+#: Steps of regula falsi a card may take before its bracket is halved instead (bisection from
+#: then on: the search ends whatever the function's shape).
+_FALSI_STEPS = 30
+
+
+def decreasing_roots(excess, largest: float, count: int,
+                     tolerance: float = DAMPING_TOLERANCE) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Roots of ``count`` decreasing functions of nu on [0, ``largest``], found together.
+
+    ``excess(nu, rows)`` gives the functions ``rows`` (indices) at their own ``nu`` (arrays of
+    one length) in one evaluation. Regula falsi with the Anderson-Bjoerck weight
+    ([AndersonBjorck1973]; superlinear for a smooth function, each card keeping a bracket),
+    then bisection after :data:`_FALSI_STEPS` steps; a card stops when its bracket is narrower
+    than ``tolerance`` or the function is zero. Each card's iterates depend on its own
+    function only, so K cards solved together give each card the root it has alone.
+    Returns the roots, NaN where the ends do not bracket one (``excess(0) < 0`` or
+    ``excess(largest) > 0``, the caller saying why), and the functions at 0 and ``largest``.
+    """
+    rows = np.arange(count)
+    a, b = np.zeros(count), np.full(count, float(largest))
+    fa, fb = excess(a, rows), excess(b, rows)
+    ends = fa.copy(), fb.copy()
+    root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
+    active = (fa > 0.0) & (fb < 0.0)
+    steps = np.zeros(count, dtype=int)
+    while active.any():
+        k = np.flatnonzero(active)
+        falsi = (b[k] * fa[k] - a[k] * fb[k]) / (fa[k] - fb[k])
+        middle = 0.5 * (a[k] + b[k])
+        inside = (falsi - a[k]) * (falsi - b[k]) < 0.0
+        c = np.where((steps[k] < _FALSI_STEPS) & inside, falsi, middle)
+        fc = excess(c, k)
+        steps[k] += 1
+        crossed = fc * fb[k] < 0.0        # the root is between b and c: b becomes the other end
+        weight = 1.0 - fc / np.where(fb[k] == 0.0, 1.0, fb[k])
+        fa[k] = np.where(crossed, fb[k], fa[k] * np.where(weight > 0.0, weight, 0.5))
+        a[k] = np.where(crossed, b[k], a[k])
+        b[k], fb[k] = c, fc
+        done = (fc == 0.0) | (np.abs(b[k] - a[k]) <= tolerance)
+        root[k[done]] = c[done]
+        active[k[done]] = False
+    return root, ends[0], ends[1]
+
+
+def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
+               fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)."""
+    if method == "gibbs":
+        damping = np.pi * string.mean_wave_speed * nu / (2.0 * string.total_length)
+        static = string.static_tension(fluid_density, gravity)
+        w, f = gibbs.march(string, period, position, load - static[0], damping[:, None])
+        return w[:, -1, :], f[:, -1, :] + static[-1]
+    cards = [pump_card(string, float(t), p, f, fluid_density=fluid_density, damping_factor=float(n), method=method,
+                       gravity=gravity) for t, p, f, n in zip(period, position, load, nu)]
+    return np.array([c.pump_position for c in cards]), np.array([c.pump_load for c in cards])
+
+
+def _many(period, position, load, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """K cards (K, N) and their periods (K,) from one card or many."""
+    position, load = as_cards(position, load, what)
+    position, load = np.atleast_2d(position), np.atleast_2d(load)
+    periods = np.broadcast_to(np.asarray(period, dtype=float), position.shape[:1]).copy()
+    if not (np.all(np.isfinite(periods)) and np.all(periods > 0)):
+        raise DownholeError(f"card period must be finite and positive, got {period}")
+    return periods, position, load
+
+
 def damping_for_pump_work(string: RodString, period: float, position, load, pump_work: float, *,
                           fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
-                          largest: float = 2.0) -> float:
+                          largest: float = LARGEST_DAMPING) -> float:
     """The damping factor nu at which the pump card does a given work per cycle [-].
 
     Energy balance of the rods over one cycle: surface card work = pump card work +
     damping dissipation. When the useful pump work is known (e.g. the hydraulic work per
     stroke from the production rate and the net lift), the dissipation, hence nu, follows
-    [Gibbs1963] (Gibbs estimated c from polished-rod minus hydraulic power). Solved by
-    Brent's method on nu in [0, largest].
+    [Gibbs1963] (Gibbs estimated c from polished-rod minus hydraulic power). The root on
+    [0, largest] by :func:`decreasing_roots`.
 
     Parameters
     ----------
@@ -225,78 +295,122 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
         If the target is not between the pump work at nu = largest and at nu = 0 (the
         surface card's work): no damping explains it.
     """
-    from scipy.optimize import brentq
-
-    position, load = _card_arrays(period, position, load, "surface card")
-    if position.ndim != 1:
+    periods, position, load = _many(period, position, load, "surface card")
+    if len(position) != 1:
         raise DownholeError("damping_for_pump_work takes one card of shape (N,)")
 
-    @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
-    def excess(nu: float) -> float:
-        card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu,
-                         method=method, gravity=gravity)
-        return float(card_work(card.pump_position, card.pump_load)) - pump_work
+    def excess(nu: np.ndarray, rows: np.ndarray) -> np.ndarray:
+        p, f = _pump_ends(string, periods[rows], position[rows], load[rows], nu, fluid_density=fluid_density,
+                          method=method, gravity=gravity)
+        return card_work(p, f) - pump_work
 
-    undamped, damped = excess(0.0), excess(largest)
-    if not (damped <= 0.0 <= undamped):
+    roots, undamped, damped = decreasing_roots(excess, largest, 1)
+    if np.isnan(roots[0]):
         raise DownholeError(f"pump work {pump_work / 1e3:.4g} kJ per cycle is not between "
-                            f"{(damped + pump_work) / 1e3:.4g} and {(undamped + pump_work) / 1e3:.4g} kJ, the pump "
-                            f"work at damping factors {largest:g} and 0: no damping factor explains it")
-    return float(brentq(excess, 0.0, largest, xtol=1e-10))
+                            f"{(damped[0] + pump_work) / 1e3:.4g} and {(undamped[0] + pump_work) / 1e3:.4g} kJ, the pump work at damping factors {largest:g} and 0: no "
+                            f"damping factor explains it")
+    return float(roots[0])
 
 
-def damping_from_fluid_load(string: RodString, period: float, position, load, fluid_load: float, *,
-                            fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
-                            largest: float = 2.0, solve=None) -> float:
-    """The damping factor nu that closes the energy balance of the rods with the pump's hydraulic work [-].
+def dampings_from_fluid_load(string: RodString, period, position, load, fluid_load, *, fluid_density: float,
+                             method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
+                             largest: float = LARGEST_DAMPING, solve=None) -> tuple[np.ndarray, tuple[str, ...]]:
+    """The damping factors nu that close the energy balance of the rods with the pump's
+    hydraulic work, for K cards of one rod string at once [-].
 
     The useful work of the pump per stroke is the fluid load times the net plunger
     stroke, F_o S_n; the rest of the surface card's work is dissipated along the rods
     ([Gibbs1963]: c from polished-rod minus hydraulic power; [EverittJennings1992]). The
     pump card, hence its work W_p and S_n (:func:`.analysis.summarise_pump_card`), depends
-    on nu, so nu is the root of W_p(nu) - F_o S_n(nu) on [0, largest] by Brent's method.
+    on nu, so nu is the root of W_p(nu) - F_o S_n(nu) on [0, largest]
+    (:func:`decreasing_roots`: every card's pump card at its own nu in one transfer).
 
     Parameters
     ----------
-    string, period, position, load, fluid_density, method, gravity
-        As :func:`pump_card`, for ONE card (shape (N,)).
-    fluid_load : float
-        F_o = (p_d - p_i) A_p [N], from the well's pressures at the pump.
+    string, method, gravity, fluid_density
+        As :func:`pump_card`.
+    period : float or array_like
+        T [s] of each card (one for all, or shape (K,)).
+    position, load : array_like
+        Surface cards, shape (N,) or (K, N).
+    fluid_load : float or array_like
+        F_o = (p_d - p_i) A_p [N], one for all or per card.
     largest : float
         Upper end of the search [-].
     solve : callable, optional
-        nu -> the pump card (a :class:`DownholeCard`) of another transfer of the same card (a
+        nu -> the pump card (a :class:`DownholeCard`) of another transfer of ONE card (a
         deviated well's march, :mod:`.deviated_diagnostic`, whose drag takes its share of the
-        surface work); default :func:`pump_card` with ``method``.
+        surface work); default the transfer of ``method``.
+
+    Returns
+    -------
+    (numpy.ndarray, tuple of str)
+        nu per card (NaN where none), and per card why there is none ('' where found): the
+        undamped rods deliver less than F_o S_n (the fluid load is lower than assumed), more
+        than ``largest`` would be needed, or a pump card without a stroke or load level.
+    """
+    periods, position, load = _many(period, position, load, "surface card")
+    count = len(position)
+    if solve is not None and count != 1:
+        raise DownholeError("a transfer of its own (solve) takes one card")
+    fluid = np.broadcast_to(np.asarray(fluid_load, dtype=float), (count,))
+    problems = [""] * count
+
+    def pump_ends(nu: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        if solve is not None:
+            card = solve(float(nu[0]))
+            return np.atleast_2d(card.pump_position), np.atleast_2d(card.pump_load)
+        return _pump_ends(string, periods[rows], position[rows], load[rows], nu, fluid_density=fluid_density,
+                          method=method, gravity=gravity)
+
+    def excess(nu: np.ndarray, rows: np.ndarray) -> np.ndarray:
+        p, f = pump_ends(nu, rows)
+        out = np.full(len(rows), np.nan)
+        live = np.array([not problems[r] for r in rows])
+        try:
+            net = summarise_pump_card(p[live], f[live]).net_stroke
+        except DownholeError:       # a card without a stroke or a load level: each card alone, for its message
+            net = np.full(live.sum(), np.nan)
+            for i, r in enumerate(rows[live]):
+                try:
+                    net[i] = summarise_pump_card(p[live][i], f[live][i]).net_stroke
+                except DownholeError as exc:
+                    problems[r] = str(exc)
+        out[live] = card_work(p[live], f[live]) - fluid[rows[live]] * net
+        return np.where(np.isnan(out), 0.0, out)    # a card with a problem stops at once
+
+    roots, undamped, damped = decreasing_roots(excess, largest, count)
+    for k in range(count):
+        if not problems[k] and undamped[k] < 0.0:
+            problems[k] = (f"the rods without damping deliver {-undamped[k] / 1e3:.4g} kJ per cycle less than the "
+                           f"pump's hydraulic work F_o S_n with F_o = {fluid[k] / 1e3:.4g} kN: the fluid load is lower "
+                           f"(fluid level higher, pump less full) than the well says; give the damping factor")
+        elif not problems[k] and damped[k] > 0.0:
+            problems[k] = (f"the card dissipates more than damping factor {largest:g} explains with F_o = "
+                           f"{fluid[k] / 1e3:.4g} kN; check the fluid level and the rods, or give the damping factor")
+        if problems[k]:
+            roots[k] = np.nan
+    return roots, tuple(problems)
+
+
+def damping_from_fluid_load(string: RodString, period: float, position, load, fluid_load: float, *,
+                            fluid_density: float, method: str = "gibbs", gravity: float = STANDARD_GRAVITY,
+                            largest: float = LARGEST_DAMPING, solve=None) -> float:
+    """The damping factor of ONE card (shape (N,)) that closes the rods' energy balance
+    (:func:`dampings_from_fluid_load`, whose parameters it takes) [-].
 
     Raises
     ------
     DownholeError
-        When even the undamped rods deliver less than F_o S_n (the fluid load is lower than assumed), or
-        when more than ``largest`` would be needed.
+        When there is none, saying why.
     """
-    from scipy.optimize import brentq
-
-    position, load = _card_arrays(period, position, load, "surface card")
-    if position.ndim != 1:
+    if np.ndim(position) != 1:
         raise DownholeError("damping_from_fluid_load takes one card of shape (N,)")
-
-    @functools.lru_cache(maxsize=None)  # brentq evaluates the ends again
-    def excess(nu: float) -> float:
-        card = solve(nu) if solve is not None else pump_card(string, period, position, load, fluid_density=fluid_density,
-                                                              damping_factor=nu, method=method, gravity=gravity)
-        net = float(summarise_pump_card(card.pump_position, card.pump_load).net_stroke)
-        return float(card_work(card.pump_position, card.pump_load)) - fluid_load * net
-
-    undamped = excess(0.0)
-    if undamped < 0.0:
-        raise DownholeError(f"the rods without damping deliver {-undamped / 1e3:.4g} kJ per cycle less than the "
-                            f"pump's hydraulic work F_o S_n with F_o = {fluid_load / 1e3:.4g} kN: the fluid load is "
-                            f"lower (fluid level higher, pump less full) than the well says; give the damping factor")
-    if excess(largest) > 0.0:
-        raise DownholeError(f"the card dissipates more than damping factor {largest:g} explains with F_o = "
-                            f"{fluid_load / 1e3:.4g} kN; check the fluid level and the rods, or give the damping factor")
-    return float(brentq(excess, 0.0, largest, xtol=1e-10))
+    roots, problems = dampings_from_fluid_load(string, period, position, load, fluid_load, fluid_density=fluid_density,
+                                               method=method, gravity=gravity, largest=largest, solve=solve)
+    if problems[0]:
+        raise DownholeError(problems[0])
+    return float(roots[0])
 
 
 def load_transfer_slope(position, load) -> np.ndarray:

@@ -27,15 +27,22 @@ from .string import RodString
 
 def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffness: float,
                     damping: float | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic."""
+    """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic, the
+    hyperbolic functions from one complex exponential (Re z >= 0 here, so e^-z does not
+    overflow; sinh z / z near z = 0, where the difference of exponentials cancels, from its
+    series 1 + z^2/6 + z^4/120, whose next term is below 1e-16 for |z| < 1e-3)."""
     beta = np.sqrt((-(omega**2) + 1j * omega * damping).astype(complex)) / wave_speed
     z = beta * length
+    grows = np.exp(z)
+    decays = 1.0 / grows
+    cosh, sinh = 0.5 * (grows + decays), 0.5 * (grows - decays)
+    small = np.abs(z) < 1e-3
     with np.errstate(invalid="ignore", divide="ignore"):
-        sinhc = np.where(z == 0, 1.0, np.sinh(z) / np.where(z == 0, 1.0, z))
-    return np.cosh(z), length * sinhc / stiffness, stiffness * z * np.sinh(z) / length
+        sinhc = np.where(small, 1.0 + z * z / 6.0 + z**4 / 120.0, sinh / np.where(small, 1.0, z))
+    return cosh, length * sinhc / stiffness, stiffness * z * sinh / length
 
 
-def march(string: RodString, period: float, position: np.ndarray, load: np.ndarray, damping: float | np.ndarray,
+def march(string: RodString, period: float | np.ndarray, position: np.ndarray, load: np.ndarray, damping: float | np.ndarray,
           harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Displacement and dynamic tension at every section end from those at the top.
 
@@ -43,8 +50,9 @@ def march(string: RodString, period: float, position: np.ndarray, load: np.ndarr
     ----------
     string : RodString
         Sections in marching order (the top one first).
-    period : float
-        T [s] of the card.
+    period : float or numpy.ndarray
+        T [s] of the card; an array of shape (...,) gives each card its own (its axes
+        broadcast against the cards' leading ones).
     position : numpy.ndarray
         w(0, t_k) [m], shape (..., N), uniform grid t_k = k T / N, up positive.
     load : numpy.ndarray
@@ -67,7 +75,7 @@ def march(string: RodString, period: float, position: np.ndarray, load: np.ndarr
     """
     samples = position.shape[-1]
     highest = (samples - 1) // 2 if harmonics is None else min(int(harmonics), (samples - 1) // 2)
-    omega = 2.0 * np.pi * np.arange(highest + 1) / period
+    omega = 2.0 * np.pi * np.arange(highest + 1) / np.asarray(period, dtype=float)[..., None]
     w = np.fft.rfft(position, axis=-1)[..., : highest + 1]
     f = np.fft.rfft(load, axis=-1)[..., : highest + 1]
     shape = np.broadcast_shapes(w.shape, f.shape, np.shape(damping))
