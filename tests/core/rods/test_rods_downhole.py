@@ -17,6 +17,8 @@ from pumpjack_cli.core.rods.analysis import card_work
 from pumpjack_cli.core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
     damping_for_pump_work,
+    damping_from_fluid_load,
+    dampings_from_fluid_load,
     downhole_methods,
     pump_card,
     surface_card,
@@ -326,3 +328,41 @@ def test_any_string_and_band_limited_card_round_trip_and_energy(diameters, lengt
         assert surface_work == pytest.approx(pump_work, abs=scale)
     else:
         assert surface_work - pump_work >= -scale
+
+
+def test_dampings_of_many_cards_are_each_cards_own_and_recover_the_damping_used():
+    """K surface cards of one string at their own speeds and dampings, solved together: each
+    card's nu equals the single card's to 1e-12, and the nu its surface card was made with when
+    F_o is the one for which that pump card's work is F_o S_n (Gibbs' transfer is exact, so
+    the root is the true nu to the search's tolerance, 1e-10, times the slope's conditioning)."""
+    from pumpjack_cli.core.rods.analysis import summarise_pump_card
+
+    make, base, stroke, fluid_load, density = WELLS["sk8-1530m"]
+    string = make()
+    periods, dampings = base * np.array([0.9, 1.0, 1.05, 1.2, 0.95]), np.array([0.03, 0.05, 0.08, 0.12, 0.2])
+    cards, balanced = [], []
+    for period, nu in zip(periods, dampings):
+        position, load = synthetic_pump_card(period, 200, stroke, fluid_load)
+        cards.append(surface_card(string, period, position, load, fluid_density=density, damping_factor=nu))
+        balanced.append(card_work(position, load) / summarise_pump_card(position, load).net_stroke)
+    positions = np.array([c.surface_position for c in cards])
+    loads = np.array([c.surface_load for c in cards])
+    together, problems = dampings_from_fluid_load(string, periods, positions, loads, np.array(balanced),
+                                                  fluid_density=density)
+    assert problems == ("",) * 5
+    for k in range(5):
+        alone = damping_from_fluid_load(string, periods[k], positions[k], loads[k], balanced[k], fluid_density=density)
+        assert together[k] == pytest.approx(alone, rel=1e-12, abs=0.0)
+    assert together == pytest.approx(dampings, abs=1e-7)
+
+
+def test_a_card_the_balance_cannot_explain_does_not_stop_the_others():
+    """One card whose F_o S_n the undamped rods cannot deliver (four times the fluid load asked
+    of it) gets its reason; the others their roots, as alone."""
+    string, period, density, position, load = _surface()
+    fluid_load = WELLS["sk8-1530m"][3]
+    roots, problems = dampings_from_fluid_load(string, period, np.stack([position, position]),
+                                               np.stack([load, load]), np.array([fluid_load, 4 * fluid_load]),
+                                               fluid_density=density)
+    assert problems[0] == "" and "the rods without damping deliver" in problems[1] and np.isnan(roots[1])
+    assert roots[0] == damping_from_fluid_load(string, period, position, load, fluid_load, fluid_density=density)
