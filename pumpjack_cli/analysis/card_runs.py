@@ -34,7 +34,7 @@ from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
 from ..core.rods.plausibility import check_card_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import CardError, PumpjackError, collected_warnings, warn
+from ..errors import CardError, PumpjackError, warn
 from ..quantities import parse_quantity
 from ..readers.cards import RawCard, check_options, read_card
 
@@ -364,23 +364,8 @@ def time_card(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: f
     """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
     from the card's time stamps or from the equation of motion) is resolved on a fine
     crank-angle grid and inverted, so a card of positions only is usable through the
-    unit's exact kinematics. A source that keeps what is computed of it (a ``kept`` dict: the
-    batch's card placed once, read by two analyses, its unit loaded once) gives the card back,
-    and its warnings, the second time."""
-    kept = getattr(source, "kept", None)
-    key = (id(unit), spm, samples, crank_motion)
-    if kept is not None and key in kept:
-        found, said = kept[key]
-        for text in said:
-            warn(text)
-        return found
-    with collected_warnings() as said:
-        reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), crank_motion)
+    unit's exact kinematics."""
+    reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), crank_motion)
     time = np.arange(samples) * (run.period / samples)
     theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
-    found = reading, TimeCard(time, theta, mechanism.rod_position(theta), card_load(reading.card, theta), run.period)
-    for text in said:
-        warn(text)
-    if kept is not None:
-        kept[key] = found, tuple(said)
-    return found
+    return reading, TimeCard(time, theta, mechanism.rod_position(theta), card_load(reading.card, theta), run.period)

@@ -20,13 +20,14 @@ import numpy as np
 
 from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import (
+    PumpCardSummary,
     card_work,
     displacement_rate,
     intake_pressure,
     summarise_pump_card,
     taper_loads,
 )
-from ..core.rods.diagnosis import balanced_damping, balanced_dampings, diagnose, hanging_depth
+from ..core.rods.diagnosis import balanced_dampings, diagnose, hanging_depth
 from ..core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
     downhole_methods,
@@ -37,7 +38,7 @@ from ..core.rods.plausibility import PARTED_FLATNESS, free_end
 from ..core.rods.production import (energy_per_day, fluid_above_pump, inferred_production,
                                     intake_pressure_from_load, slippage_rate)
 from ..core.rods.pump import discharge_pressure
-from ..errors import DownholeError, PumpjackError, warn
+from ..errors import DownholeError, PumpjackError, collected_warnings, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardSource, time_card
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
@@ -65,16 +66,6 @@ class Production:
     electricity_price: float | None = None
 
 
-@dataclass(frozen=True)
-class Balanced:
-    """Gibbs' nu of one card from the energy balance and the reason it fell back to the default
-    (empty when the balance held), found beforehand with the other cards of its rod string in one
-    array computation (:func:`well_dampings`, in batch)."""
-
-    nu: float
-    reason: str
-
-
 def fluid_load_of(unit: UnitConfig) -> float | None:
     """F_o = (p_d - p_i) A_p [N] from the well's pressures at the pump, None without them."""
     found = unit.pump_pressures()
@@ -83,78 +74,154 @@ def fluid_load_of(unit: UnitConfig) -> float | None:
     return (found[0] - found[1]) * math.pi * unit.require_well().plunger_diameter**2 / 4.0
 
 
-def well_dampings(unit: UnitConfig, surfaces: list) -> list[Balanced]:
-    """The energy balance's nu (:func:`~pumpjack_cli.core.rods.diagnosis.balanced_dampings`) of
-    surface cards (:class:`~.card_runs.TimeCard`, one sample count) of a vertical well solved together."""
-    rod_string, fluid_load = unit.rods(), fluid_load_of(unit)
-    found = balanced_dampings(rod_string, np.array([s.period for s in surfaces]),
-                              np.array([s.position for s in surfaces]), np.array([s.load for s in surfaces]),
-                              fluid_load, fluid_density=unit.require_well().fluid_density,
-                              fallback=DEFAULT_DAMPING_FACTOR)
-    return [Balanced(nu, reason) for nu, reason in found]
-
-
-def damping_factor(unit: UnitConfig, given: float | Balanced | None, rod_string, card, method: str,
-                   solve=None) -> tuple[float, str]:
-    """Gibbs' nu and where it comes from: the option, the unit file, or the energy balance
-    with the well's fluid load ([Gibbs1963], [EverittJennings1992]; ``solve``: the transfer
-    of a deviated well, :func:`~pumpjack_cli.core.rods.downhole.damping_from_fluid_load`),
-    found here or beforehand (``given`` a :class:`Balanced`)."""
+def damping_factors(unit: UnitConfig, given: float | None, rod_string, cards: list, method: str,
+                    solve=None) -> list[tuple[float, str]]:
+    """Gibbs' nu of each surface card (:class:`~.card_runs.TimeCard`) and the warning that goes
+    with it (empty for none): the option's, the unit file's, or the energy balance's with the
+    well's fluid load ([Gibbs1963], [EverittJennings1992]), the cards' balances solved together
+    (:func:`~pumpjack_cli.core.rods.diagnosis.balanced_dampings`; ``solve``, for one card: the
+    transfer of a deviated well)."""
     well = unit.require_well()
-    if isinstance(given, Balanced):
-        nu, reason = given.nu, given.reason
-    elif given is not None:
-        return given, "--damping"
-    elif well.damping_factor is not None:
-        return well.damping_factor, "well.damping_factor"
-    else:
-        fluid_load = fluid_load_of(unit)
-        if fluid_load is None:
-            warn(f"unit {unit.name}: no fluid level or intake pressure for the energy balance; damping factor "
-                 f"{DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
-            return DEFAULT_DAMPING_FACTOR, "assumed"
-        nu, reason = balanced_damping(rod_string, card.period, card.position, card.load, fluid_load,
-                                      fluid_density=well.fluid_density, fallback=DEFAULT_DAMPING_FACTOR, method=method,
-                                      solve=solve)
-    if reason:
-        warn(f"unit {unit.name}: {reason}; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
-        return nu, "assumed"
-    return nu, "energy balance"
+    if given is not None:
+        return [(given, "")] * len(cards)
+    if well.damping_factor is not None:
+        return [(well.damping_factor, "")] * len(cards)
+    fluid_load = fluid_load_of(unit)
+    if fluid_load is None:
+        return [(DEFAULT_DAMPING_FACTOR, f"unit {unit.name}: no fluid level or intake pressure for the energy "
+                                         f"balance; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)")
+                ] * len(cards)
+    found = balanced_dampings(rod_string, np.array([c.period for c in cards]), np.array([c.position for c in cards]),
+                              np.array([c.load for c in cards]), fluid_load, fluid_density=well.fluid_density,
+                              fallback=DEFAULT_DAMPING_FACTOR, method=method, solve=solve)
+    return [(nu, f"unit {unit.name}: {reason}; damping factor {DEFAULT_DAMPING_FACTOR:g} assumed (give --damping)"
+             if reason else "") for nu, reason in found]
 
 
 def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion: str, method: str | None,
-             damping: float | Balanced | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
+             damping: float | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
              deviation: Deviation = Deviation(), production: Production = Production()) -> Result:
     """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
-    of one surface card; in a deviated well (``deviation``'s survey or the unit's) with the drag
-    and gravity along the hole (:mod:`.deviated`), method None choosing."""
+    of one surface card: :func:`downholes` of one card."""
+    (found, said), = downholes(unit, [card], spm, crank_motion, method, damping, samples, service_factor, deviation,
+                               production)
+    for text in said:
+        warn(text)
+    if isinstance(found, PumpjackError):
+        raise found
+    return found
+
+
+def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: str, method: str | None,
+              damping: float | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
+              deviation: Deviation = Deviation(), production: Production = Production()
+              ) -> list[tuple[Result | PumpjackError, tuple[str, ...]]]:
+    """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
+    of each of K surface cards (:class:`~.card_runs.CardSource`) of one unit, with the warnings
+    of each; a card that cannot be analysed gets its error. In a vertical well the cards'
+    dampings, pump cards, pump-card figures and conditions are each one array computation
+    (every card as alone); in a deviated well (``deviation``'s survey or the unit's) each card
+    is marched with the drag and gravity along the hole (:mod:`.deviated`), method None choosing.
+    Problems of the unit or the options are raised for all."""
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     method = method_for(unit, method)
     if method not in downhole_methods():
         raise PumpjackError(f"--method {method}: use one of {', '.join(downhole_methods())}")
-    well = unit.require_well()
+    unit.require_well()
     string = unit.rods()
     linkage = unit.geometry.mechanism()
-    reading, surface = time_card(unit, linkage, card, spm, samples, crank_motion)
-    path, deviated = deviated_path(unit), None
+    said: list[list[str]] = [[] for _ in cards]
+    found: list = [None] * len(cards)
+    surfaces = {}
+    for k, card in enumerate(cards):
+        with collected_warnings() as noted:
+            try:
+                surfaces[k] = time_card(unit, linkage, card, spm, samples, crank_motion)
+            except PumpjackError as exc:
+                found[k] = exc
+        said[k] += noted
+    if deviated_path(unit) is None:
+        pumps = _vertical_pumps(unit, string, cards, surfaces, damping, method, said)
+    else:
+        pumps = {k: _deviated_pump(unit, string, cards[k], surfaces[k][1], damping, method, said[k]) for k in surfaces}
+    for k, pump in pumps.items():
+        if isinstance(pump, PumpjackError):
+            found[k] = pump
+    good = sorted(k for k in pumps if not isinstance(pumps[k], PumpjackError))
+    if good:
+        pump_cards = [pumps[k][1] for k in good]
+        figures = summarise_pump_card(np.array([p.pump_position for p in pump_cards]),
+                                      np.array([p.pump_load for p in pump_cards]))
+        conditions = diagnose(np.array([p.pump_position for p in pump_cards]),
+                              np.array([p.pump_load for p in pump_cards]), reference_fluid_load(unit))
+        for i, k in enumerate(good):
+            with collected_warnings() as noted:
+                found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, method,
+                                            PumpCardSummary(*(value[i] for value in vars(figures).values())),
+                                            conditions.card(i), service_factor, deviation, production)
+            said[k] += noted
+    return [(result, tuple(notes)) for result, notes in zip(found, said)]
+
+
+def _vertical_pumps(unit: UnitConfig, string, cards: list, surfaces: dict, damping: float | None, method: str,
+                    said: list[list[str]]) -> dict:
+    """The pump cards of the vertical well's surface cards (index -> (nu, DownholeCard, None) or the
+    error), their dampings and transfers each one array computation."""
+    keys = sorted(surfaces)
+    if not keys:
+        return {}
+    surface = [surfaces[k][1] for k in keys]
+    nus = damping_factors(unit, damping, string, surface, method)
+    for k, (_, note) in zip(keys, nus):
+        if note:
+            said[k].append(note)
     try:
-        if path is None:
-            nu, source = damping_factor(unit, damping, string, surface, method)
-            pump = pump_card(string, surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
-                             damping_factor=nu, method=method)
-        else:
-            mu = friction_coefficient(unit)
+        pumps = pump_card(string, np.array([s.period for s in surface]), np.array([s.position for s in surface]),
+                          np.array([s.load for s in surface]), fluid_density=unit.require_well().fluid_density,
+                          damping_factor=np.array([nu for nu, _ in nus]), method=method)
+    except DownholeError:     # a card the transfer refuses: each card alone, for its own message
+        return {k: _vertical_pump(unit, string, cards[k], surfaces[k][1], nu, method)
+                for k, (nu, _) in zip(keys, nus)}
+    return {k: (nu, pumps.card(i), None) for i, (k, (nu, _)) in enumerate(zip(keys, nus))}
 
-            def transfer(nu: float, mu: float = mu):
-                return deviated_pump_card(string, path, surface.period, surface.position, surface.load,
-                                          fluid_density=well.fluid_density, damping_factor=nu, friction_coefficient=mu)
 
-            nu, source = damping_factor(unit, damping, string, surface, method, lambda nu: transfer(nu).card)
-            deviated = transfer(nu)
-            pump = deviated.card
+def _vertical_pump(unit: UnitConfig, string, card, surface, nu: float, method: str):
+    """One card's pump card in a vertical well, or the transfer's refusal as an error."""
+    try:
+        return nu, pump_card(string, surface.period, surface.position, surface.load,
+                             fluid_density=unit.require_well().fluid_density, damping_factor=nu, method=method), None
     except DownholeError as exc:
-        raise PumpjackError(f"{card.name} on the rods of unit {unit.name}: {exc}") from None
-    figures = summarise_pump_card(pump.pump_position, pump.pump_load)
+        return PumpjackError(f"{card.name} on the rods of unit {unit.name}: {exc}")
+
+
+def _deviated_pump(unit: UnitConfig, string, card, surface, damping: float | None, method: str, said: list[str]):
+    """One card's pump card in a deviated well, marched with the drag ([Gibbs1963] damping from
+    the energy balance with the drag taking its share), or the error."""
+    well = unit.require_well()
+    mu = friction_coefficient(unit)
+
+    def transfer(nu: float, mu: float = mu):
+        return deviated_pump_card(string, well.path(), surface.period, surface.position, surface.load,
+                                  fluid_density=well.fluid_density, damping_factor=nu, friction_coefficient=mu)
+
+    try:
+        ((nu, note),) = damping_factors(unit, damping, string, [surface], method, lambda nu: transfer(nu).card)
+        if note:
+            said.append(note)
+        deviated = transfer(nu)
+    except DownholeError as exc:
+        return PumpjackError(f"{card.name} on the rods of unit {unit.name}: {exc}")
+    return nu, deviated.card, deviated
+
+
+def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, method: str, figures: PumpCardSummary,
+                     condition, service_factor: float, deviation: Deviation, production: Production) -> Result:
+    """The result of one card from its pump card (``found``: nu, the pump card, the deviated
+    march or None), its figures and its condition."""
+    well = unit.require_well()
+    reading, surface = reading_surface
+    nu, pump, deviated = found
+    path = deviated_path(unit)
     loads = taper_loads(string, pump.joint_load)
     surface_work = float(card_work(surface.position, surface.load))
     pump_work = float(card_work(pump.pump_position, pump.pump_load))
@@ -176,12 +243,13 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
         Scalar("pump_displacement", float(displacement_rate(figures.net_stroke, surface.period,
                                                                          well.plunger_diameter))),
     ]
-    found = unit.pump_pressures()
-    if found is not None:
-        summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter, found[0]))))
-    summary += condition_summary(unit, surface, pump, string)
+    found_pressures = unit.pump_pressures()
+    if found_pressures is not None:
+        summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter,
+                                                                            found_pressures[0]))))
+    summary += condition_summary(unit, surface, condition, string)
     summary += well_summary(unit, figures, pump, surface_work / surface.period, surface.period, production,
-                            intake_known=found is not None)
+                            intake_known=found_pressures is not None)
     summary += taper_summary(string, loads, service_factor)
     columns = (
         Column("time", surface.time),
@@ -210,7 +278,7 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
             string, well.path(), surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
             damping_factor=nu, friction_coefficient=0.0).profile
         columns, panels = profile_result(unit, profile)
-    return Result(title, tuple(summary), columns, panels, dead_position_marks(linkage))
+    return Result(title, tuple(summary), columns, panels, dead_position_marks(unit.geometry.mechanism()))
 
 
 def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[list[Scalar], tuple, tuple]:
@@ -256,13 +324,13 @@ def reference_fluid_load(unit: UnitConfig) -> float:
             - well.casing_head_pressure) * area
 
 
-def condition_summary(unit: UnitConfig, surface, pump, string) -> list[Scalar]:
-    """The pump's condition ([Rowlan2008], docs/diagnosis.md): the label, its confidence, the
-    second-best label, and the evidence; a parted string's break depth from the wave equation's free
-    end on the surface card (:func:`~pumpjack_cli.core.rods.plausibility.free_end`), else from the
-    hanging weight."""
+def condition_summary(unit: UnitConfig, surface, found, string) -> list[Scalar]:
+    """The pump's condition ([Rowlan2008], docs/diagnosis.md) of one card's diagnosis (``found``,
+    :func:`~pumpjack_cli.core.rods.diagnosis.diagnose` of its pump card): the label, its confidence,
+    the second-best label, and the evidence; a parted string's break depth from the wave
+    equation's free end on the surface card (:func:`~pumpjack_cli.core.rods.plausibility.free_end`),
+    else from the hanging weight."""
     well = unit.require_well()
-    found = diagnose(pump.pump_position, pump.pump_load, reference_fluid_load(unit))
     ft = found.features
     label = str(found.label[0])
     rows = [Scalar("pump_condition", label),

@@ -102,13 +102,15 @@ class Energy:
     price: float | None = None
 
 
-def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int, crank_motion: str, method: str, criterion: str,
-           drive_efficiency: float = 1.0, energy: Energy | None = None) -> Result:
+def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int | None, crank_motion: str, method: str,
+           criterion: str, drive_efficiency: float = 1.0, energy: Energy | None = None) -> Result:
     """The torque analysis of one card (see the module docstring); ``energy`` (its drive
-    efficiency replaced by ``drive_efficiency``) for the energy per day and its cost."""
+    efficiency replaced by ``drive_efficiency``) for the energy per day and its cost; ``steps``
+    None for the summary alone (no per-angle table or plot: a batch stores summaries)."""
     check_options(method, criterion)
     energy = dataclasses.replace(energy or Energy(), drive_efficiency=drive_efficiency)
-    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, (steps, SUMMARY_STEPS), crank_motion)
+    grids = (SUMMARY_STEPS,) if steps is None else (steps, SUMMARY_STEPS)
+    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, grids, crank_motion)
     found = card_torque(unit, reading.card, runs, method, criterion, energy=energy)
     title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank motion, "
              f"balance {criterion}")
@@ -129,14 +131,15 @@ class CardTorque:
     """The torque analysis of a card: the card's own figures (speed, work, polished-rod
     power), the torque summary, columns on the output grid, plot panels, and what other
     analyses read of it: the net torque column of the present counterbalance (of the
-    recommended one when the present counterbalance is unknown), its largest magnitude [N·m] on
-    the summary grid, and the gearbox rating's lines for a torque plot."""
+    recommended one when the present counterbalance is unknown; None, as the columns and
+    panels, for the summary alone), its largest magnitude [N·m] on the summary grid, and the
+    gearbox rating's lines for a torque plot."""
 
     card_summary: tuple[Scalar, ...]
     summary: tuple[Scalar, ...]
     columns: tuple[Column, ...]
     panels: tuple[Panel, ...]
-    net_torque: Column
+    net_torque: Column | None
     peak_net_torque: float
     rating_levels: tuple[tuple[str, float], ...]
 
@@ -144,8 +147,9 @@ class CardTorque:
 def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, criterion: str,
                 energy: Energy = Energy()) -> CardTorque:
     """Net torque, balance and loading of a card (load at crank angles) run on the output grid
-    ``runs[0]`` and the summary grid ``runs[1]`` (:data:`SUMMARY_STEPS` points): the
-    analysis of a measured card and of a predicted one alike. The duty (stroke peaks,
+    ``runs[0]`` and the summary grid ``runs[-1]`` (:data:`SUMMARY_STEPS` points; a run on
+    the summary grid alone gives the summary alone): the analysis of a measured card and of
+    a predicted one alike. The duty (stroke peaks,
     RMS torque, cyclic load factor, motor power, NEMA size, energy per day) is reported
     for the present counterbalance, when known, and for the recommended one."""
     check_options(method, criterion)
@@ -160,7 +164,8 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
         unit.spatial()          # refuses a kind without the spatial model
     balance, balance_known = unit.counterbalance_model()
     test_angle = upstroke_test_angle(linkage)
-    out, dense = (_torques(unit, linkage, masses if spatial else None, masses, balance, run, method) for run in runs)
+    out, dense = (None if run is None else _torques(unit, linkage, masses if spatial else None, masses, balance, run,
+                                                    method) for run in ([None, *runs] if len(runs) == 1 else runs))
     theta = dense.run.crank_angle
     dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
     parts = dense.components
@@ -175,7 +180,7 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
         return t.net + (value - balance.value) * balance.torque_per_value(linkage.motion(t.run.crank_angle))
 
     work = card_work(linkage, card)
-    frequency = 1.0 / out.run.period
+    frequency = 1.0 / dense.run.period
     summary = [Scalar(name, value) for name, value in balance.summary()]
     current = dense.net if balance_known else None
     if balance_known:
@@ -211,9 +216,12 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
     summary += _loading(unit.name, rated, card.load.max(), linkage.stroke, current, recommended, theta)
     if dense.exact is not None:
         summary.append(Scalar("peak_exact_minus_api_torque", peak(theta, dense.exact - dense.api).value))
-    columns = _columns(linkage, out, balance_known, shifted(out, recommendation.value), rated)
-    headline = next(c for c in columns if c.name == ("net_torque" if balance_known else "recommended_net_torque"))
     levels = _rating_levels(rated)
+    columns, panels, headline = [], (), None
+    if out is not None:
+        columns = _columns(linkage, out, balance_known, shifted(out, recommendation.value), rated)
+        headline = next(c for c in columns if c.name == ("net_torque" if balance_known else "recommended_net_torque"))
+        panels = _panels(linkage, out.run, columns, levels, balance_known)
     high, low = int(np.argmax(card.load)), int(np.argmin(card.load))
     card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency),
                     Scalar("max_rod_load", float(card.load[high])),
@@ -222,9 +230,7 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
                     Scalar("min_rod_load_crank_angle", float(card.crank_angle[low])),
                     Scalar("card_work", work),
                     Scalar("polished_rod_power", work * frequency))
-    return CardTorque(card_summary, tuple(summary), tuple(columns), _panels(linkage, out.run, columns, levels,
-                                                                            balance_known), headline,
-                      peak(theta, base).value, levels)
+    return CardTorque(card_summary, tuple(summary), tuple(columns), panels, headline, peak(theta, base).value, levels)
 
 
 def _duty(prefix: str, net: np.ndarray, dt: np.ndarray, frequency: float, energy: Energy) -> list[Scalar]:

@@ -11,6 +11,7 @@ its ``kind`` says otherwise.
 from __future__ import annotations
 
 import math
+from functools import cached_property
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
@@ -146,7 +147,12 @@ class Well(Section):
         return self
 
     def rods(self) -> RodString:
-        """The core's tapered rod string of ``rod_string``, top section first ([API11L], [API11B] tables)."""
+        """The core's tapered rod string of ``rod_string``, top section first ([API11L], [API11B] tables),
+        built once per well (the section is immutable, the string frozen)."""
+        return self._rods
+
+    @cached_property
+    def _rods(self) -> RodString:
         from ..core.constants import STANDARD_GRAVITY
         from ..core.rods.tables import RodSection as CoreSection
         from ..core.rods.tables import rod_string

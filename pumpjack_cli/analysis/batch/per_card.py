@@ -13,7 +13,7 @@ which :func:`card_fields` folds into the stored card's name and key (``docs/batc
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from datetime import datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -29,11 +29,6 @@ if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
 
 #: Analyses a card can go through, in the order they run.
 ANALYSES = ("torque", "downhole")
-#: Crank positions of the per-angle table the batch does not keep (the summaries are
-#: computed on their own fixed grid and do not depend on it).
-STEPS = 4
-
-
 @dataclass(frozen=True)
 class Options:
     """Options that apply to every card: the analyses and their settings (damping: Gibbs'
@@ -155,13 +150,11 @@ def _with_rod_string(unit: UnitConfig, path: str):
 
 class _PlacedOnce:
     """A raw card placed once for all the analyses of a card (duck-typed CardSource), its
-    warnings given to each analysis that reads it, keeping what is computed of it (``kept``:
-    :func:`..card_runs.time_card`'s card on a time grid, with the warnings of making it)."""
+    warnings given to each analysis that reads it."""
 
     def __init__(self, raw, name: str):
         self.raw, self.name = raw, name
         self._reading: tuple | None = None
-        self.kept: dict = {}
 
     def read(self, unit, spm=None):
         from ..card_runs import noted, place
@@ -187,9 +180,8 @@ def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
         return "error", f"internal error ({type(exc).__name__}: {' '.join(str(exc).split())}); please report it", None
 
 
-def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options, damping) -> dict:
-    """One analysis of one card as the single command runs it: its summary (SI, suffixed names);
-    ``damping`` is the option's, or the energy balance's found with the well's other cards."""
+def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
+    """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
     from ..downhole import Production, downhole
     from ..torque import torque
 
@@ -197,9 +189,9 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options, dampi
     for text in noted:
         warn(text)
     if analysis == "torque":
-        result = torque(unit, card, job.spm, STEPS, "auto", options.method, options.balance)
+        result = torque(unit, card, job.spm, None, "auto", options.method, options.balance)  # the summary alone
     else:
-        result = downhole(unit, card, job.spm, "auto", None, damping,  # Everitt-Jennings with drag if deviated
+        result = downhole(unit, card, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
                           production=Production(runtime=job.runtime))
     check_finite(result)
     return converted_summary(result, "si")
@@ -208,13 +200,17 @@ def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options, dampi
 @dataclass
 class _Stroke:
     """A card to analyse: its job, its stroke's label and time stamp, the card placed once, and
-    the damping its downhole analysis takes (the option's, or the energy balance's)."""
+    the outcomes of its analyses as they are found."""
 
     job: Job
     label: str
     timestamp: str
     card: _PlacedOnce
-    damping: object = None
+    outcomes: dict = field(default_factory=dict)
+
+    def outcome(self, analysis: str, status: str, error: str, noted: list[str], summary: dict | None) -> None:
+        self.outcomes[analysis] = Outcome(analysis, status, error, " | ".join(noted), summary or {}, self.label,
+                                          self.timestamp)
 
 
 def _strokes(job: Job, options: Options) -> list[_Stroke] | list[Outcome]:
@@ -231,65 +227,73 @@ def _strokes(job: Job, options: Options) -> list[_Stroke] | list[Outcome]:
     width = len(str(len(strokes)))
     return [_Stroke(job, f"{number:0{width}d}" if raw.strokes else "",
                     stroke_time(base, stroke.metadata.get("start")) if raw.strokes else base,
-                    _PlacedOnce(stroke, source.name), options.damping)
+                    _PlacedOnce(stroke, source.name))
             for number, stroke in enumerate(strokes, 1)]
 
 
-def _balanced_together(strokes: list[_Stroke], options: Options) -> None:
-    """Give the cards whose downhole damping comes from the energy balance of a vertical well
-    (Gibbs' method, no damping option or file value) the nu found for all the cards of their
-    unit in one array computation (:func:`..downhole.well_dampings`); a card whose surface card
-    cannot be made keeps the single path, which reports why."""
-    from ..card_runs import time_card
-    from ..deviated import method_for
-    from ..downhole import DEFAULT_SAMPLES, fluid_load_of, well_dampings
-
-    if "downhole" not in options.analyses or options.damping is not None:
-        return
-    groups: dict[int, list[tuple[_Stroke, object]]] = {}
+def _one_by_one(analysis: str, strokes: list[_Stroke], options: Options) -> None:
+    """An analysis of each card alone, as the single command runs it."""
     for stroke in strokes:
-        unit = _unit(stroke.job, options.catalogue)[0]
-        well = unit.well
-        if (well is None or well.damping_factor is not None or _attempt(lambda: method_for(unit, None))[2] != "gibbs"
-                or _attempt(lambda: fluid_load_of(unit))[2] is None):
-            continue
-        with collected_warnings():
-            status, _, surface = _attempt(lambda: time_card(unit, unit.geometry.mechanism(), stroke.card,
-                                                            stroke.job.spm, DEFAULT_SAMPLES, "auto")[1])
-        if status == "ok":
-            groups.setdefault(id(unit), []).append((stroke, surface))
-    for members in groups.values():
-        unit = _unit(members[0][0].job, options.catalogue)[0]
-        status, _, found = _attempt(lambda: well_dampings(unit, [surface for _, surface in members]))
-        if status == "ok":
-            for (stroke, _), balanced in zip(members, found):
-                stroke.damping = balanced
+        with collected_warnings() as noted:
+            status, error, summary = _attempt(lambda: _summary(analysis, stroke.job, stroke.card, options))
+        stroke.outcome(analysis, status, error, noted, summary)
+
+
+def _downhole_together(strokes: list[_Stroke], options: Options) -> None:
+    """The downhole analysis of the cards of one unit, speed option and runtime as one array
+    computation (:func:`..downhole.downholes`: each card as the single command analyses it); if
+    the group fails as a whole (the unit, or a fault of this program), each card alone."""
+    from ..downhole import Production, downholes
+
+    job = strokes[0].job
+    unit, loading = _unit(job, options.catalogue)
+
+    def together():
+        found = downholes(unit, [s.card for s in strokes], job.spm, "auto", None, options.damping,
+                          production=Production(runtime=job.runtime))
+        out = []
+        for result, said in found:
+            status, error, summary = _attempt(lambda: _checked(result))
+            out.append((status, error, [*loading, *said], summary))
+        return out
+
+    status, _, found = _attempt(together)
+    if status != "ok":
+        _one_by_one("downhole", strokes, options)
+        return
+    for stroke, (status, error, noted, summary) in zip(strokes, found):
+        stroke.outcome("downhole", status, error, noted, summary)
+
+
+def _checked(result) -> dict:
+    """A result's summary (SI, suffixed names), or its error raised."""
+    if isinstance(result, Exception):
+        raise result
+    check_finite(result)
+    return converted_summary(result, "si")
 
 
 def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[int, list[dict]]]:
     """The analyses of a chunk of jobs (index, job fields) as plain data, for a process pool
-    or a Dask worker, each card as the single commands analyse it; the downhole dampings of a
-    unit's cards are found together (:func:`_balanced_together`). Floating-point warnings
-    are not printed."""
+    or a Dask worker, each card as the single commands analyse it; the downhole analysis of the
+    cards of a unit (with one speed option and runtime) as one array computation
+    (:func:`_downhole_together`). Floating-point warnings are not printed."""
     import warnings
 
     settings = Options(**{**options, "analyses": tuple(options["analyses"])})
-    out = []
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         found = [(index, _strokes(Job(**fields), settings)) for index, fields in chunk]
-        _balanced_together([s for _, items in found for s in items if isinstance(s, _Stroke)], settings)
-        for index, items in found:
-            outcomes = []
-            for item in items:
-                if isinstance(item, Outcome):
-                    outcomes.append(item)
-                    continue
-                for analysis in settings.analyses:
-                    with collected_warnings() as noted:
-                        status, error, summary = _attempt(
-                            lambda: _summary(analysis, item.job, item.card, settings, item.damping))
-                    outcomes.append(Outcome(analysis, status, error, " | ".join(noted), summary or {}, item.label,
-                                            item.timestamp))
-            out.append((index, [vars(o).copy() for o in outcomes]))  # plain data, the summary shared
-    return out
+        strokes = [s for _, items in found for s in items if isinstance(s, _Stroke)]
+        if "torque" in settings.analyses:
+            _one_by_one("torque", strokes, settings)
+        if "downhole" in settings.analyses:
+            groups: dict[tuple, list[_Stroke]] = {}
+            for stroke in strokes:
+                key = (id(_unit(stroke.job, settings.catalogue)[0]), stroke.job.spm, stroke.job.runtime)
+                groups.setdefault(key, []).append(stroke)
+            for members in groups.values():
+                _downhole_together(members, settings)
+    return [(index, [vars(item).copy() for item in items if isinstance(item, Outcome)]
+             + [vars(s.outcomes[a]).copy() for s in items if isinstance(s, _Stroke) for a in settings.analyses])
+            for index, items in found]

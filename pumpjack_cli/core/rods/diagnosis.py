@@ -274,6 +274,12 @@ class Diagnosis:
     scores: np.ndarray
     features: CardFeatures
 
+    def card(self, index: int) -> Diagnosis:
+        """The diagnosis of card ``index`` alone (arrays of one card)."""
+        one = slice(index, index + 1)
+        features = CardFeatures(*(np.asarray(value)[one] for value in vars(self.features).values()))
+        return Diagnosis(self.label[one], self.confidence[one], self.second[one], self.scores[one], features)
+
 
 def condition_scores(features: CardFeatures) -> np.ndarray:
     """The score 0..1 of every condition for every card, shape (K, 9), by the rules of

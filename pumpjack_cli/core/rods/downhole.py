@@ -58,12 +58,12 @@ class DownholeCard:
     ----------
     method : str
         The method that produced the card.
-    period : float
-        T [s]; samples at t_k = k T / N.
-    damping_factor : float
-        nu [-].
-    damping_coefficient : float
-        c [1/s].
+    period : float or numpy.ndarray
+        T [s]; samples at t_k = k T / N (per card, shape (B,), when the cards have their own).
+    damping_factor : float or numpy.ndarray
+        nu [-] (per card, shape (B,), when the cards have their own).
+    damping_coefficient : float or numpy.ndarray
+        c [1/s], as ``damping_factor``.
     buoyant_weight : float
         W_rf [N], the load datum between the two cards.
     surface_position, surface_load : numpy.ndarray
@@ -76,9 +76,9 @@ class DownholeCard:
     """
 
     method: str
-    period: float
-    damping_factor: float
-    damping_coefficient: float
+    period: float | np.ndarray
+    damping_factor: float | np.ndarray
+    damping_coefficient: float | np.ndarray
     buoyant_weight: float
     surface_position: np.ndarray
     surface_load: np.ndarray
@@ -91,7 +91,18 @@ class DownholeCard:
     def time(self) -> np.ndarray:
         """t_k = k T / N [s]."""
         samples = self.surface_position.shape[-1]
-        return np.arange(samples) * self.period / samples
+        return np.arange(samples) * np.asarray(self.period)[..., None] / samples
+
+    def card(self, index: int) -> DownholeCard:
+        """Card ``index`` of cards (B, N), with its own period and damping."""
+        def own(value):
+            return float(value[index]) if np.ndim(value) else value
+
+        return DownholeCard(method=self.method, period=own(self.period), damping_factor=own(self.damping_factor),
+                            damping_coefficient=own(self.damping_coefficient), buoyant_weight=self.buoyant_weight,
+                            surface_position=self.surface_position[index], surface_load=self.surface_load[index],
+                            pump_position=self.pump_position[index], pump_load=self.pump_load[index],
+                            joint_position=self.joint_position[index], joint_load=self.joint_load[index])
 
 
 def _march_function(method: str):
@@ -100,14 +111,30 @@ def _march_function(method: str):
     return _METHODS[method]
 
 
-def _card_arrays(period: float, position, load, what: str) -> tuple[np.ndarray, np.ndarray]:
-    if not (np.isfinite(period) and period > 0):
-        raise DownholeError(f"card period must be finite and positive, got {period:g} s")
-    return as_cards(position, load, what)
+def _card_arrays(period, position, load, what: str) -> tuple[np.ndarray, np.ndarray]:
+    position, load = as_cards(position, load, what)
+    if np.ndim(period) and (position.ndim != 2 or np.shape(period) != position.shape[:1]):
+        raise DownholeError(f"{np.size(period)} periods for cards of shape {position.shape}")
+    if not (np.all(np.isfinite(period)) and np.all(np.asarray(period) > 0)):
+        raise DownholeError(f"card period must be finite and positive, got {period} s")
+    return position, load
 
 
-def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndarray, *, fluid_density: float,
-           damping_factor: float, method: str, harmonics: int | None, gravity: float,
+def _each_card(march):
+    """A march of one period and damping made to take cards (B, N) with their own: card by card."""
+    def each(string, period, position, load, damping, **options):
+        if not np.ndim(period) and not np.ndim(damping):
+            return march(string, period, position, load, damping, **options)
+        periods, dampings = (np.broadcast_to(np.asarray(v, dtype=float), position.shape[:1]) for v in (period, damping))
+        found = [march(string, float(t), p, f, float(c), **options)
+                 for t, p, f, c in zip(periods, position, load, dampings)]
+        return np.array([w for w, _ in found]), np.array([f for _, f in found])
+
+    return each
+
+
+def _solve(string: RodString, period: float | np.ndarray, position: np.ndarray, load: np.ndarray, *,
+           fluid_density: float, damping_factor: float | np.ndarray, method: str, harmonics: int | None, gravity: float,
            upward: bool) -> DownholeCard:
     march = _march_function(method)
     options = {}
@@ -118,22 +145,29 @@ def _solve(string: RodString, period: float, position: np.ndarray, load: np.ndar
             raise DownholeError(f"harmonics must be at least 1, got {harmonics}")
         options["harmonics"] = harmonics
     damping = string.damping_coefficient(damping_factor)
+    if method == "gibbs":
+        given = np.asarray(damping)[..., None] if np.ndim(damping) else damping   # per card: against the harmonics
+    else:
+        march, given = _each_card(march), damping
     static = string.static_tension(fluid_density, gravity)
     if upward:
-        w, f = march(string.reversed(), period, position, -load, damping, **options)   # T_s(L) = 0
+        w, f = march(string.reversed(), period, position, -load, given, **options)   # T_s(L) = 0
         w, f = w[..., ::-1, :], -f[..., ::-1, :]
     else:
-        w, f = march(string, period, position, load - static[0], damping, **options)
+        w, f = march(string, period, position, load - static[0], given, **options)
     tension = f + static[:, None]
-    return DownholeCard(method=method, period=float(period), damping_factor=float(damping_factor),
+    scalar = not np.ndim(period) and not np.ndim(damping_factor)
+    return DownholeCard(method=method, period=float(period) if scalar else np.broadcast_to(period, w.shape[:1]).copy(),
+                        damping_factor=float(damping_factor) if scalar else np.broadcast_to(damping_factor,
+                                                                                            w.shape[:1]).copy(),
                         damping_coefficient=damping, buoyant_weight=float(static[0]),
                         surface_position=w[..., 0, :], surface_load=tension[..., 0, :],
                         pump_position=w[..., -1, :], pump_load=tension[..., -1, :],
                         joint_position=w, joint_load=tension)
 
 
-def pump_card(string: RodString, period: float, position, load, *, fluid_density: float,
-              damping_factor: float = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
+def pump_card(string: RodString, period: float | np.ndarray, position, load, *, fluid_density: float,
+              damping_factor: float | np.ndarray = DEFAULT_DAMPING_FACTOR, method: str = "gibbs",
               harmonics: int | None = None, gravity: float = STANDARD_GRAVITY) -> DownholeCard:
     """Pump card (plunger position and net plunger load) from a surface card.
 
@@ -141,17 +175,19 @@ def pump_card(string: RodString, period: float, position, load, *, fluid_density
     ----------
     string : RodString
         The rods, top section first.
-    period : float
-        T [s] of one stroke; the card is sampled at t_k = k T / N, k = 0 .. N-1.
+    period : float or array_like
+        T [s] of one stroke; the card is sampled at t_k = k T / N, k = 0 .. N-1; for B
+        cards, one for all or one per card, shape (B,).
     position : array_like
         Polished-rod position [m], up positive, shape (N,) or (B, N) for B cards of the
-        same string and period.
+        same string.
     load : array_like
         Polished-rod load [N], same shape.
     fluid_density : float
         rho_f [kg/m^3] of the fluid around the rods (buoyancy).
-    damping_factor : float
-        Gibbs' nu [-]; c = pi a nu / (2 L) [Gibbs1963].
+    damping_factor : float or array_like
+        Gibbs' nu [-]; c = pi a nu / (2 L) [Gibbs1963]; for B cards one for all or one
+        per card, shape (B,).
     method : str
         One of :func:`downhole_methods`.
     harmonics : int, optional
@@ -162,7 +198,9 @@ def pump_card(string: RodString, period: float, position, load, *, fluid_density
     Returns
     -------
     DownholeCard
-        Pump position [m] and load [N] on the same grid, and the section-end loads.
+        Pump position [m] and load [N] on the same grid, and the section-end loads
+        (:meth:`DownholeCard.card` gives each of B cards). Gibbs' solution transfers B
+        cards in one array computation, each card exactly as alone.
 
     Raises
     ------
@@ -249,14 +287,9 @@ def decreasing_roots(excess, largest: float, count: int,
 def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
                fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
     """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)."""
-    if method == "gibbs":
-        damping = np.pi * string.mean_wave_speed * nu / (2.0 * string.total_length)
-        static = string.static_tension(fluid_density, gravity)
-        w, f = gibbs.march(string, period, position, load - static[0], damping[:, None])
-        return w[:, -1, :], f[:, -1, :] + static[-1]
-    cards = [pump_card(string, float(t), p, f, fluid_density=fluid_density, damping_factor=float(n), method=method,
-                       gravity=gravity) for t, p, f, n in zip(period, position, load, nu)]
-    return np.array([c.pump_position for c in cards]), np.array([c.pump_load for c in cards])
+    card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method,
+                     gravity=gravity)
+    return card.pump_position, card.pump_load
 
 
 def _many(period, position, load, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -221,10 +221,11 @@ class RodString:
         below = (self.buoyant_weight_per_length(fluid_density, gravity) * self.length)[::-1].cumsum()[::-1]
         return np.concatenate((below, [0.0]))
 
-    def damping_coefficient(self, damping_factor: float) -> float:
+    def damping_coefficient(self, damping_factor):
         """Gibbs' viscous damping coefficient c = pi a nu / (2 L) [1/s] [Gibbs1963].
 
-        nu is dimensionless; a is :attr:`mean_wave_speed` and L :attr:`total_length`,
+        nu is dimensionless (a float, or an array of one per card: c likewise); a is
+        :attr:`mean_wave_speed` and L :attr:`total_length`,
         so pi a / (2 L) is the first natural frequency of the string fixed at the
         polished rod and free at the pump, and nu / 2 the fraction of critical damping
         of that mode. The damping force per unit length is c m_i du/dt in every section.
@@ -241,9 +242,10 @@ class RodString:
         ----------
         [Gibbs1963].
         """
-        if not (np.isfinite(damping_factor) and damping_factor >= 0):
-            raise DownholeError(f"damping factor must be finite and not negative, got {damping_factor:g}")
-        return float(np.pi * self.mean_wave_speed * damping_factor / (2.0 * self.total_length))
+        if not (np.all(np.isfinite(damping_factor)) and np.all(np.asarray(damping_factor) >= 0)):
+            raise DownholeError(f"damping factor must be finite and not negative, got {damping_factor}")
+        found = np.pi * self.mean_wave_speed * np.asarray(damping_factor, dtype=float) / (2.0 * self.total_length)
+        return float(found) if found.ndim == 0 else found
 
     def subdivided(self, pieces: int) -> RodString:
         """The same string cut into at least ``pieces`` sections, none longer than L / pieces (to
