@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -44,8 +43,8 @@ from ..core.beam.torque import (
 )
 from ..core.designations import Ratings
 from ..core.motors import nema_motor_size
-from ..core.sampling import extremes, peak
-from ..errors import PumpjackError, warn
+from ..core.sampling import Extreme, extremes_of, peaks_of
+from ..errors import PumpjackError, collected_warnings, warn
 from ..quantities import DAY, HORSEPOWER, INCH
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, card_runs
@@ -104,18 +103,52 @@ class Energy:
 
 def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int | None, crank_motion: str, method: str,
            criterion: str, drive_efficiency: float = 1.0, energy: Energy | None = None) -> Result:
-    """The torque analysis of one card (see the module docstring); ``energy`` (its drive
+    """The torque analysis of one card (see the module docstring): :func:`torques` of one card."""
+    ((found, said),) = torques(unit, [card], spm, steps, crank_motion, method, criterion, drive_efficiency, energy)
+    for text in said:
+        warn(text)
+    if isinstance(found, PumpjackError):
+        raise found
+    return found
+
+
+def torques(unit: UnitConfig, cards: list, spm: float | None, steps: int | None, crank_motion: str, method: str,
+            criterion: str, drive_efficiency: float = 1.0,
+            energy: Energy | None = None) -> list[tuple[Result | PumpjackError, tuple[str, ...]]]:
+    """The torque analysis of each of K cards (:class:`.card_runs.CardSource`) of one unit, with
+    the warnings of each, the cards' torques, duties and loadings one array computation
+    (:func:`card_torques`); a card that cannot be analysed gets its error. ``energy`` (its drive
     efficiency replaced by ``drive_efficiency``) for the energy per day and its cost; ``steps``
-    None for the summary alone (no per-angle table or plot: a batch stores summaries)."""
+    None for the summary alone (no per-angle table or plot: a batch stores summaries).
+    Problems of the unit or the options are raised for all."""
     check_options(method, criterion)
     energy = dataclasses.replace(energy or Energy(), drive_efficiency=drive_efficiency)
     grids = (SUMMARY_STEPS,) if steps is None else (steps, SUMMARY_STEPS)
-    reading, runs = card_runs(unit, unit.geometry.mechanism(), card, spm, grids, crank_motion)
-    found = card_torque(unit, reading.card, runs, method, criterion, energy=energy)
-    title = (f"{unit.name}: gearbox torque ({method} method), card {card.name}, {runs[0].crank_motion} crank motion, "
-             f"balance {criterion}")
-    return Result(title, found.card_summary + found.summary, found.columns, found.panels,
-                  dead_position_marks(unit.geometry.mechanism()))
+    mechanism = unit.geometry.mechanism()
+    said: list[list[str]] = [[] for _ in cards]
+    found: list = [None] * len(cards)
+    readings = {}
+    for k, card in enumerate(cards):
+        with collected_warnings() as noted:
+            try:
+                readings[k] = card_runs(unit, mechanism, card, spm, grids, crank_motion)
+            except PumpjackError as exc:
+                found[k] = exc
+        said[k] += noted
+    keys = sorted(readings)
+    analysed = card_torques(unit, [readings[k][0].card for k in keys], [readings[k][1] for k in keys], method,
+                            criterion, energy) if keys else []
+    for k, (result, noted) in zip(keys, analysed):
+        said[k] += noted
+        if isinstance(result, PumpjackError):
+            found[k] = result
+            continue
+        runs = readings[k][1]
+        title = (f"{unit.name}: gearbox torque ({method} method), card {cards[k].name}, {runs[0].crank_motion} crank "
+                 f"motion, balance {criterion}")
+        found[k] = Result(title, result.card_summary + result.summary, result.columns, result.panels,
+                          dead_position_marks(mechanism))
+    return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
 
 def check_options(method: str, criterion: str) -> None:
@@ -146,59 +179,165 @@ class CardTorque:
 
 def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, criterion: str,
                 energy: Energy = Energy()) -> CardTorque:
-    """Net torque, balance and loading of a card (load at crank angles) run on the output grid
-    ``runs[0]`` and the summary grid ``runs[-1]`` (:data:`SUMMARY_STEPS` points; a run on
-    the summary grid alone gives the summary alone): the analysis of a measured card and of
-    a predicted one alike. The duty (stroke peaks,
-    RMS torque, cyclic load factor, motor power, NEMA size, energy per day) is reported
-    for the present counterbalance, when known, and for the recommended one."""
+    """Net torque, balance and loading of one card: :func:`card_torques` of one card."""
+    ((found, said),) = card_torques(unit, [card], [runs], method, criterion, energy)
+    for text in said:
+        warn(text)
+    if isinstance(found, PumpjackError):
+        raise found
+    return found
+
+
+def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]], method: str, criterion: str,
+                 energy: Energy = Energy()) -> list[tuple[CardTorque | PumpjackError, tuple[str, ...]]]:
+    """Net torque, balance and loading of K cards (loads at crank angles), each run on the output
+    grid ``runs[k][0]`` and the summary grid ``runs[k][-1]`` (:data:`SUMMARY_STEPS` points; a run
+    on the summary grid alone gives the summary alone): the analysis of measured cards and of
+    predicted ones alike, with the warnings of each. The duty (stroke peaks, RMS torque, cyclic
+    load factor, motor power, NEMA size, energy per day) is reported for the present
+    counterbalance, when known, and for the recommended one. The torques, peaks and duties of
+    the K cards on the summary grid are each one array computation, the balance each card's
+    own; if one card's figures cannot be made (a balance criterion it cannot meet, no mean
+    torque), every card is analysed alone, so that each gets its own answer."""
     check_options(method, criterion)
-    rated = unit.ratings()
-    linkage = unit.geometry.mechanism()
-    masses = unit.mass_model() if unit.masses is not None else None
-    if method == "exact" and masses is None:
-        raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
-                            f"(--method api needs only [counterbalance])")
-    spatial = hasattr(unit.geometry, "spatial")
-    if method == "exact" and masses is not None:
-        unit.spatial()          # refuses a kind without the spatial model
-    balance, balance_known = unit.counterbalance_model()
-    test_angle = upstroke_test_angle(linkage)
-    out, dense = (None if run is None else _torques(unit, linkage, masses if spatial else None, masses, balance, run,
-                                                    method) for run in ([None, *runs] if len(runs) == 1 else runs))
-    theta = dense.run.crank_angle
-    dt = 1.0 / dense.run.crank_speed  # time share of each point of the uniform crank-angle grid
-    parts = dense.components
-    recommendation = recommend_counterbalance(
-        criterion, linkage, theta, dense.run.load, balance, weights=dt, test_angle=test_angle,
-        extra_torque=dense.net - parts.rod_load - parts.structural - parts.counterbalance)
-    if recommendation.value is None:
-        raise PumpjackError(f"--balance {criterion}: {recommendation.note}; try --balance min-peak or min-rms")
+    context = _TorqueContext.of(unit, method)
+    try:
+        figures = _dense_figures(context, runs, criterion)
+    except PumpjackError as exc:
+        if len(cards) == 1:
+            return [(exc, ())]
+        return [card_torques(unit, [card], [run], method, criterion, energy)[0] for card, run in zip(cards, runs)]
+    out = []
+    for k, card in enumerate(cards):
+        with collected_warnings() as noted:
+            try:
+                result: CardTorque | PumpjackError = _card_result(context, card, runs[k], figures, k, criterion,
+                                                                  energy)
+            except PumpjackError as exc:
+                result = exc
+        out.append((result, tuple(noted)))
+    return out
+
+
+@dataclass(frozen=True)
+class _TorqueContext:
+    """What the torque analysis of a unit's cards shares: the unit, its mechanism, masses,
+    counterbalance and ratings."""
+
+    unit: UnitConfig
+    method: str
+    linkage: object
+    masses: object
+    spatial_masses: object
+    balance: CounterbalanceModel
+    balance_known: bool
+    rated: Ratings
+    test_angle: float
+
+    @classmethod
+    def of(cls, unit: UnitConfig, method: str) -> _TorqueContext:
+        masses = unit.mass_model() if unit.masses is not None else None
+        if method == "exact" and masses is None:
+            raise PumpjackError(f"unit {unit.name} has no [masses] section; --method exact needs the link masses "
+                                f"(--method api needs only [counterbalance])")
+        spatial = hasattr(unit.geometry, "spatial")
+        if method == "exact" and masses is not None:
+            unit.spatial()          # refuses a kind without the spatial model
+        balance, balance_known = unit.counterbalance_model()
+        linkage = unit.geometry.mechanism()
+        return cls(unit, method, linkage, masses, masses if spatial else None, balance, balance_known, unit.ratings(),
+                   upstroke_test_angle(linkage))
+
+
+@dataclass(frozen=True)
+class _DenseFigures:
+    """The K cards' torques on the summary grid and what is read of them, arrays (K, ...)."""
+
+    theta: np.ndarray
+    dense: list
+    dt: np.ndarray
+    frequency: np.ndarray
+    recommendations: list
+    recommended: np.ndarray
+    current: np.ndarray | None
+    duty: dict
+    peaks: dict
+    strokes: tuple | None
+    extremes: tuple | None
+
+
+def _dense_figures(context: _TorqueContext, runs: list[list[CardRun]], criterion: str) -> _DenseFigures:
+    """The torques of K cards on the summary grid, their balances and duties (raises for a card
+    whose figures cannot be made)."""
+    linkage, balance = context.linkage, context.balance
+    dense = [_torques(context.unit, linkage, context.spatial_masses, context.masses, balance, run[-1], context.method)
+             for run in runs]
+    theta = dense[0].run.crank_angle
+    dt = np.array([1.0 / t.run.crank_speed for t in dense])   # time share of each point of the uniform grid
+    frequency = np.array([1.0 / t.run.period for t in dense])
+    recommendations = []
+    for t in dense:
+        parts = t.components
+        found = recommend_counterbalance(criterion, linkage, theta, t.run.load, balance, weights=1.0 / t.run.crank_speed,
+                                         test_angle=context.test_angle,
+                                         extra_torque=t.net - parts.rod_load - parts.structural - parts.counterbalance)
+        if found.value is None:
+            raise PumpjackError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms")
+        recommendations.append(found)
+    net = np.array([t.net for t in dense])
+    values = np.array([r.value for r in recommendations])
+    recommended = net + (values[:, None] - balance.value) * balance.torque_per_value(linkage.motion(theta))
+    current = net if context.balance_known else None
+    duty = {"recommended_": _duty_of(recommended, dt, frequency)}
+    peaks = {"recommended": peaks_of(theta, recommended)}
+    strokes = extremes = None
+    if current is not None:
+        duty[""] = _duty_of(current, dt, frequency)
+        peaks["current"] = peaks_of(theta, current)
+        strokes = stroke_peaks(linkage, theta, current)
+        extremes = extremes_of(theta, current)
+    if dense[0].exact is not None:
+        peaks["exact"] = peaks_of(theta, np.array([t.exact - t.api for t in dense]))
+    return _DenseFigures(theta, dense, dt, frequency, recommendations, recommended, current, duty, peaks, strokes,
+                         extremes)
+
+
+def _duty_of(net: np.ndarray, dt: np.ndarray, frequency: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Cyclic load factor, mean torque [N·m] and driving work per revolution [J] of K cycles."""
+    clf = cyclic_load_factor(net, dt)
+    mean = np.sum(net * dt, axis=-1) / np.sum(dt, axis=-1)
+    return clf, mean, driving_work(net)
+
+
+def _card_result(context: _TorqueContext, card: Card, runs: list[CardRun], figures: _DenseFigures, k: int,
+                 criterion: str, energy: Energy) -> CardTorque:
+    """Card ``k``'s torque analysis from the K cards' figures."""
+    unit, linkage, balance, rated, masses = context.unit, context.linkage, context.balance, context.rated, context.masses
+    recommendation = figures.recommendations[k]
+    frequency = float(figures.frequency[k])
 
     def shifted(t: _Torques, value: float) -> np.ndarray:
         """The net torque with the balancing variable at ``value`` (its torque is affine in it)."""
         return t.net + (value - balance.value) * balance.torque_per_value(linkage.motion(t.run.crank_angle))
 
     work = card_work(linkage, card)
-    frequency = 1.0 / dense.run.period
     summary = [Scalar(name, value) for name, value in balance.summary()]
-    current = dense.net if balance_known else None
-    if balance_known:
-        found = peak(theta, current)
-        up, down = stroke_peaks(linkage, theta, current)
+    if context.balance_known:
+        top, bottom = figures.extremes
         summary += [Scalar(balance.variable, balance.value),
                     Scalar("counterbalance_effect",
-                           counterbalance_effect(linkage.motion(np.array([test_angle])), balance)),
-                    Scalar("peak_net_torque", found.value),
-                    Scalar("peak_net_torque_crank_angle", found.crank_angle)]
-        summary += extreme_scalars(zip(("max_net_torque", "min_net_torque"), extremes(theta, current)))
-        summary += [Scalar("upstroke_peak_torque", up), Scalar("downstroke_peak_torque", down)]
-        summary += _duty("", current, dt, frequency, energy)
-    recommended = shifted(dense, recommendation.value)
+                           counterbalance_effect(linkage.motion(np.array([context.test_angle])), balance)),
+                    Scalar("peak_net_torque", float(figures.peaks["current"][0][k])),
+                    Scalar("peak_net_torque_crank_angle", float(figures.peaks["current"][1][k]))]
+        summary += extreme_scalars((("max_net_torque", Extreme(float(top[0][k]), float(top[1][k]))),
+                                    ("min_net_torque", Extreme(float(bottom[0][k]), float(bottom[1][k])))))
+        summary += [Scalar("upstroke_peak_torque", float(figures.strokes[0][k])),
+                    Scalar("downstroke_peak_torque", float(figures.strokes[1][k]))]
+        summary += _duty("", figures.duty[""], k, frequency, energy)
     summary += [
         Scalar("recommended_" + balance.variable, recommendation.value),
         Scalar("recommended_counterbalance_effect", recommendation.counterbalance_effect),
-        Scalar("recommended_peak_net_torque", peak(theta, recommended).value),
+        Scalar("recommended_peak_net_torque", float(figures.peaks["recommended"][0][k])),
         Scalar("recommended_upstroke_peak_torque", recommendation.upstroke_peak),
         Scalar("recommended_downstroke_peak_torque", recommendation.downstroke_peak),
     ]
@@ -211,17 +350,20 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
             summary.append(Scalar("recommended_counterweight_mass", placement.mass))
         if placement.note:
             warn(placement.note)
-    base = current if current is not None else recommended
-    summary += _duty("recommended_", recommended, dt, frequency, energy)
-    summary += _loading(unit.name, rated, card.load.max(), linkage.stroke, current, recommended, theta)
-    if dense.exact is not None:
-        summary.append(Scalar("peak_exact_minus_api_torque", peak(theta, dense.exact - dense.api).value))
+    summary += _duty("recommended_", figures.duty["recommended_"], k, frequency, energy)
+    current_peak = float(figures.peaks["current"][0][k]) if context.balance_known else None
+    summary += _loading(unit.name, rated, card.load.max(), linkage.stroke, current_peak,
+                        float(figures.peaks["recommended"][0][k]))
+    if "exact" in figures.peaks:
+        summary.append(Scalar("peak_exact_minus_api_torque", float(figures.peaks["exact"][0][k])))
     levels = _rating_levels(rated)
     columns, panels, headline = [], (), None
-    if out is not None:
-        columns = _columns(linkage, out, balance_known, shifted(out, recommendation.value), rated)
-        headline = next(c for c in columns if c.name == ("net_torque" if balance_known else "recommended_net_torque"))
-        panels = _panels(linkage, out.run, columns, levels, balance_known)
+    if len(runs) == 2:
+        out = _torques(unit, linkage, context.spatial_masses, masses, balance, runs[0], context.method)
+        columns = _columns(linkage, out, context.balance_known, shifted(out, recommendation.value), rated)
+        headline = next(c for c in columns
+                        if c.name == ("net_torque" if context.balance_known else "recommended_net_torque"))
+        panels = _panels(linkage, out.run, columns, levels, context.balance_known)
     high, low = int(np.argmax(card.load)), int(np.argmin(card.load))
     card_summary = (Scalar("strokes_per_minute", 2.0 * np.pi * frequency),
                     Scalar("max_rod_load", float(card.load[high])),
@@ -230,15 +372,16 @@ def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, 
                     Scalar("min_rod_load_crank_angle", float(card.crank_angle[low])),
                     Scalar("card_work", work),
                     Scalar("polished_rod_power", work * frequency))
-    return CardTorque(card_summary, tuple(summary), tuple(columns), panels, headline, peak(theta, base).value, levels)
+    base = current_peak if current_peak is not None else float(figures.peaks["recommended"][0][k])
+    return CardTorque(card_summary, tuple(summary), tuple(columns), panels, headline, base, levels)
 
 
-def _duty(prefix: str, net: np.ndarray, dt: np.ndarray, frequency: float, energy: Energy) -> list[Scalar]:
-    """The duty of a net torque on the summary grid: RMS (equivalent) torque, cyclic load factor,
-    motor power by the RMS-equivalent rule and the NEMA size that covers it, energy per day and
-    its cost; names with ``prefix`` (``recommended_`` for the recommended counterbalance)."""
-    clf = cyclic_load_factor(net, dt)
-    mean = float(np.sum(net * dt) / np.sum(dt))
+def _duty(prefix: str, duty: tuple[np.ndarray, ...], k: int, frequency: float, energy: Energy) -> list[Scalar]:
+    """Card ``k``'s duty of a net torque on the summary grid (:func:`_duty_of`): RMS (equivalent)
+    torque, cyclic load factor, motor power by the RMS-equivalent rule and the NEMA size that
+    covers it, energy per day and its cost; names with ``prefix`` (``recommended_`` for the
+    recommended counterbalance)."""
+    clf, mean = float(duty[0][k]), float(duty[1][k])
     rms = clf * mean
     power = rms * 2.0 * np.pi * frequency / energy.drive_efficiency
     found = [Scalar(prefix + "rms_net_torque", rms), Scalar(prefix + "cyclic_load_factor", clf),
@@ -249,7 +392,7 @@ def _duty(prefix: str, net: np.ndarray, dt: np.ndarray, frequency: float, energy
              f"beyond the largest standard NEMA rating, 500 hp")
     else:
         found.append(Scalar(prefix + "nema_motor_size", size))
-    daily = driving_work(net) * frequency * DAY / (energy.drive_efficiency * energy.motor_efficiency)
+    daily = float(duty[2][k]) * frequency * DAY / (energy.drive_efficiency * energy.motor_efficiency)
     found.append(Scalar(prefix + "motor_energy", daily))
     if energy.price is not None:
         found.append(Scalar(prefix + "energy_cost", daily * energy.price))
@@ -260,16 +403,16 @@ def _duty(prefix: str, net: np.ndarray, dt: np.ndarray, frequency: float, energy
 STROKE_NOTE = 5e-4
 
 
-def _loading(name: str, rated: Ratings, peak_load: float, stroke: float, current, recommended,
-             theta) -> list[Scalar]:
+def _loading(name: str, rated: Ratings, peak_load: float, stroke: float, current: float | None,
+             recommended: float) -> list[Scalar]:
     """Loading against the ratings that are known (fractions, shown in %); a warning when the
     geometry's exact stroke exceeds the rated maximum stroke."""
     found = [Scalar("stroke", stroke)]
     if rated.gearbox_torque is not None:
         found.append(Scalar("gearbox_rating", rated.gearbox_torque))
         if current is not None:
-            found.append(Scalar("gearbox_loading", peak(theta, current).value / rated.gearbox_torque))
-        found.append(Scalar("recommended_gearbox_loading", peak(theta, recommended).value / rated.gearbox_torque))
+            found.append(Scalar("gearbox_loading", current / rated.gearbox_torque))
+        found.append(Scalar("recommended_gearbox_loading", recommended / rated.gearbox_torque))
     if rated.structure_load is not None:
         found += [Scalar("structure_rating", rated.structure_load),
                   Scalar("structure_loading", peak_load / rated.structure_load)]

@@ -81,14 +81,25 @@ def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
     >>> round(top.value, 4), round(top.crank_angle, 3), round(bottom.value, 4)
     (1.0, 0.1, -1.0)
     """
-    found = []
+    (top, top_angle), (bottom, bottom_angle) = extremes_of(theta, np.asarray(values)[None])
+    return Extreme(float(top[0]), float(top_angle[0])), Extreme(float(bottom[0]), float(bottom_angle[0]))
+
+
+def extremes_of(theta: np.ndarray, values: np.ndarray) -> tuple[tuple[np.ndarray, np.ndarray], ...]:
+    """:func:`extremes` of K curves at once, ``values`` shape (K, N) on the grid ``theta`` (N,):
+    ((maxima, their angles), (minima, their angles)), arrays (K,)."""
+    values = np.asarray(values, dtype=float)
+    rows = np.arange(values.shape[0])
+    size = values.shape[-1]
     h = theta[1] - theta[0]
+    found = []
     for sign in (1.0, -1.0):
-        i = int(np.argmax(sign * values))
-        y0, y1, y2 = (values[(i + k) % len(values)] for k in (-1, 0, 1))
+        i = np.argmax(sign * values, axis=-1)
+        y0, y1, y2 = (values[rows, (i + k) % size] for k in (-1, 0, 1))
         curvature = y0 - 2.0 * y1 + y2
-        shift = 0.5 * (y0 - y2) / curvature if curvature != 0.0 else 0.0
-        found.append(Extreme(float(y1 - 0.25 * (y0 - y2) * shift), float((theta[i] + shift * h) % (2.0 * np.pi))))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            shift = np.where(curvature != 0.0, 0.5 * (y0 - y2) / np.where(curvature != 0.0, curvature, 1.0), 0.0)
+        found.append((y1 - 0.25 * (y0 - y2) * shift, (theta[i] + shift * h) % (2.0 * np.pi)))
     return found[0], found[1]
 
 
@@ -201,3 +212,9 @@ def peak(theta: np.ndarray, values: np.ndarray) -> Extreme:
     """
     magnitude = np.abs(values) if np.ndim(values) == 1 else np.linalg.norm(values, axis=-1)
     return extremes(theta, magnitude)[0]
+
+
+def peaks_of(theta: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`peak` of K series at once, ``values`` (K, N): the largest magnitudes and their
+    crank angles, arrays (K,)."""
+    return extremes_of(theta, np.abs(values))[0]

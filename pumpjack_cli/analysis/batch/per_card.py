@@ -239,18 +239,24 @@ def _one_by_one(analysis: str, strokes: list[_Stroke], options: Options) -> None
         stroke.outcome(analysis, status, error, noted, summary)
 
 
-def _downhole_together(strokes: list[_Stroke], options: Options) -> None:
-    """The downhole analysis of the cards of one unit, speed option and runtime as one array
-    computation (:func:`..downhole.downholes`: each card as the single command analyses it); if
-    the group fails as a whole (the unit, or a fault of this program), each card alone."""
+def _together(analysis: str, strokes: list[_Stroke], options: Options) -> None:
+    """An analysis of the cards of one unit, speed option and runtime as one array computation
+    (:func:`..torque.torques`, :func:`..downhole.downholes`: each card as the single command
+    analyses it); if the group fails as a whole (the unit, or a fault of this program), each
+    card alone."""
     from ..downhole import Production, downholes
+    from ..torque import torques
 
     job = strokes[0].job
     unit, loading = _unit(job, options.catalogue)
+    cards = [s.card for s in strokes]
 
     def together():
-        found = downholes(unit, [s.card for s in strokes], job.spm, "auto", None, options.damping,
-                          production=Production(runtime=job.runtime))
+        if analysis == "torque":
+            found = torques(unit, cards, job.spm, None, "auto", options.method, options.balance)  # the summary alone
+        else:
+            found = downholes(unit, cards, job.spm, "auto", None, options.damping,  # Everitt-Jennings if deviated
+                              production=Production(runtime=job.runtime))
         out = []
         for result, said in found:
             status, error, summary = _attempt(lambda: _checked(result))
@@ -259,10 +265,10 @@ def _downhole_together(strokes: list[_Stroke], options: Options) -> None:
 
     status, _, found = _attempt(together)
     if status != "ok":
-        _one_by_one("downhole", strokes, options)
+        _one_by_one(analysis, strokes, options)
         return
     for stroke, (status, error, noted, summary) in zip(strokes, found):
-        stroke.outcome("downhole", status, error, noted, summary)
+        stroke.outcome(analysis, status, error, noted, summary)
 
 
 def _checked(result) -> dict:
@@ -275,9 +281,9 @@ def _checked(result) -> dict:
 
 def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[int, list[dict]]]:
     """The analyses of a chunk of jobs (index, job fields) as plain data, for a process pool
-    or a Dask worker, each card as the single commands analyse it; the downhole analysis of the
-    cards of a unit (with one speed option and runtime) as one array computation
-    (:func:`_downhole_together`). Floating-point warnings are not printed."""
+    or a Dask worker, each card as the single commands analyse it, the cards of a unit (with
+    one speed option and runtime) as one array computation (:func:`_together`). Floating-point
+    warnings are not printed."""
     import warnings
 
     settings = Options(**{**options, "analyses": tuple(options["analyses"])})
@@ -285,15 +291,13 @@ def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[in
         warnings.simplefilter("ignore", RuntimeWarning)
         found = [(index, _strokes(Job(**fields), settings)) for index, fields in chunk]
         strokes = [s for _, items in found for s in items if isinstance(s, _Stroke)]
-        if "torque" in settings.analyses:
-            _one_by_one("torque", strokes, settings)
-        if "downhole" in settings.analyses:
-            groups: dict[tuple, list[_Stroke]] = {}
-            for stroke in strokes:
-                key = (id(_unit(stroke.job, settings.catalogue)[0]), stroke.job.spm, stroke.job.runtime)
-                groups.setdefault(key, []).append(stroke)
+        groups: dict[tuple, list[_Stroke]] = {}
+        for stroke in strokes:
+            key = (id(_unit(stroke.job, settings.catalogue)[0]), stroke.job.spm, stroke.job.runtime)
+            groups.setdefault(key, []).append(stroke)
+        for analysis in settings.analyses:
             for members in groups.values():
-                _downhole_together(members, settings)
+                _together(analysis, members, settings)
     return [(index, [vars(item).copy() for item in items if isinstance(item, Outcome)]
              + [vars(s.outcomes[a]).copy() for s in items if isinstance(s, _Stroke) for a in settings.analyses])
             for index, items in found]

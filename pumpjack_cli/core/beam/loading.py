@@ -64,12 +64,13 @@ def card_work(linkage: Mechanism, card: Card) -> float:
     return float(np.sum(0.5 * (w + np.roll(w, -1)) * (np.roll(s, -1) - s)))
 
 
-def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None) -> float:
-    """CLF = T_rms / T_mean over a cycle ([DurhamLockard1988]).
+def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None):
+    """CLF = T_rms / T_mean over a cycle ([DurhamLockard1988]): a float, or one per cycle of
+    ``net_torque`` (K, N), along the last axis.
 
     ``weights`` are the time shares of the samples (dt = dtheta / omega for a crank that
     does not turn uniformly); without them the samples are a uniform crank-angle grid
-    at uniform speed. Raises :class:`TorqueError` when the mean torque is not positive
+    at uniform speed. Raises :class:`TorqueError` when a mean torque is not positive
     (the unit does no net work on the rods: CLF undefined).
 
     >>> round(cyclic_load_factor(1.0 + np.sin(np.linspace(0, 2 * np.pi, 360, endpoint=False))), 6)   # sqrt(1.5)
@@ -79,11 +80,14 @@ def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None
     w = np.ones_like(t) if weights is None else np.asarray(weights, dtype=float)
     if not (np.all(np.isfinite(t)) and np.all(np.isfinite(w))):
         raise TorqueError("cyclic load factor: the net torque is not finite at every crank angle")
-    mean = float(np.sum(w * t) / np.sum(w))
-    if not mean > 0:
-        raise TorqueError(f"cyclic load factor: the mean net torque is {mean:.6g} N·m; it must be positive "
+    total = np.sum(w, axis=-1)
+    mean = np.sum(w * t, axis=-1) / total
+    if not np.all(mean > 0):
+        bad = float(np.ravel(mean)[np.flatnonzero(~(np.ravel(mean) > 0))[0]])
+        raise TorqueError(f"cyclic load factor: the mean net torque is {bad:.6g} N·m; it must be positive "
                           f"(a card that does no work on the rods has no cyclic load factor)")
-    return math.sqrt(float(np.sum(w * t * t) / np.sum(w))) / mean
+    found = np.sqrt(np.sum(w * t * t, axis=-1) / total) / mean
+    return float(found) if found.ndim == 0 else found
 
 
 @dataclass(frozen=True)
@@ -195,10 +199,10 @@ def loading(net_torque: np.ndarray, card: Card, linkage: Mechanism, cycles_per_s
     )
 
 
-def stroke_peaks(linkage: Mechanism, crank_angle: np.ndarray, net_torque: np.ndarray) -> tuple[float, float]:
+def stroke_peaks(linkage: Mechanism, crank_angle: np.ndarray, net_torque: np.ndarray):
     """The largest net torque T [N·m] of the upstroke and of the downstroke (the two peaks that a
     balanced unit makes equal, [Rowlan2004]); the upstroke runs from the bottom dead position
-    through the upstroke travel.
+    through the upstroke travel. Floats, or one per cycle of ``net_torque`` (K, N).
 
     A torque of 5 N·m on every upstroke sample and 3 N·m on every downstroke sample:
 
@@ -215,12 +219,15 @@ def stroke_peaks(linkage: Mechanism, crank_angle: np.ndarray, net_torque: np.nda
     up = upstroke_mask(linkage, crank_angle)
     if not (up.any() and (~up).any()):
         raise TorqueError("stroke peaks: the crank-angle grid does not cover both strokes")
-    return float(np.max(t[up])), float(np.max(t[~up]))
+    if t.ndim == 1:
+        return float(np.max(t[up])), float(np.max(t[~up]))
+    return np.max(t[:, up], axis=-1), np.max(t[:, ~up], axis=-1)
 
 
-def driving_work(net_torque: np.ndarray) -> float:
+def driving_work(net_torque: np.ndarray):
     """Work the gearbox does on the unit per revolution when it drives [J]: the integral of
-    max(T, 0) over the crank angle, T [N·m] on a uniform grid of one revolution.
+    max(T, 0) over the crank angle, T [N·m] on a uniform grid of one revolution (a float, or
+    one per cycle of ``net_torque`` (K, N)).
 
     The power T omega is that of the gearbox on the crank; over a cycle its integral is
     the integral of T dtheta whatever the crank speed, and with the negative part (the
@@ -233,4 +240,5 @@ def driving_work(net_torque: np.ndarray) -> float:
     t = np.asarray(net_torque, dtype=float)
     if not np.all(np.isfinite(t)):
         raise TorqueError("driving work: the net torque is not finite at every crank angle")
-    return float(np.sum(np.maximum(t, 0.0)) * (2.0 * np.pi / t.size))
+    found = np.sum(np.maximum(t, 0.0), axis=-1) * (2.0 * np.pi / t.shape[-1])
+    return float(found) if found.ndim == 0 else found

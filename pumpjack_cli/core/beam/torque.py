@@ -155,7 +155,7 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
     crank_angle : ndarray
         theta [rad].
     rod_load : ndarray
-        W [N] at those angles.
+        W [N] at those angles; K cards' loads (K, N) give the card terms per card.
     balance : CounterbalanceModel
         The structure and counterbalance (crank counterweights: B [N], M [N·m], tau [rad]).
     beam_inertia : float
@@ -177,8 +177,9 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
     """
     theta = np.asarray(crank_angle, dtype=float)
     w = np.asarray(rod_load, dtype=float)
-    crank_speed = np.broadcast_to(np.asarray(crank_speed, dtype=float), theta.shape)
-    crank_acceleration = np.broadcast_to(np.asarray(crank_acceleration, dtype=float), theta.shape)
+    shape = np.broadcast_shapes(theta.shape, w.shape, np.shape(crank_speed), np.shape(crank_acceleration))
+    crank_speed = np.broadcast_to(np.asarray(crank_speed, dtype=float), shape)
+    crank_acceleration = np.broadcast_to(np.asarray(crank_acceleration, dtype=float), shape)
     _finite("torque components", theta, w, crank_speed, crank_acceleration)
     m = linkage.motion(theta)
     tf = m.torque_factor
