@@ -104,13 +104,14 @@ def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:
 
 # --- `pumpjack batch`: fields of cards, manifests, stores, processes -----------------------
 
-def field_cards(folder: Path, count: int, seed: int = 3, start: int = 0) -> list[tuple[str, str, str, str]]:
-    """``count`` cards of the bundled units (sample cards with scaled swing, noise and speed)
+def field_cards(folder: Path, count: int, seed: int = 3, start: int = 0,
+                units: tuple[str, ...] = CARD_UNITS) -> list[tuple[str, str, str, str]]:
+    """``count`` cards of the bundled ``units`` (sample cards with scaled swing, noise and speed)
     written to ``folder``: (well, unit, card file name, timestamp) rows."""
     rng = np.random.default_rng(seed)
     rows = []
     for k in range(start, start + count):
-        unit = CARD_UNITS[k % len(CARD_UNITS)]
+        unit = units[k % len(units)]
         lines = sample_card(unit).read_text(encoding="utf-8").splitlines()
         body = [line for line in lines if not line.startswith("#")]
         data = np.array([[float(x) for x in line.split(",")] for line in body[1:]])
