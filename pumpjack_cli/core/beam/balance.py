@@ -143,15 +143,31 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
 
 
 def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The lines a_i - M s_i that can be the largest for some M >= 0: line j is at or above
-    line i for every M >= 0 when a_j >= a_i and s_j <= s_i, so only the lines above every
-    line of smaller (or equal, earlier) s are kept. The maximum over them is the maximum
-    over all lines, to the bit (rounding is monotonic)."""
+    """The lines a_i - M s_i that are the largest for some M >= 0: their upper envelope, in the
+    order of s.
+
+    Line j is at or above line i for every M >= 0 when a_j >= a_i and s_j <= s_i, so first
+    only the lines above every line of smaller (or equal, earlier) s are kept: in the order
+    of s their a increases, and the last is the largest at M = 0. From it the envelope is
+    followed as M grows: the next line is the one of smaller s that overtakes the present
+    one first, at M = (a_j - a_i) / (s_j - s_i) (of equal such M the one of smallest s, the
+    others leading at a single point), until the line of smallest s (the convex-hull trick).
+    The maximum over the envelope is the maximum over all lines; a line that would lead only
+    by rounding may be left out, which moves the maximum by a rounding error."""
     order = np.argsort(sine, kind="stable")
-    a = base[order]
+    a, s = base[order], sine[order]
     before = np.concatenate(([-np.inf], np.maximum.accumulate(a)[:-1]))
-    keep = np.sort(order[a > before])
-    return base[keep], sine[keep]
+    keep = a > before
+    a, s = a[keep], s[keep]
+    distinct = np.append(s[1:] != s[:-1], True)        # of equal s the last, whose a is largest
+    a, s = a[distinct], s[distinct]
+    chain = [a.size - 1]
+    while chain[-1] > 0:
+        i = chain[-1]
+        takeover = (a[i] - a[:i]) / (s[i] - s[:i])
+        chain.append(int(np.flatnonzero(takeover == takeover.min())[0]))
+    chosen = np.array(chain[::-1])
+    return a[chosen], s[chosen]
 
 
 def _bisect_root(lo: float, hi: float, lines: tuple[np.ndarray, ...]) -> float:

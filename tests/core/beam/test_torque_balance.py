@@ -11,6 +11,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.balance import (balance_criteria, equal_peaks_moment, min_peak_moment, min_rms_moment,
@@ -211,3 +213,18 @@ def test_equal_peaks_is_a_root_that_brute_force_confirms():
         best = np.max(np.abs(base - moment * sine))
         for m in crossings:  # each scanned crossing is within a step of a root no better than the one returned
             assert np.max(np.abs(base - m * sine)) >= best - (scan[1] - scan[0]) * np.max(np.abs(sine)) - 1e-9 * scale
+
+
+@settings(max_examples=60, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1), lines=st.integers(1, 400))
+def test_the_envelope_of_the_lines_has_the_maximum_of_all_lines(seed, lines):
+    """max_i (a_i - M s_i) over the envelope the equal-peaks search keeps equals the maximum over
+    every line, at M = 0, at random M and far out (to rounding: a line may lead by an ulp)."""
+    from pumpjack_cli.core.beam.balance import _front
+
+    rng = np.random.default_rng(seed)
+    base, sine = rng.normal(0.0, 1e4, lines), np.round(rng.uniform(-1.0, 1.0, lines), int(rng.integers(1, 6)))
+    a, s = _front(base, sine)
+    assert np.all(np.diff(s) > 0)
+    for moment in (0.0, *rng.uniform(0.0, 1e5, 20), 1e12):
+        assert np.max(a - moment * s) == pytest.approx(np.max(base - moment * sine), rel=1e-12, abs=1e-9 * (1 + moment))
