@@ -6,6 +6,7 @@ where it occurs) is computed here, so that the rule is stated once.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -46,8 +47,18 @@ def crank_grid(steps: int) -> np.ndarray:
     --------
     >>> crank_grid(4).tolist() == [0.0, np.pi / 2, np.pi, 3 * np.pi / 2]
     True
+
+    The grid is made once per size and shared, read-only (the run layer asks for the same
+    grids for every card).
     """
-    return np.linspace(0.0, 2.0 * np.pi, steps, endpoint=False)
+    return _grid(int(steps))
+
+
+@functools.lru_cache(maxsize=32)
+def _grid(steps: int) -> np.ndarray:
+    grid = np.linspace(0.0, 2.0 * np.pi, steps, endpoint=False)
+    grid.flags.writeable = False
+    return grid
 
 
 def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
