@@ -358,10 +358,10 @@ def _rotation(mechanism: Mechanism, fit: RotationFit, time: np.ndarray, scaled: 
         other = fit_rotation(mechanism.turned(), time, scaled)
         if other.uniform_rms < 0.5 * fit.uniform_rms:
             own_name, other_name = _ROTATION_NAMES[mechanism.rotation], _ROTATION_NAMES[-mechanism.rotation]
-            return [f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
-                    f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
-                    f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation"]
+            return [(f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
+                     f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
+                     f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation")]
     if relative > FIT_WARNING:
-        return [f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
-                f"the fitted crank angles are used"]
+        return [(f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
+                 f"the fitted crank angles are used")]
     return []

@@ -29,7 +29,6 @@ the order listed tells a card stored in reverse.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import cast
@@ -52,6 +51,9 @@ _FIT_TOLERANCE = 1e-10
 #: Harmonics fitted before the others: a pumping unit's crank speed varies mostly at once
 #: and twice per revolution (the upstroke's and the downstroke's torque peaks).
 _FIRST_HARMONICS = 2
+#: Machine epsilon of float64: R's diagonal below n times this, relative to its largest entry,
+#: counts as rank-deficient (the cut-off of ``numpy.linalg.lstsq``'s default ``rcond``).
+_EPSILON = float(np.finfo(float).eps)
 
 
 @dataclass(frozen=True)
@@ -330,10 +332,11 @@ def _steps(augmented: np.ndarray) -> np.ndarray:
     rows, size = augmented.shape[1], augmented.shape[2] - 1
     triangle = cast(np.ndarray, np.linalg.qr(augmented, mode="r"))  # numpy's stubs type every mode as (Q, R)
     diagonal = np.abs(np.diagonal(triangle[:, :size, :size], axis1=1, axis2=2))
-    full_rank = (rows >= size) & (np.min(diagonal, axis=1) > np.finfo(float).eps * rows * np.max(diagonal, axis=1))
+    full_rank = (rows >= size) & (np.min(diagonal, axis=1) > _EPSILON * rows * np.max(diagonal, axis=1))
     steps = np.empty((augmented.shape[0], size))
     if rows >= size:
-        steps[full_rank] = -np.linalg.solve(triangle[full_rank, :size, :size], triangle[full_rank, :size, size:])[:, :, 0]
+        solved = slice(None) if np.all(full_rank) else full_rank
+        steps[solved] = -np.linalg.solve(triangle[solved, :size, :size], triangle[solved, :size, size:])[:, :, 0]
     for card in np.flatnonzero(~full_rank):
         steps[card] = np.linalg.lstsq(augmented[card, :, :size], -augmented[card, :, size], rcond=None)[0]
     return steps
@@ -356,24 +359,25 @@ def _least_squares(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np
     augmented, cost = _evaluate(linkage, tc, p, params)
     step = _steps(augmented)
     solves, halvings = np.ones(len(params), dtype=int), np.zeros(len(params), dtype=int)
-    active = np.arange(len(params))
+    active = np.ones(len(params), dtype=bool)
     while True:
-        active = active[~np.all(np.abs(step[active]) * scale[active] <= _FIT_TOLERANCE, axis=1)]
-        if active.size == 0:
+        active &= ~np.all(np.abs(step) * scale <= _FIT_TOLERANCE, axis=1)
+        if not np.any(active):
             return params, cost
-        trial = params[active] + step[active]
-        augmented, trial_cost = _evaluate(linkage, tc[active], p[active], trial)
-        better = trial_cost <= cost[active]
-        accepted, rejected = active[better], active[~better]
-        params[accepted], cost[accepted] = trial[better], trial_cost[better]
-        going = solves[accepted] < _FIT_ITERATIONS
-        renewed = accepted[going]
-        step[renewed] = _steps(augmented[better][going])
+        rows = slice(None) if np.all(active) else active
+        trial = params[rows] + step[rows]
+        augmented, trial_cost = _evaluate(linkage, tc[rows], p[rows], trial)
+        better = np.zeros_like(active)
+        better[rows] = trial_cost <= cost[rows]
+        params[better], cost[better] = trial[better[rows]], trial_cost[better[rows]]
+        renewed = better & (solves < _FIT_ITERATIONS)
+        step[renewed] = _steps(augmented[renewed[rows]])
         solves[renewed] += 1
         halvings[renewed] = 0
+        rejected = active & ~better
         step[rejected] *= 0.5
         halvings[rejected] += 1
-        active = np.concatenate([renewed, rejected[halvings[rejected] < _LINE_SEARCH]])
+        active = renewed | (rejected & (halvings < _LINE_SEARCH))
 
 
 def fit_rotation(linkage: Mechanism, time: np.ndarray, position: np.ndarray, harmonics: int = 0) -> RotationFit:
