@@ -169,12 +169,12 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
 def place_cards(mechanism: Mechanism, cards: Sequence[CardSamples]) -> list[PlacedCard | CardError]:
     """Put K cards of one unit on its crank-angle axis, each as :func:`place_card` puts it.
 
-    Each card is checked, oriented and scaled on its own; the time cards of as many samples
-    are then fitted together (:func:`~pumpjack_cli.core.beam.card.fit_rotations`, one array
-    computation for the group), and the fit's checks, the rare fit of the other rotation
-    direction and the coverage check are again per card. A card with crank angles, with
-    positions only, or with a number of samples no other card has is a group of one: the
-    path of :func:`place_card`, which is this function with one card.
+    Each card is checked, oriented and scaled on its own, and a card with crank angles or
+    with positions only is placed so; the time cards of as many samples are then fitted
+    together (:func:`~pumpjack_cli.core.beam.card.fit_rotations`, one array computation for
+    the group, a card whose length no other card has alone), and the fit's checks, the rare
+    fit of the other rotation direction and the coverage check are again per card.
+    :func:`place_card` is this function with one card.
 
     Parameters
     ----------

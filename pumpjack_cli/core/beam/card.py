@@ -15,7 +15,8 @@ kinematics of :mod:`.linkage` (no approximation):
   squares to the measured positions (:func:`fit_rotation`), optionally with a
   periodic variation of the crank speed over the cycle. The fitted mean omega is the
   card's pumping speed, the fitted series' derivatives the crank speed and
-  acceleration at every sample, and the residual says how well the card fits this unit.
+  acceleration at every sample, and the residual says how well the card fits this unit;
+  the cards of one unit are fitted together, each as alone, by :func:`fit_rotations`.
   [Takacs2016] derive the crank angle against time from dynamometer data
   iteratively; here it is a least-squares fit of a few parameters.
 
