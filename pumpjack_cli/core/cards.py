@@ -22,13 +22,15 @@ card's name; the warnings are returned, one line each (``docs/cards.md``).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Required, TypedDict, TypeVar
 
 import numpy as np
 
 from ..errors import CardError
-from .beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_position, fit_rotation, largest_gap,
-                        loop_work, upstroke_points)
+from .beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_position, fit_input_errors, fit_rotation,
+                        fit_rotations, largest_gap, loop_work, time_samples, upstroke_points)
 from .beam.geometry import CLOCKWISE, COUNTERCLOCKWISE
 from .mechanism import Mechanism
 
@@ -99,11 +101,24 @@ class PlacedCard:
         return None if self.speed is None else self.speed * 30.0 / math.pi
 
 
+class CardSamples(TypedDict, total=False):
+    """One card's samples and names as :func:`place_card` takes them (its keywords), for :func:`place_cards`."""
+
+    load: Required[np.ndarray]
+    crank_angle: np.ndarray | None
+    position: np.ndarray | None
+    time: np.ndarray | None
+    source: str
+    position_unit: tuple[str, float]
+    reversed: bool
+    warnings: tuple[str, ...]
+
+
 def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarray | None = None,
                position: np.ndarray | None = None, time: np.ndarray | None = None, source: str = "the card",
                position_unit: tuple[str, float] = ("m", 1.0), reversed: bool = False,
                warnings: tuple[str, ...] = ()) -> PlacedCard:
-    """Put a card's samples on the crank-angle axis of ``mechanism``.
+    """Put a card's samples on the crank-angle axis of ``mechanism``: :func:`place_cards` with one card.
 
     Parameters
     ----------
@@ -133,19 +148,106 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
         The card on the crank-angle axis, the samples in cycle order, and for a time
         card its mean speed, crank speed and acceleration at every sample.
 
+    Raises
+    ------
+    CardError
+        The card cannot be placed (one line, starting with ``source`` but for the time
+        fit's checks of its input).
+
     References
     ----------
     [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
     """
+    placed = place_cards(mechanism, [CardSamples(load=load, crank_angle=crank_angle, position=position, time=time,
+                                                 source=source, position_unit=position_unit, reversed=reversed,
+                                                 warnings=warnings)])[0]
+    if isinstance(placed, CardError):
+        raise placed
+    return placed
+
+
+def place_cards(mechanism: Mechanism, cards: Sequence[CardSamples]) -> list[PlacedCard | CardError]:
+    """Put K cards of one unit on its crank-angle axis, each as :func:`place_card` puts it.
+
+    Each card is checked, oriented and scaled on its own, and a card with crank angles or
+    with positions only is placed so; the time cards of as many samples are then fitted
+    together (:func:`~pumpjack_cli.core.beam.card.fit_rotations`, one array computation for
+    the group, a card whose length no other card has alone), and the fit's checks, the rare
+    fit of the other rotation direction and the coverage check are again per card.
+    :func:`place_card` is this function with one card.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The unit the cards were measured on.
+    cards : sequence of CardSamples
+        For each card the keywords of :func:`place_card` (``load`` [N], ``crank_angle``
+        [rad], ``position`` [m], ``time`` [s], ``source``, ``position_unit``, ``reversed``,
+        ``warnings``).
+
+    Returns
+    -------
+    list of PlacedCard or CardError
+        For each card, in order, what :func:`place_card` returns for it, or the
+        :class:`~pumpjack_cli.errors.CardError` it raises (so that a bad card does not stop
+        the others).
+
+    References
+    ----------
+    [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
+    """
+    prepared = [_caught(_prepared, mechanism, card) for card in cards]
+    groups: dict[int, dict[int, _TimeCard]] = {}
+    for k, card in enumerate(prepared):
+        if isinstance(card, _TimeCard):
+            groups.setdefault(card.time.size, {})[k] = card
+    fitted: dict[int, PlacedCard | CardError] = {}
+    for group in groups.values():
+        for (k, card), fit in zip(group.items(), _fits(mechanism, list(group.values()))):
+            fitted[k] = fit if isinstance(fit, CardError) else _caught(_finished, mechanism, card, fit)
+    return [fitted[k] if isinstance(card, _TimeCard) else card for k, card in enumerate(prepared)]
+
+
+@dataclass(frozen=True)
+class _TimeCard:
+    """A time card checked, oriented and scaled (``scaled`` [m] from the bottom of the unit's
+    stroke), waiting for its fit; ``notes`` the warnings so far."""
+
+    load: np.ndarray
+    position: np.ndarray
+    time: np.ndarray
+    scaled: np.ndarray
+    source: str
+    position_unit: tuple[str, float]
+    notes: tuple[str, ...]
+    reversed: bool
+
+
+_Placed = TypeVar("_Placed")
+
+
+def _caught(place: Callable[..., _Placed], *args: object) -> _Placed | CardError:
+    """``place(*args)``, or the :class:`CardError` it raises."""
+    try:
+        return place(*args)
+    except CardError as error:
+        return error
+
+
+def _prepared(mechanism: Mechanism, card: CardSamples) -> PlacedCard | _TimeCard:
+    """An angle or position card placed, or a time card ready for its fit."""
+    load, crank_angle, position, time = card["load"], card.get("crank_angle"), card.get("position"), card.get("time")
+    source, reversed = card.get("source", "the card"), card.get("reversed", False)
     if crank_angle is not None:
         theta = np.asarray(crank_angle, dtype=float) % (2.0 * math.pi)
         if np.all(theta == theta[0]):
             raise CardError(f"{source}: every crank angle is {math.degrees(theta[0]):.6g} deg; a card covers a whole cycle")
         _check_coverage(theta, source, "crank angles")
-        return PlacedCard(card_from_angles(theta, load), source, tuple(warnings), load, theta, reversed=reversed)
+        return PlacedCard(card_from_angles(theta, load), source, tuple(card.get("warnings", ())), load, theta,
+                          reversed=reversed)
     if position is None:
         raise CardError(f"{source}: a card has crank angles or polished-rod positions; this one has neither")
-    unit, factor = position_unit
+    unit, factor = position_unit = card.get("position_unit", ("m", 1.0))
     steps = np.diff(position)
     if np.all(steps == 0):
         raise CardError(f"{source}: the polished rod does not move (every position is {position[0] / factor:.6g} {unit}); "
@@ -158,7 +260,7 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
     mismatch = card_stroke / stroke - 1.0
     message = (f"{source}: card stroke {card_stroke / factor:.4g} {unit} differs from the unit's exact stroke "
                f"{stroke / factor:.4g} {unit} by {100 * mismatch:+.1f} %")
-    notes = list(warnings)
+    notes = list(card.get("warnings", ()))
     if abs(mismatch) > STROKE_ERROR:
         raise CardError(f"{message}; {position_slip(card_stroke / stroke, unit) or 'wrong unit, crank hole or position units?'}")
     if abs(mismatch) > STROKE_WARNING:
@@ -177,11 +279,29 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
         theta = crank_angle_from_position(mechanism, scaled, upstroke_points(scaled))
         _check_coverage(theta, source, "positions")
         return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, reversed=reversed)
-    fit = _rotation(mechanism, time, scaled, position_unit, source, notes)
+    time, scaled = time_samples(time, scaled)
+    return _TimeCard(load, position, time, scaled, source, position_unit, tuple(notes), reversed)
+
+
+def _fits(mechanism: Mechanism, cards: list[_TimeCard]) -> list[RotationFit | CardError]:
+    """The rotations of time cards of as many samples, fitted together; a card the fit refuses gets its error."""
+    time, scaled = np.stack([card.time for card in cards]), np.stack([card.scaled for card in cards])
+    harmonics = harmonics_for(time.shape[1])
+    errors = fit_input_errors(time, scaled, harmonics)
+    fine = [k for k, error in enumerate(errors) if not error]
+    fits = iter(fit_rotations(mechanism, time[fine], scaled[fine], harmonics))
+    return [CardError(error) if error else next(fits) for error in errors]
+
+
+def _finished(mechanism: Mechanism, card: _TimeCard, fit: RotationFit) -> PlacedCard:
+    """A time card placed by its fit, once the fit's checks pass (:func:`_rotation`)."""
+    notes = [*card.notes, *_rotation(mechanism, fit, card.time, card.scaled, card.position_unit, card.source)]
     theta = fit.crank_angle % (2.0 * math.pi)
-    _check_coverage(theta, source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
-    return PlacedCard(card_from_angles(theta, load), source, tuple(notes), load, theta, position, time, fit.speed,
-                      fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke, reversed)
+    _check_coverage(theta, card.source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
+    stroke = mechanism.dead_positions().stroke
+    return PlacedCard(card_from_angles(theta, card.load), card.source, tuple(notes), card.load, theta, card.position,
+                      card.time, fit.speed, fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke,
+                      card.reversed)
 
 
 #: Lengths a position column is commonly written in [m], for naming a slip.
@@ -220,11 +340,10 @@ def harmonics_for(samples: int) -> int:
     return max(0, min(HARMONICS, (samples // 4 - 2) // 2))
 
 
-def _rotation(mechanism: Mechanism, time: np.ndarray, scaled: np.ndarray, position_unit: tuple[str, float],
-              source: str, notes: list[str]) -> RotationFit:
-    """The time fit, its warnings appended to ``notes``; the other rotation direction is tried
-    only when the uniform fit is not near exact."""
-    fit = fit_rotation(mechanism, time, scaled, harmonics_for(time.size))
+def _rotation(mechanism: Mechanism, fit: RotationFit, time: np.ndarray, scaled: np.ndarray,
+              position_unit: tuple[str, float], source: str) -> list[str]:
+    """The time fit's checks, and its warnings; the other rotation direction is fitted only when
+    the uniform fit is not near exact."""
     stroke = mechanism.dead_positions().stroke
     relative = fit.rms / stroke
     unit, factor = position_unit
@@ -239,11 +358,10 @@ def _rotation(mechanism: Mechanism, time: np.ndarray, scaled: np.ndarray, positi
         other = fit_rotation(mechanism.turned(), time, scaled)
         if other.uniform_rms < 0.5 * fit.uniform_rms:
             own_name, other_name = _ROTATION_NAMES[mechanism.rotation], _ROTATION_NAMES[-mechanism.rotation]
-            notes.append(f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
-                         f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
-                         f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation")
-            return fit
+            return [(f"{source}: at a steady crank speed the time stamps fit {other_name} rotation better than "
+                     f"the unit's {own_name} (RMS position error {100 * other.uniform_rms / stroke:.2g} % of the "
+                     f"stroke against {100 * fit.uniform_rms / stroke:.2g} %); check the unit's rotation")]
     if relative > FIT_WARNING:
-        notes.append(f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
-                     f"the fitted crank angles are used")
-    return fit
+        return [(f"{source}: the time stamps fit this unit's motion only roughly ({residual}); "
+                 f"the fitted crank angles are used")]
+    return []

@@ -1,7 +1,8 @@
 """A card is read without a unit, then parsed once and placed once per run.
 
 The parser is the registry's delimited reader and the placement's one time fit is
-``core.beam.card.fit_rotation`` as the placement calls it; both are counted through
+``core.beam.card.fit_rotations`` as the placement calls it (one call fits a group of
+cards, here the one card); both are counted through
 monkeypatched wrappers while `pumpjack torque` and `pumpjack batch` (one worker, in this
 process) run on a time-stamped card.
 """
@@ -55,7 +56,7 @@ def test_the_format_is_told_from_content_or_name_else_the_default(tmp_path):
 def counted(monkeypatch) -> Counter:
     """Calls of the card parser and of the time fit, counted."""
     calls = Counter()
-    parse, fit = cards.READERS["delimited"], placement.fit_rotation
+    parse, fit = cards.READERS["delimited"], placement.fit_rotations
 
     def counting_parse(*args, **kwargs):
         calls["parse"] += 1
@@ -66,7 +67,7 @@ def counted(monkeypatch) -> Counter:
         return fit(*args, **kwargs)
 
     monkeypatch.setitem(cards.READERS, "delimited", cards.Reader(counting_parse, parse.recognises, parse.extensions))
-    monkeypatch.setattr(placement, "fit_rotation", counting_fit)
+    monkeypatch.setattr(placement, "fit_rotations", counting_fit)
     return calls
 
 
