@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..core.beam.card import card_from_angles, card_load
-from ..core.cards import PlacedCard, place_card
+from ..core.cards import PlacedCard, place_cards
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
 from ..core.rods.plausibility import check_card_loads
@@ -141,12 +141,29 @@ def chosen(raw: RawCard, stroke: int | str, mechanism: Mechanism) -> Reading:
 
 
 def place(raw: RawCard, mechanism: Mechanism) -> Reading:
-    """A raw card on the crank-angle axis of ``mechanism`` (:func:`~pumpjack_cli.core.cards.place_card`),
-    its messages in the file's own position unit, with the SPM the file states (:func:`stated`)."""
-    placed = place_card(mechanism, raw.load, crank_angle=raw.crank_angle, position=raw.position, time=raw.time,
-                        source=raw.source, position_unit=raw.column_units.get("position", ("m", 1.0)),
-                        reversed=raw.reversed, warnings=raw.warnings)
-    return stated(placed, raw)
+    """A raw card on the crank-angle axis of ``mechanism``: :func:`place_all` of one card."""
+    (found,) = place_all([raw], mechanism)
+    if isinstance(found, CardError):
+        raise found
+    return found
+
+
+def place_all(raws: list[RawCard], mechanism: Mechanism) -> list[Reading | CardError]:
+    """Raw cards on the crank-angle axis of ``mechanism``, together
+    (:func:`~pumpjack_cli.core.cards.place_cards`: the time fits of a unit's cards one array
+    computation), their messages in each file's own position unit, with the SPM each file
+    states (:func:`stated`); a card that cannot be placed gets its error."""
+    placed = place_cards(mechanism, [
+        {"load": raw.load, "crank_angle": raw.crank_angle, "position": raw.position, "time": raw.time,
+         "source": raw.source, "position_unit": raw.column_units.get("position", ("m", 1.0)),
+         "reversed": raw.reversed, "warnings": raw.warnings} for raw in raws])
+    out: list[Reading | CardError] = []
+    for found, raw in zip(placed, raws):
+        try:
+            out.append(found if isinstance(found, CardError) else stated(found, raw))
+        except CardError as exc:
+            out.append(exc)
+    return out
 
 
 def stated(placed: PlacedCard, raw: RawCard) -> Reading:

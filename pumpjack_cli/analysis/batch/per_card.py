@@ -150,18 +150,31 @@ def _with_rod_string(unit: UnitConfig, path: str):
 
 class _PlacedOnce:
     """A raw card placed once for all the analyses of a card (duck-typed CardSource), its
-    warnings given to each analysis that reads it."""
+    warnings given to each analysis that reads it; placed with the other cards of its unit
+    (:meth:`place_together`) or, when first read, alone."""
 
     def __init__(self, raw, name: str):
         self.raw, self.name = raw, name
+        self._placed = None
         self._reading: tuple | None = None
+
+    @staticmethod
+    def place_together(cards: list[_PlacedOnce], unit) -> None:
+        """Place the cards of one unit in one array computation (:func:`..card_runs.place_all`)."""
+        from ..card_runs import place_all
+
+        for card, placed in zip(cards, place_all([c.raw for c in cards], unit.geometry.mechanism())):
+            card._placed = placed
 
     def read(self, unit, spm=None):
         from ..card_runs import noted, place
 
         if self._reading is None:
+            placed = self._placed if self._placed is not None else place(self.raw, unit.geometry.mechanism())
+            if isinstance(placed, Exception):
+                raise placed
             with collected_warnings() as said:
-                reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
+                reading = noted(placed, unit, spm)
             self._reading = reading, tuple(said)
         for text in self._reading[1]:
             warn(text)
@@ -295,6 +308,9 @@ def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[in
         for stroke in strokes:
             key = (id(_unit(stroke.job, settings.catalogue)[0]), stroke.job.spm, stroke.job.runtime)
             groups.setdefault(key, []).append(stroke)
+        for members in groups.values():
+            _attempt(lambda: _PlacedOnce.place_together([s.card for s in members],
+                                                        _unit(members[0].job, settings.catalogue)[0]))
         for analysis in settings.analyses:
             for members in groups.values():
                 _together(analysis, members, settings)
