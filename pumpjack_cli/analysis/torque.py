@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..core.beam.balance import balance_criteria, recommend_counterbalance
+from ..core.beam.balance import balance_criteria, recommend_counterbalances
 from ..core.beam.card import Card
 from ..core.beam.counterbalance import (
     Counterbalance,
@@ -275,15 +275,14 @@ def _dense_figures(context: _TorqueContext, runs: list[list[CardRun]], criterion
     theta = dense[0].run.crank_angle
     dt = np.array([1.0 / t.run.crank_speed for t in dense])   # time share of each point of the uniform grid
     frequency = np.array([1.0 / t.run.period for t in dense])
-    recommendations = []
-    for t in dense:
-        parts = t.components
-        found = recommend_counterbalance(criterion, linkage, theta, t.run.load, balance, weights=1.0 / t.run.crank_speed,
-                                         test_angle=context.test_angle,
-                                         extra_torque=t.net - parts.rod_load - parts.structural - parts.counterbalance)
+    recommendations = recommend_counterbalances(
+        criterion, linkage, theta, np.array([t.run.load for t in dense]), balance, weights=dt,
+        test_angle=context.test_angle,
+        extra_torque=np.array([t.net - t.components.rod_load - t.components.structural - t.components.counterbalance
+                               for t in dense]))
+    for found in recommendations:
         if found.value is None:
             raise PumpjackError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms")
-        recommendations.append(found)
     net = np.array([t.net for t in dense])
     values = np.array([r.value for r in recommendations])
     recommended = net + (values[:, None] - balance.value) * balance.torque_per_value(linkage.motion(theta))

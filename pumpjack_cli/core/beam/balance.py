@@ -378,38 +378,58 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
     ----------
     [Rowlan2004]; [API11E]; [DurhamLockard1988].
     """
+    return recommend_counterbalances(criterion, linkage, crank_angle, np.asarray(rod_load, dtype=float)[None],
+                                     balance, extra_torque=np.asarray(extra_torque, dtype=float)[None],
+                                     weights=None if weights is None else np.asarray(weights, dtype=float)[None],
+                                     test_angle=test_angle)[0]
+
+
+def recommend_counterbalances(criterion: str, linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.ndarray,
+                              balance: CounterbalanceModel, *, extra_torque: np.ndarray | float = 0.0,
+                              weights: np.ndarray | None = None,
+                              test_angle: float = math.pi / 2) -> list[BalanceRecommendation]:
+    """:func:`recommend_counterbalance` of K cards on one crank-angle grid: ``rod_load``,
+    ``extra_torque`` and ``weights`` of shape (K, N); what depends on the grid alone (torque
+    factors, the counterbalance's torque per unit of its variable, the strokes) made once, each
+    card's criterion solved on its own."""
     if criterion not in BALANCE_CRITERIA:
         raise TorqueError(f"unknown balance criterion {criterion!r}; use one of {', '.join(BALANCE_CRITERIA)}")
     theta = np.asarray(crank_angle, dtype=float)
     m = linkage.motion(theta)
     sine = -balance.torque_per_value(m)
     fixed = balance.structural_torque(m) + balance.counterbalance_torque(m) + balance.value * sine
-    base = m.torque_factor * np.asarray(rod_load, dtype=float) + fixed + extra_torque
-    if not np.all(np.isfinite(base)):
+    bases = m.torque_factor * np.asarray(rod_load, dtype=float) + fixed + extra_torque
+    if not np.all(np.isfinite(bases)):
         raise TorqueError("balance: the rod load or the extra torque is not finite at every crank angle")
-    if weights is not None and (np.shape(weights) != theta.shape or not np.all(np.isfinite(weights))
-                                or np.any(np.asarray(weights) < 0) or not np.sum(weights) > 0):
+    if weights is not None and (np.shape(weights) != bases.shape or not np.all(np.isfinite(weights))
+                                or np.any(np.asarray(weights) < 0) or not np.all(np.sum(weights, axis=-1) > 0)):
         raise TorqueError("balance: the weights must be finite, >= 0, not all 0, one per crank angle")
     up = upstroke_mask(linkage, theta)
-    note = ""
+    at_test = linkage.motion(np.array([test_angle]))
     name = balance.variable.replace("_", " ")
-    if criterion == "equal-peaks":
-        moment = equal_peaks_moment(base, sine, up)
-        if moment is None:
-            u, d, _, _ = _peaks(_strokes(base, sine, up), 0.0)
-            return BalanceRecommendation(criterion, None, None, None, None, None, None,
-                                         f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke peak is "
-                                         f"{u:.6g} N·m, the downstroke peak {d:.6g} N·m)")
-    elif criterion == "min-rms":
-        moment = min_rms_moment(base, sine, weights)
-        if moment < 0:
-            note = f"the RMS torque is least at a {name} of {moment:.6g} {balance.symbol} < 0; 0 is the best counterbalance"
-            moment = 0.0
-    else:
-        moment = min_peak_moment(base, sine)
-    torque = _lines(base, sine, moment)
-    u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
-    w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
-    rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
-    cbe = counterbalance_effect(linkage.motion(np.array([test_angle])), balance.with_value(moment))
-    return BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note)
+    found = []
+    for k, base in enumerate(bases):
+        note = ""
+        if criterion == "equal-peaks":
+            moment = equal_peaks_moment(base, sine, up)
+            if moment is None:
+                u, d, _, _ = _peaks(_strokes(base, sine, up), 0.0)
+                found.append(BalanceRecommendation(criterion, None, None, None, None, None, None,
+                                                   f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke "
+                                                   f"peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)"))
+                continue
+        elif criterion == "min-rms":
+            moment = min_rms_moment(base, sine, None if weights is None else weights[k])
+            if moment < 0:
+                note = (f"the RMS torque is least at a {name} of {moment:.6g} {balance.symbol} < 0; 0 is the best "
+                        f"counterbalance")
+                moment = 0.0
+        else:
+            moment = min_peak_moment(base, sine)
+        torque = _lines(base, sine, moment)
+        u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
+        w = np.ones_like(torque) if weights is None else np.asarray(weights[k], dtype=float)
+        rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
+        cbe = counterbalance_effect(at_test, balance.with_value(moment))
+        found.append(BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note))
+    return found
