@@ -27,8 +27,6 @@ BALANCE_CRITERIA = ("equal-peaks", "min-rms", "min-peak")
 #: Bisection steps of the 1-D searches (each halves the bracket; 200 reach the float
 #: resolution from any bracket a double can hold).
 _BISECTIONS = 200
-#: Samples of the equal-peaks function over [0, M_hi] to find every sign change.
-_ROOT_SAMPLES = 257
 
 
 def balance_criteria() -> tuple[str, ...]:
@@ -62,33 +60,18 @@ def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, float, 
     return float(up[i]), float(down[j]), i, j
 
 
-def _asymptote(base: np.ndarray, sine: np.ndarray) -> tuple[float, float, float]:
-    """Slope -s*, intercept a* of max_i (a_i - M s_i) for large M, and the M beyond which it holds.
-
-    The dominant line has the smallest s (the largest a among ties); it lies above line i
-    for M > (a_i - a*)/(s_i - s*).
-    """
-    smallest = float(np.min(sine))
-    ties = sine == smallest
-    top = float(np.max(base[ties]))
-    others = ~ties
-    crossing = float(np.max((base[others] - top) / (sine[others] - smallest))) if np.any(others) else 0.0
-    return smallest, top, crossing
-
-
 def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> float | None:
     """M >= 0 at which the largest net torques of the up- and the downstroke are equal.
 
     With T_i(M) = a_i - M s_i (a = net torque without counterbalance, s = sin(theta -
     tau)), U(M) = max over the upstroke of T and D(M) = max over the downstroke are
     convex piecewise-linear; g = U - D is piecewise-linear but need not be monotonic.
-    Every sign change of g on [0, M_hi] (M_hi: beyond it both maxima follow their
-    asymptotic lines, so g is linear) is bracketed on a grid of samples and bisected to
-    the float resolution; the root is then made exact by intersecting the active lines
-    when they are the same at both ends of the final bracket. A root beyond M_hi is
-    the exact root of the linear tail. Of several roots the one with the smallest
-    largest |T| is returned; None when g has no root at M >= 0 (the criterion cannot
-    be met by any counterbalance).
+    Each maximum follows its upper envelope (:func:`_front`), whose lines take over one
+    from the next at known M; between the union of those M (and beyond the last) one line
+    of each stroke leads, g is linear, and its root there, if it lies in the piece, is the
+    exact intersection of the two lines. Every root at M >= 0 is found so; of several the
+    one with the smallest largest |T| is returned; None when g has no root at M >= 0 (the
+    criterion cannot be met by any counterbalance).
 
     Parameters
     ----------
@@ -121,25 +104,27 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     if up.shape != base.shape or not np.any(up) or np.all(up):
         raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
     strokes = _strokes(base, sine, up)
-    lines = (*_front(*strokes[:2]), *_front(*strokes[2:]))
-    base_up, sine_up, base_down, sine_down = lines
-    su, au, cu = _asymptote(base_up, sine_up)
-    sd, ad, cd = _asymptote(base_down, sine_down)
-    m_hi = max(cu, cd, 0.0)
-    grid = np.linspace(0.0, m_hi, _ROOT_SAMPLES) if m_hi > 0 else np.zeros(1)
-    values = (np.max(base_up[None, :] - grid[:, None] * sine_up[None, :], axis=1)
-              - np.max(base_down[None, :] - grid[:, None] * sine_down[None, :], axis=1))
-    roots = [float(m) for m, v in zip(grid, values) if v == 0.0]
-    for k in np.flatnonzero(values[:-1] * values[1:] < 0):
-        roots.append(_bisect_root(float(grid[k]), float(grid[k + 1]), lines))
-    slope = sd - su
-    if slope != 0.0:
-        tail = m_hi - float(values[-1]) / slope
-        if tail > m_hi:
-            roots.append(tail)
-    if not roots:
+    (a_up, s_up, at_up), (a_down, s_down, at_down) = _leading(*strokes[:2]), _leading(*strokes[2:])
+    cuts = np.unique(np.concatenate(([0.0], at_up[at_up > 0.0], at_down[at_down > 0.0])))
+    i, j = np.searchsorted(at_up, cuts, side="right"), np.searchsorted(at_down, cuts, side="right")
+    gap, turn = a_up[i] - a_down[j], s_up[i] - s_down[j]        # g = gap - M turn on each piece
+    with np.errstate(divide="ignore", invalid="ignore"):
+        root = np.where(turn != 0.0, gap / np.where(turn != 0.0, turn, 1.0), np.nan)
+    inside = (turn != 0.0) & (root >= cuts) & (root <= np.append(cuts[1:], np.inf))
+    same = (turn == 0.0) & (gap == 0.0)                          # the same line leads both strokes: g = 0
+    roots = np.unique(np.concatenate((root[inside], cuts[same])))
+    if not roots.size:
         return None
-    return min(roots, key=lambda m: float(np.max(np.abs(_lines(base, sine, m)))))
+    return float(min(roots, key=lambda m: float(np.max(np.abs(_lines(base, sine, m))))))
+
+
+def _leading(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The lines of the upper envelope (:func:`_front`) in the order they lead as M grows from 0,
+    and the M at which each after the first takes over from the one before (increasing)."""
+    a, s = _front(base, sine)
+    a, s = a[::-1], s[::-1]
+    at = np.maximum.accumulate((a[:-1] - a[1:]) / (s[:-1] - s[1:])) if a.size > 1 else np.zeros(0)
+    return a, s, at
 
 
 def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -168,35 +153,6 @@ def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         chain.append(int(np.flatnonzero(takeover == takeover.min())[0]))
     chosen = np.array(chain[::-1])
     return a[chosen], s[chosen]
-
-
-def _bisect_root(lo: float, hi: float, lines: tuple[np.ndarray, ...]) -> float:
-    """Root of the piecewise-linear g = U - D in [lo, hi] (g(lo) g(hi) < 0), for the up- and
-    downstroke lines (a, s, a, s): bisected until the same two lines are active at both ends
-    of the bracket (then g is linear on it: a line that leads at both ends of an interval
-    leads inside it), then their intersection, exact; at a kink that the float resolution
-    cannot split, the bracket's middle."""
-    base_up, sine_up, base_down, sine_down = lines
-    u, d, iu_lo, id_lo = _peaks(lines, lo)
-    g_lo = u - d
-    _, _, iu_hi, id_hi = _peaks(lines, hi)
-    for _ in range(_BISECTIONS):
-        if iu_lo == iu_hi and id_lo == id_hi:
-            break
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        u, d, iu_mid, id_mid = _peaks(lines, mid)
-        g_mid = u - d
-        if g_mid == 0.0:
-            return mid
-        if (g_mid > 0) == (g_lo > 0):
-            lo, g_lo, iu_lo, id_lo = mid, g_mid, iu_mid, id_mid
-        else:
-            hi, iu_hi, id_hi = mid, iu_mid, id_mid
-    if iu_lo == iu_hi and id_lo == id_hi and sine_up[iu_lo] != sine_down[id_lo]:
-        return float((base_up[iu_lo] - base_down[id_lo]) / (sine_up[iu_lo] - sine_down[id_lo]))
-    return 0.5 * (lo + hi)
 
 
 def min_rms_moment(base: np.ndarray, sine: np.ndarray, weights: np.ndarray | None = None) -> float:
