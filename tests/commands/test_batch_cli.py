@@ -307,11 +307,11 @@ def test_text_summary_values_are_stored_and_shown_as_text(run_cli, tmp_path, mon
     path = tmp_path / "r.sqlite"
     store = Store(path, write=True)
     for number, (label, fillage) in enumerate((("full pump", 97.5), ("100", 41.0))):
-        store.add_card([{"well": "W-1", "card": f"c{number}.csv", "card_sha256": f"{number}", "unit": "sk8-3.5-4000",
-                         "timestamp": f"2026-11-2{number}", "analysis": "downhole", "options_sha256": "o",
-                         "options": "{}",
-                         "status": "ok", "error": "", "warnings": "",
-                         "summary": {"pump_condition": label, "pump_fillage_percent": fillage}}])
+        store.add_cards([[{"well": "W-1", "card": f"c{number}.csv", "card_sha256": f"{number}", "unit": "sk8-3.5-4000",
+                           "timestamp": f"2026-11-2{number}", "analysis": "downhole", "options_sha256": "o",
+                           "options": "{}",
+                           "status": "ok", "error": "", "warnings": "",
+                           "summary": {"pump_condition": label, "pump_fillage_percent": fillage}}]])
     store.close()
     db = sqlite3.connect(path)
     declared = {row[1]: row[2] for row in db.execute("PRAGMA table_info(results)")}
