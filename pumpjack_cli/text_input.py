@@ -124,7 +124,8 @@ def _read_file(path: Path | str, limit: int, what: str, source: str, error: type
             raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")
         note_input(info, what)
         with open(fd, "rb", closefd=False) as file:
-            return file.read(limit + 1)
+            data = file.read(info.st_size + 1)  # not read(limit + 1): that allocates the limit, 10 MB for a card
+            return data if len(data) <= info.st_size else data + file.read(limit + 1 - len(data))
     except OSError as exc:
         raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
     finally:

@@ -6,8 +6,9 @@ options is skipped and never stored twice; ``options`` holds the JSON text whose
 is ``options_sha256`` (what made the result); ``status`` is ``ok`` or ``error`` with the
 one-line message in ``error``; the analysis' summary values (SI, the suffixed names of
 the single command's ``-f json`` summary) are columns of their own, added as new names
-appear: ``REAL`` for a number, ``TEXT`` for text (a label). A card's rows are written in
-one transaction, so a run killed at any moment leaves every card either complete or absent.
+appear: ``REAL`` for a number, ``TEXT`` for text (a label). The rows of a card, and of the
+several cards of a task, are written in one transaction, so a run killed at any moment
+leaves every card either complete or absent.
 
 A store is marked by its header (``application_id``) and carries its layout's version
 (``user_version``, :data:`VERSION`). It is opened read-only, and checked (a regular file,
@@ -264,32 +265,40 @@ class Store:
         """Whether the column ``name`` holds text (a fixed field or a text summary value)."""
         return self.types[name] == "TEXT"
 
-    def add_card(self, rows: list[dict]) -> list[str]:
-        """Store the rows of one card (fixed fields and summary values) in one transaction;
-        the status of each row stored (a row another run stored meanwhile is not stored again)."""
-        stored = []
+    def add_cards(self, cards: list[list[dict]]) -> list[list[str]]:
+        """Store the rows of several cards (each card a list of rows: fixed fields and summary
+        values) in one transaction; for each card, the status of each of its rows stored (a row
+        another run stored meanwhile is not stored again). A failure stores none of them: the
+        transaction is rolled back (SQLite's journal does the same for a process killed within it)."""
+        stored: list[list[str]] = []
+        known = dict(self.types)  # the columns as they were, should the transaction's be rolled back
         try:
             self.db.execute("BEGIN IMMEDIATE")
-            for row in rows:
-                summary = row["summary"]
-                self._ensure(summary)
-                names = list(FIXED) + list(summary)
-                cursor = self.db.execute(f"INSERT OR IGNORE INTO results ({', '.join(names)}) VALUES "
-                                         f"({', '.join('?' * len(names))})",
-                                         [row[name] for name in FIXED] + list(summary.values()))
-                stored += [row["status"]] * cursor.rowcount
+            for rows in cards:
+                statuses = []
+                for row in rows:
+                    summary = row["summary"]
+                    self._ensure(summary)
+                    names = list(FIXED) + list(summary)
+                    cursor = self.db.execute(f"INSERT OR IGNORE INTO results ({', '.join(names)}) VALUES "
+                                             f"({', '.join('?' * len(names))})",
+                                             [row[name] for name in FIXED] + list(summary.values()))
+                    statuses += [row["status"]] * cursor.rowcount
+                stored.append(statuses)
             self.db.execute("COMMIT")
         except sqlite3.Error as exc:
-            self._rollback()
+            self._rollback(known)
             raise PumpjackError(f"{self._fault(exc, 'cannot write')}; every card stored before is kept") from None
         except BaseException:
-            self._rollback()
+            self._rollback(known)
             raise
         return stored
 
-    def _rollback(self) -> None:
+    def _rollback(self, types: dict[str, str]) -> None:
+        """Undo the open transaction, the columns it added with it (``types``: those before it)."""
         if self.db.in_transaction:
             self.db.execute("ROLLBACK")
+        self.types = types
 
     def rows(self, well: str | None = None, analysis: str | None = None) -> tuple[list[str], list[tuple]]:
         """Column names (the fixed fields, then the summary columns) and rows (ordered by well,

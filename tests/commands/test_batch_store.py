@@ -43,8 +43,7 @@ def _store(path: Path, cards: int) -> Path:
     from pumpjack_cli.readers.store import Store
 
     store = Store(path, write=True)
-    for number in range(cards):
-        store.add_card([_row(number)])
+    store.add_cards([[_row(number)] for number in range(cards)])
     store.close()
     return path
 
@@ -212,6 +211,56 @@ def test_the_results_stored_are_counted_as_stored(run_cli, tmp_path, monkeypatch
     assert code == 0 and "1 analysed" in out and "stored 0 results ok, 0 errors (2 stored first by another run)" \
         in out, err
     assert len(stored_results(store)) == 2
+
+
+def _transactions(store) -> list[str]:
+    """The statements that begin a transaction on the store's connection, as they run."""
+    begun: list[str] = []
+    store.db.set_trace_callback(lambda statement: begun.append(statement) if statement.startswith("BEGIN") else None)
+    return begun
+
+
+def test_the_cards_of_a_task_are_stored_in_one_transaction_each_card_once(tmp_path):
+    """Many cards in one transaction; a card's row stored before (by another run) is not
+    stored again and is missing from that card's statuses, the other cards' rows are stored."""
+    from pumpjack_cli.readers.store import Store
+
+    store = Store(_store(tmp_path / "r.sqlite", 2), write=True)
+    begun = _transactions(store)
+    cards = [[_row(number), _row(number, analysis="downhole", status="error", error="no", summary={})]
+             for number in range(5)]
+    assert store.add_cards(cards) == [["error"], ["error"], ["ok", "error"], ["ok", "error"], ["ok", "error"]]
+    assert begun == ["BEGIN IMMEDIATE"]
+    assert store.add_cards(cards) == [[]] * 5
+    store.close()
+    stored = sqlite3.connect(tmp_path / "r.sqlite").execute(
+        "SELECT card, analysis, COUNT(*) FROM results GROUP BY card, analysis").fetchall()
+    assert stored == [(f"c{n}.csv", analysis, 1) for n in range(5) for analysis in ("downhole", "torque")]
+
+
+@pytest.mark.parametrize("broken, fragment", [
+    ({"warnings": ["a list"]}, "r.sqlite: cannot write: "),  # SQLite refuses the value (as it would a full disk)
+    ({"summary": {"Bad name": 1.0}}, "cannot store a result named 'Bad name'"),
+])
+def test_a_task_whose_transaction_fails_leaves_none_of_its_cards(tmp_path, broken, fragment):
+    """A row that cannot be stored in the task's last card: one line, and none of the task's
+    cards is stored, not even the column an earlier card of the task added; the store takes
+    the same cards afterwards."""
+    from pumpjack_cli.errors import PumpjackError
+    from pumpjack_cli.readers.store import Store
+
+    path = _store(tmp_path / "r.sqlite", 1)
+    store = Store(path, write=True)
+    cards = [[_row(1, summary={"new_value": 1.0})], [_row(2)], [_row(3, **broken)]]
+    with pytest.raises(PumpjackError) as refused:
+        store.add_cards(cards)
+    message = str(refused.value)
+    assert fragment in message and "\n" not in message
+    assert list(stored_results(path)) == [("c0.csv", "torque")]
+    assert "new_value" not in [row[1] for row in store.db.execute("PRAGMA table_info(results)")]
+    assert store.add_cards(cards[:2]) == [["ok"], ["ok"]]
+    store.close()
+    assert stored_results(path)[("c1.csv", "torque")]["new_value"] == 1.0
 
 
 def test_a_new_store_on_a_file_system_without_hard_links(run_cli, tmp_path, monkeypatch):

@@ -3,7 +3,9 @@
 Every executor runs the same :func:`.per_card.analyse_chunk` on chunks of (index, job
 fields) and hands each chunk's results to ``store_chunk`` as it finishes, in this
 process, which alone writes the store. :func:`executor` chooses one and holds what it
-needs (a Dask client is connected before the store is opened). A run that stops early
+needs (a Dask client is connected before the store is opened). The chunks are taken from
+their iterator as tasks finish, :data:`IN_FLIGHT` per worker at most, so that neither
+this process nor the workers hold a whole field's tasks. A run that stops early
 (an interrupt, a store that cannot be written, a lost worker) stops its workers too, and
 a local worker whose parent has died (``kill -9``) ends itself.
 """
@@ -28,6 +30,9 @@ DASK_LOST = 10.0
 #: Seconds to fetch a finished task's results before it counts as pending again (its
 #: worker lost between the task's end and the fetch).
 DASK_FETCH = 2.0
+#: Tasks in flight per worker (a local process or a cluster's thread): one running, one
+#: waiting to start as soon as it ends.
+IN_FLIGHT = 2
 #: What the end of a stopped run tells the user to do.
 RESUME = "the cards stored so far are kept; run the same command again to go on"
 
@@ -41,16 +46,17 @@ def default_workers() -> int:
 
 
 @contextmanager
-def executor(scheduler: str | None, workers: int, chunks: int) -> Iterator[Callable]:
-    """The function that runs the chunks: on the Dask cluster of ``scheduler`` (connected
-    now), on ``workers`` local processes, or in this process (one worker or one chunk)."""
+def executor(scheduler: str | None, workers: int, cards: int) -> Iterator[tuple[Callable, int]]:
+    """The function that runs the chunks, and the tasks it runs at once (the workers the
+    chunks are cut for): on the Dask cluster of ``scheduler`` (connected now; its threads),
+    on ``workers`` local processes, or in this process (one worker or one card)."""
     if scheduler is not None:
         with _dask_client(scheduler) as client:
-            yield partial(_on_dask, client, scheduler)
-    elif workers <= 1 or chunks <= 1:
-        yield in_process
+            yield partial(_on_dask, client, scheduler), max(1, _threads(client, scheduler))
+    elif workers <= 1 or cards <= 1:
+        yield in_process, 1
     else:
-        yield partial(on_pool, workers)
+        yield partial(on_pool, workers), workers
 
 
 def in_process(chunks, settings: dict, store_chunk) -> None:
@@ -78,8 +84,9 @@ def _leave_with(parent: int) -> None:
 
 
 def on_pool(workers: int, chunks, settings: dict, store_chunk) -> None:
-    """The chunks on a local pool of ``workers`` forked processes, at most two chunks per
-    worker in flight, stored as they finish; the workers are killed if the run stops early."""
+    """The chunks on a local pool of ``workers`` forked processes, at most :data:`IN_FLIGHT`
+    chunks per worker in flight, stored as they finish; the workers are killed if the run
+    stops early."""
     import multiprocessing
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
@@ -90,7 +97,8 @@ def on_pool(workers: int, chunks, settings: dict, store_chunk) -> None:
                                initargs=(os.getpid(),))
     try:
         queue = iter(chunks)
-        running = {pool.submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, 2 * workers)}
+        running = {pool.submit(analyse_chunk, chunk, settings)
+                   for chunk in itertools.islice(queue, IN_FLIGHT * workers)}
         while running:
             finished, running = wait(running, return_when=FIRST_COMPLETED)
             for future in finished:
@@ -131,17 +139,33 @@ def _dask_client(address: str):
         logging.disable(silenced)
 
 
+def _threads(client, address: str) -> int:
+    """The threads of the cluster's workers now."""
+    try:
+        return sum(client.nthreads().values())
+    except Exception as exc:  # noqa: BLE001 - a lost scheduler: not a card
+        raise PumpjackError(_cluster_failure(client, address, exc)) from None
+
+
 def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
-    """The chunks on the Dask cluster, stored as they finish. The run ends with one line
-    when a task fails, the scheduler is lost, or the cluster has had no worker for
-    :data:`DASK_LOST` seconds (a task whose results were lost with their worker waits for
-    another worker like any other)."""
+    """The chunks on the Dask cluster, :data:`IN_FLIGHT` per worker thread (as many as there
+    are now, at least one) submitted at a time and more as they finish, stored as they
+    finish. The run ends with one line when a task fails, the scheduler is lost, or the
+    cluster has had no worker for :data:`DASK_LOST` seconds (a task whose results were lost
+    with their worker waits for another worker like any other)."""
     from distributed import wait
 
-    pending = {client.submit(analyse_chunk, chunk, settings, pure=False) for chunk in chunks}
+    queue = iter(chunks)
+    pending: set = set()
+    threads = _threads(client, address)
     idle_since = None
-    while pending:
+    while True:
         try:
+            room = IN_FLIGHT * max(1, threads) - len(pending)
+            pending |= {client.submit(analyse_chunk, chunk, settings, pure=False)
+                        for chunk in itertools.islice(queue, max(0, room))}
+            if not pending:
+                return
             try:
                 finished, pending = wait(pending, timeout=1.0, return_when="FIRST_COMPLETED")
             except TimeoutError:
@@ -152,12 +176,12 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
                     results.append(future.result(timeout=DASK_FETCH))
                 except TimeoutError:  # the worker that held the result is gone: the task runs again
                     pending.add(future)
-            working = bool(results) or bool(client.nthreads())
+            threads = sum(client.nthreads().values())
         except Exception as exc:  # noqa: BLE001 - a lost scheduler or worker, a broken cluster: not a card
             raise PumpjackError(_cluster_failure(client, address, exc)) from None
         for chunk in results:
             store_chunk(chunk)
-        if working:
+        if results or threads:
             idle_since = None
         elif idle_since is None:
             idle_since = time.monotonic()

@@ -8,6 +8,7 @@ workers are stopped, and every card stored so far is complete (the same command 
 
 from __future__ import annotations
 
+import math
 import time
 from collections import Counter
 from contextlib import contextmanager
@@ -22,8 +23,13 @@ from .executors import RESUME, executor
 from .keys import card_digest, options_key, unit_digest, with_files
 from .per_card import ANALYSES, Options, card_fields
 
-#: Cards per task handed to a worker.
-CHUNK = 16
+#: The most cards in one task (one worker call): enough that the pickling and scheduling of a
+#: task, and the transaction that stores it, are shared by many cards, and the cards of one
+#: unit can be computed together.
+MAX_CHUNK = 256
+#: Tasks per worker a smaller field is cut into, so that every worker has work to the end
+#: and the progress moves.
+TASKS_PER_WORKER = 4
 
 
 @dataclass(frozen=True)
@@ -49,6 +55,18 @@ class _Pending:
     card_digest: str
     keys: dict[str, tuple[str, str]]
     wanted: tuple[str, ...]
+
+
+def chunk_size(cards: int, workers: int) -> int:
+    """Cards per task for ``cards`` cards on ``workers`` workers (processes, or a cluster's
+    threads): a share that cuts the field into :data:`TASKS_PER_WORKER` tasks per worker, from
+    1 to :data:`MAX_CHUNK` cards. The executors hold at most a few tasks per worker in flight,
+    so that the memory of a run is bounded whatever the size of the field.
+
+    >>> chunk_size(100_000, 2), chunk_size(1000, 2), chunk_size(40, 2), chunk_size(3, 8)
+    (256, 125, 5, 1)
+    """
+    return max(1, min(MAX_CHUNK, math.ceil(cards / (TASKS_PER_WORKER * max(1, workers)))))
 
 
 def _check(options: Options) -> None:
@@ -94,12 +112,13 @@ def _pending(jobs: list[Job], options: Options, done: set, catalogue: Catalogue 
     """The jobs (by index) with an analysis not in ``done`` (the store's keys; a card named
     twice in the manifest is analysed once); units named in the ``catalogue`` by its rows."""
     digests: dict[str, str] = {}
+    known: dict = {}
     pending = {}
     for index, job in enumerate(jobs):
         if job.unit not in digests:
             digests[job.unit] = unit_digest(job.unit, catalogue)
         card = card_digest(job.card)
-        keys = {a: options_key(job, a, options, digests[job.unit]) for a in options.analyses}
+        keys = {a: options_key(job, a, options, digests[job.unit], known) for a in options.analyses}
         wanted = tuple(a for a in options.analyses if (job.well, card, a, keys[a][1]) not in done)
         done.update((job.well, card, a, keys[a][1]) for a in wanted)
         if wanted:
@@ -135,8 +154,9 @@ def _signals_stop_the_run():
 def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, scheduler: str | None = None,
               progress=None) -> Tally:
     """Analyse every card of the manifest not yet in the store, on a local process pool
-    (``workers``) or a Dask cluster (``scheduler`` address), storing each card's results
-    in one transaction as it arrives. ``progress(done, total)`` is called as cards finish."""
+    (``workers``) or a Dask cluster (``scheduler`` address), storing the results of each
+    task's cards in one transaction as it arrives. ``progress(done, total)`` is called as
+    tasks finish, with the cards done and to do."""
     start = time.perf_counter()
     _check(options)
     jobs = read_manifest(manifest)
@@ -157,29 +177,34 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
 
 def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, options: Options, workers: int,
              scheduler: str | None, progress, stored: Counter) -> None:
-    """The pending cards through the executor into the store (opened for writing once the
-    executor is ready); ``stored`` counts the results stored by status, and those another
-    run stored first as ``another``."""
+    """The pending cards through the executor, in tasks of :func:`chunk_size` cards, into the
+    store (opened for writing once the executor is ready), the cards of each finished task in
+    one transaction; ``stored`` counts the results stored by status, and those another run
+    stored first as ``another``."""
     indices = list(pending)
-    chunks = [[(i, asdict(jobs[i])) for i in indices[k:k + CHUNK]] for k in range(0, len(indices), CHUNK)]
     finished = 0
 
     def store_chunk(results) -> None:
         nonlocal finished
+        cards = []
         for index, outcomes in results:
             job, key = jobs[index], pending[index]
-            rows = [{"well": job.well, **card_fields(job, key.card_digest, o), "unit": job.unit, "analysis": o["analysis"],
-                     "options": key.keys[o["analysis"]][0], "options_sha256": key.keys[o["analysis"]][1],
-                     "status": o["status"], "error": o["error"], "warnings": o["warnings"], "summary": o["summary"]}
-                    for o in outcomes if o["analysis"] in key.wanted]
-            statuses = store.add_card(rows)
-            stored.update(statuses)
-            stored["another"] += len(rows) - len(statuses)
-            finished += 1
-            if progress is not None:
-                progress(finished, len(pending))
+            cards.append([{"well": job.well, **card_fields(job, key.card_digest, o), "unit": job.unit,
+                           "analysis": o["analysis"], "options": key.keys[o["analysis"]][0],
+                           "options_sha256": key.keys[o["analysis"]][1], "status": o["status"], "error": o["error"],
+                           "warnings": o["warnings"], "summary": o["summary"]}
+                          for o in outcomes if o["analysis"] in key.wanted])
+        statuses = store.add_cards(cards)
+        for rows, done in zip(cards, statuses):
+            stored.update(done)
+            stored["another"] += len(rows) - len(done)
+        finished += len(cards)
+        if progress is not None:
+            progress(finished, len(pending))
 
-    with executor(scheduler, workers, len(chunks)) as execute:
+    with executor(scheduler, workers, len(indices)) as (execute, slots):
+        size = chunk_size(len(indices), slots)
+        chunks = ([(i, asdict(jobs[i])) for i in indices[k:k + size]] for k in range(0, len(indices), size))
         store = Store(store_path, write=True)
         try:
             execute(chunks, asdict(options), store_chunk)

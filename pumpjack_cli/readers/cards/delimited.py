@@ -14,8 +14,9 @@ positions' own range only.
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 from datetime import datetime
-from itertools import repeat
+from itertools import compress, repeat
 
 import numpy as np
 
@@ -259,8 +260,8 @@ def read(file: CardFile) -> RawCard:
     text, source = file.text, file.source
     if text.count("\n") >= MAX_LINES:
         raise CardError(f"{source}: more than {MAX_LINES} lines; a card file has at most {MAX_LINES}")
-    lines = text.split("\n")
-    kept = [i for i, line in enumerate(lines) if is_content(line)]
+    lines = file.lines
+    kept = _content(lines, text)
     entries = []
     for i in kept:
         entry = _preamble_entry(lines[i])
@@ -290,10 +291,10 @@ def read(file: CardFile) -> RawCard:
     numbers = np.array(kept[1:], dtype=int) + 1
     if len(rows) > MAX_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card has at most {MAX_POINTS}")
-    widths = np.fromiter(map(str.count, rows, repeat(delimiter)), dtype=int, count=len(rows)) + 1
-    wrong = widths != len(cells)
-    if wrong.any():
-        i = int(np.argmax(wrong))
+    counts = list(map(str.count, rows, repeat(delimiter)))
+    if counts.count(len(cells) - 1) != len(rows):
+        widths = np.array(counts, dtype=int) + 1
+        i = int(np.argmax(widths != len(cells)))
         hint = ("; a decimal comma or thousands separator in a comma-separated file?"
                 if delimiter == "," and widths[i] > len(cells) else "")
         raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {len(cells)}{hint}")
@@ -312,6 +313,17 @@ def read(file: CardFile) -> RawCard:
         raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
     _check_stroke(metadata, stated_lines, values, source)
     return assemble(source, values, numbers, metadata=metadata, metadata_lines=stated_lines)
+
+
+def _content(lines: list[str], text: str) -> list[int]:
+    """The indices of the lines that are neither blank nor comments (:func:`.raw.is_content`),
+    looked at one by one only up to the last line holding a '#' (the comments of a card file
+    come before its rows)."""
+    kept = list(compress(range(len(lines)), map(str.strip, lines)))
+    if "#" not in text:
+        return kept
+    cut = bisect_right(kept, text.count("\n", 0, text.rfind("#")))
+    return [i for i in kept[:cut] if is_content(lines[i])] + kept[cut:]
 
 
 def _decimal_commas(columns: dict[str, list[str]], used: dict[str, tuple[int, str, float]], numbers: np.ndarray,

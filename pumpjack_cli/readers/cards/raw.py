@@ -8,7 +8,6 @@ about the well, and what the reader noticed. Putting it on a unit's crank-angle 
 
 from __future__ import annotations
 
-import io
 import math
 import re
 from collections.abc import Callable, Iterable, Iterator
@@ -150,9 +149,14 @@ class CardFile:
             return False
         return True
 
+    @cached_property
+    def lines(self) -> list[str]:
+        """The lines of the text, without their ends (none for binary content)."""
+        return self.text.split("\n") if self.is_text else []
+
     def content_lines(self) -> Iterator[str]:
         """The lines that are neither blank nor ``#`` comments, lazily (none for binary content)."""
-        return (line for line in io.StringIO(self.text if self.is_text else "") if is_content(line))
+        return (line for line in self.lines if is_content(line))
 
 
 def is_content(line: str) -> bool:
@@ -301,6 +305,11 @@ def _time_order(time: np.ndarray, lines: np.ndarray, column: Column, source: str
     return False
 
 
+def _close(a: float, b: float) -> bool:
+    """``numpy.allclose(a, b)`` of two finite numbers (its tolerances), without its array machinery."""
+    return abs(a - b) <= 1e-8 + 1e-5 * abs(b)
+
+
 def assemble(source: str, columns: dict[str, Column], lines: np.ndarray, **stated) -> RawCard:
     """The raw card of one layout's columns (SI) and the line of every row: rows in reverse time
     order are turned back (one warning), a position card closed by repeating its first sample
@@ -312,7 +321,7 @@ def assemble(source: str, columns: dict[str, Column], lines: np.ndarray, **state
     time = columns["time"].values if "time" in columns else None
     position = columns["position"].values
     backwards = time is not None and _time_order(time, lines, columns["time"], source)
-    if np.allclose(position[0], position[-1]) and np.allclose(load[0], load[-1]):
+    if _close(position[0], position[-1]) and _close(load[0], load[-1]):
         position, load, lines = position[:-1], load[:-1], lines[:-1]  # a closed card repeats its first point
         time = None if time is None else time[:-1]
     if backwards:

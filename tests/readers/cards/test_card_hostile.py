@@ -17,6 +17,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
@@ -258,6 +260,43 @@ def test_stdin_is_read_with_a_bounded_size(monkeypatch):
         read("-", SK8, stream=stream)
     check(error, "<stdin>", "more than 1,000 bytes")
     assert stream.tell() == 1001
+
+
+@pytest.mark.skipif(not os.path.isfile("/proc/version"), reason="no /proc/version")
+def test_a_file_that_states_no_size_is_read_whole_and_bounded():
+    """A file is read by the size it states (reading by the limit would allocate the limit, 10 MB
+    for each card); one that states none (size 0, as the files of /proc) or grew meanwhile is
+    read on, still cut at the limit."""
+    from pumpjack_cli.text_input import read_bytes
+
+    content = Path("/proc/version").read_bytes()
+    assert os.stat("/proc/version").st_size == 0 and len(content) > 20
+    assert read_bytes("/proc/version", 10_000, "card file", CardError) == content
+    with pytest.raises(CardError) as error:
+        read_bytes("/proc/version", 20, "card file", CardError)
+    check(error, "/proc/version", "more than 20 bytes")
+
+
+@given(st.lists(st.sampled_from(["", " ", "\t", "#", "# note", "#,position,load", " #;1", "#x\t", "1,2", "a#b,3",
+                                 "\t1\t2"]), max_size=12))
+def test_the_lines_read_are_those_neither_blank_nor_comments(lines):
+    """The delimited reader looks at each line only up to the last '#': the lines it keeps are
+    those the rule of raw.is_content keeps, wherever the comments and blanks are."""
+    from pumpjack_cli.readers.cards.raw import is_content
+
+    text = "\n".join(lines)
+    assert delimited._content(text.split("\n"), text) == [i for i, line in enumerate(text.split("\n"))
+                                                           if is_content(line)]
+
+
+@given(st.floats(-1e7, 1e7), st.one_of(st.floats(-1e7, 1e7), st.just(0.0)), st.floats(-1e-4, 1e-4))
+def test_a_closed_card_is_told_as_numpy_allclose_tells_it(a, b, step):
+    """A card whose last sample repeats its first within numpy.allclose's tolerances loses the
+    repeat: the reader's scalar test agrees with numpy's on finite numbers, near and far."""
+    from pumpjack_cli.readers.cards.raw import _close
+
+    for x, y in ((a, b), (a, a + step), (a, a * (1 + step))):
+        assert _close(x, y) == bool(np.allclose(x, y)), (x, y)
 
 
 def test_lines_limit_is_checked_before_splitting():
