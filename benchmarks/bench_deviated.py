@@ -5,7 +5,7 @@ Run: .venv/bin/python benchmarks/bench_deviated.py
 The well is the sample of samples/make_deviated.py: SK8-3,5-4000's rods (1530 m, three tapers) in the
 J-shaped hole (vertical to 500 m, 3 deg/30 m to 45 deg, hold), friction coefficient 0.2. The diagnostic
 runs on the sample card (200 points) with the damping given (one march) and with the damping from the
-energy balance (Brent's method, about a dozen marches). The thread pools are limited to one thread
+energy balance (Brent's method, about seven marches). The thread pools are limited to one thread
 before numpy is imported.
 """
 

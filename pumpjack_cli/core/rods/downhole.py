@@ -284,6 +284,31 @@ def decreasing_roots(excess, largest: float, count: int,
     return root, ends[0], ends[1]
 
 
+def _brent_root(excess, largest: float, count: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`decreasing_roots` of one function by Brent's method (``scipy.optimize.brentq``,
+    [Brent1973]): for one card's transfer of its own (a deviated well's march, a march per
+    evaluation), where Brent's interpolation saves a few evaluations that the cards of a
+    vertical well, solved together, do not need to share."""
+    from scipy.optimize import brentq
+
+    if count != 1:
+        raise DownholeError("a transfer of its own (solve) takes one card")
+    rows, known = np.zeros(1, dtype=int), {}
+
+    def one(nu: float) -> float:
+        if nu not in known:
+            known[nu] = float(excess(np.array([nu]), rows)[0])
+        return known[nu]
+
+    undamped, damped = one(0.0), one(float(largest))
+    root = np.nan
+    if undamped == 0.0 or damped == 0.0:
+        root = 0.0 if undamped == 0.0 else float(largest)
+    elif undamped > 0.0 > damped:
+        root = float(brentq(one, 0.0, float(largest), xtol=DAMPING_TOLERANCE))
+    return np.array([root]), np.array([undamped]), np.array([damped])
+
+
 def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
                fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
     """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)."""
@@ -412,7 +437,7 @@ def dampings_from_fluid_load(string: RodString, period, position, load, fluid_lo
         out[live] = card_work(p[live], f[live]) - fluid[rows[live]] * net
         return np.where(np.isnan(out), 0.0, out)    # a card with a problem stops at once
 
-    roots, undamped, damped = decreasing_roots(excess, largest, count)
+    roots, undamped, damped = (decreasing_roots if solve is None else _brent_root)(excess, largest, count)
     for k in range(count):
         if not problems[k] and undamped[k] < 0.0:
             problems[k] = (f"the rods without damping deliver {-undamped[k] / 1e3:.4g} kJ per cycle less than the "
