@@ -1,9 +1,14 @@
-"""The options of a batch run and the analyses of one card, as the single commands run them.
+"""The options of a batch run and the analyses of its cards, each card as the single commands
+analyse it.
 
 The units are loaded once per worker process and the exact torque's responses once per
-unit and grid (:func:`..torque._exact_basis`), so the per-card work is the card's own.
-:func:`analyse_chunk` is what every executor runs (a local process or a Dask worker): jobs
-in, plain data out.
+unit and grid (:func:`..torque._exact_basis`). :func:`analyse_chunk` is what every executor
+runs (a local process or a Dask worker): jobs in, plain data out. A task's cards are grouped
+by unit (and speed option and runtime), and each group is placed on the crank, torqued and
+balanced, and taken down the rods to its pump cards and their conditions as one array
+computation (:func:`..card_runs.place_all`, :func:`..torque.torques`,
+:func:`..downhole.downholes`), which the single commands run with one card: a stored
+summary is the single command's, and one card's problem stays that card's error.
 
 A file of several strokes (a continuous recording, a hex file of several blocks) is read
 once and each stroke analysed as a card of its own: its outcomes carry the stroke's number,
