@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..core.beam.card import card_from_angles, card_load
+from ..core.beam.card import card_from_angles, card_load, periodic_interp, periodic_table
 from ..core.cards import PlacedCard, place_cards
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
@@ -184,8 +184,7 @@ def stated(placed: PlacedCard, raw: RawCard) -> Reading:
 
 def _periodic(theta: np.ndarray, angle: np.ndarray, values: np.ndarray) -> np.ndarray:
     """Per-sample ``values`` at crank angles ``angle`` [rad], interpolated periodically at ``theta``."""
-    order = np.argsort(angle)
-    return np.interp(theta, angle[order], values[order], period=2.0 * np.pi)
+    return periodic_interp(theta, periodic_table(angle, values))
 
 
 def median_card(raw: RawCard, mechanism: Mechanism) -> Reading:
@@ -330,9 +329,11 @@ def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --crank-motion card needs a card with time stamps")
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
-    elapsed = _elapsed(fine, _periodic(fine, reading.crank_angle, reading.crank_speed))
-    return [CardRun(theta, np.interp(theta, fine, elapsed), _periodic(theta, reading.crank_angle, reading.crank_speed),
-                    _periodic(theta, reading.crank_angle, reading.crank_acceleration), card_load(reading.card, theta),
+    speed = periodic_table(reading.crank_angle, reading.crank_speed)
+    acceleration = periodic_table(reading.crank_angle, reading.crank_acceleration)
+    elapsed = _elapsed(fine, periodic_interp(fine, speed))
+    return [CardRun(theta, np.interp(theta, fine, elapsed), periodic_interp(theta, speed),
+                    periodic_interp(theta, acceleration), card_load(reading.card, theta),
                     float(elapsed[-1]), "card") for theta in thetas]
 
 

@@ -31,7 +31,7 @@ the order listed tells a card stored in reverse.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import cast
 
 import numpy as np
@@ -71,6 +71,27 @@ class Card:
 
     crank_angle: np.ndarray
     load: np.ndarray
+
+    @cached_property
+    def _table(self) -> tuple[np.ndarray, np.ndarray]:
+        return periodic_table(self.crank_angle, self.load)
+
+
+def periodic_table(crank_angle: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The (angles, values) table of a curve over one revolution for :func:`periodic_interp`: the
+    angles taken modulo 2 pi and sorted, one sample carried over each end (what
+    ``numpy.interp(..., period=2 pi)`` builds at every call, made once)."""
+    angle = np.asarray(crank_angle, dtype=float) % (2.0 * np.pi)
+    order = np.argsort(angle)
+    angle, values = angle[order], np.asarray(values, dtype=float)[order]
+    return (np.concatenate((angle[-1:] - 2.0 * np.pi, angle, angle[:1] + 2.0 * np.pi)),
+            np.concatenate((values[-1:], values, values[:1])))
+
+
+def periodic_interp(crank_angle: np.ndarray, table: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """A curve of :func:`periodic_table` at any crank angles (taken modulo 2 pi), by linear
+    interpolation: ``numpy.interp(crank_angle, ..., period=2 pi)`` of the curve, to the bit."""
+    return np.interp(np.asarray(crank_angle, dtype=float) % (2.0 * np.pi), *table)
 
 
 @dataclass(frozen=True)
@@ -119,8 +140,7 @@ def card_load(card: Card, crank_angle: np.ndarray) -> np.ndarray:
     >>> card_load(card, np.array([np.pi / 2, 3 * np.pi / 2, 2 * np.pi])).tolist()
     [2.0, 2.0, 1.0]
     """
-    return np.interp(np.asarray(crank_angle, dtype=float) % (2.0 * np.pi), card.crank_angle, card.load,
-                     period=2.0 * np.pi)
+    return periodic_interp(crank_angle, card._table)
 
 
 def upstroke_points(position: np.ndarray) -> np.ndarray:
