@@ -11,7 +11,6 @@ its ``kind`` says otherwise.
 from __future__ import annotations
 
 import math
-from functools import cached_property
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from pydantic import Field, ValidationInfo, field_validator, model_validator
@@ -148,11 +147,15 @@ class Well(Section):
 
     def rods(self) -> RodString:
         """The core's tapered rod string of ``rod_string``, top section first ([API11L], [API11B] tables),
-        built once per well (the section is immutable, the string frozen)."""
-        return self._rods
+        built once per well: kept with the hash of the fields it was built from (a copy with other
+        fields, ``model_copy(update=...)``, builds its own)."""
+        key = hash(self)
+        kept = self.__dict__.get("_built_rods")
+        if kept is None or kept[0] != key:
+            kept = self.__dict__["_built_rods"] = (key, self._build_rods())
+        return kept[1]
 
-    @cached_property
-    def _rods(self) -> RodString:
+    def _build_rods(self) -> RodString:
         from ..core.constants import STANDARD_GRAVITY
         from ..core.rods.tables import RodSection as CoreSection
         from ..core.rods.tables import rod_string
