@@ -34,7 +34,7 @@ from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
 from ..core.rods.plausibility import check_card_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import CardError, PumpjackError, warn
+from ..errors import CardError, PumpjackError, collected_warnings, warn
 from ..quantities import parse_quantity
 from ..readers.cards import RawCard, check_options, read_card
 
@@ -362,6 +362,23 @@ def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: f
                             card_load(reading.card, theta), state.summary.period, crank_motion))
         start += theta.size
     return reading, runs
+
+
+def each_card(cards: list, compute) -> tuple[dict[int, object], list, list[list[str]]]:
+    """``compute(card)`` of each card with its warnings noted apart: the values by the cards'
+    indices, each card's error (None where there is none) and each card's warnings (the K-card
+    analyses start so: one card's problem stays that card's)."""
+    values: dict[int, object] = {}
+    errors: list = [None] * len(cards)
+    said: list[list[str]] = [[] for _ in cards]
+    for k, card in enumerate(cards):
+        with collected_warnings() as noted:
+            try:
+                values[k] = compute(card)
+            except PumpjackError as exc:
+                errors[k] = exc
+        said[k] += noted
+    return values, errors, said
 
 
 @dataclass(frozen=True)

@@ -40,7 +40,7 @@ from ..core.rods.production import (energy_per_day, fluid_above_pump, inferred_p
 from ..core.rods.pump import discharge_pressure
 from ..errors import DownholeError, PumpjackError, collected_warnings, warn
 from ..results import Column, Curve, Panel, Result, Scalar
-from .card_runs import CardSource, time_card
+from .card_runs import CardSource, each_card, time_card
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
                        surveyed, with_survey)
 from .inputs import dead_position_marks
@@ -130,16 +130,7 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     unit.require_well()
     string = unit.rods()
     linkage = unit.geometry.mechanism()
-    said: list[list[str]] = [[] for _ in cards]
-    found: list = [None] * len(cards)
-    surfaces = {}
-    for k, card in enumerate(cards):
-        with collected_warnings() as noted:
-            try:
-                surfaces[k] = time_card(unit, linkage, card, spm, samples, crank_motion)
-            except PumpjackError as exc:
-                found[k] = exc
-        said[k] += noted
+    surfaces, found, said = each_card(cards, lambda card: time_card(unit, linkage, card, spm, samples, crank_motion))
     if deviated_path(unit) is None:
         pumps = _vertical_pumps(unit, string, cards, surfaces, damping, method, said)
     else:

@@ -47,7 +47,7 @@ from ..core.sampling import Extreme, extremes_of, peaks_of
 from ..errors import PumpjackError, collected_warnings, warn
 from ..quantities import DAY, HORSEPOWER, INCH
 from ..results import Column, Curve, Panel, Result, Scalar
-from .card_runs import CardRun, CardSource, card_runs
+from .card_runs import CardRun, CardSource, card_runs, each_card
 from .inputs import crank_columns, dead_position_marks, extreme_scalars
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
@@ -125,16 +125,7 @@ def torques(unit: UnitConfig, cards: list, spm: float | None, steps: int | None,
     energy = dataclasses.replace(energy or Energy(), drive_efficiency=drive_efficiency)
     grids = (SUMMARY_STEPS,) if steps is None else (steps, SUMMARY_STEPS)
     mechanism = unit.geometry.mechanism()
-    said: list[list[str]] = [[] for _ in cards]
-    found: list = [None] * len(cards)
-    readings = {}
-    for k, card in enumerate(cards):
-        with collected_warnings() as noted:
-            try:
-                readings[k] = card_runs(unit, mechanism, card, spm, grids, crank_motion)
-            except PumpjackError as exc:
-                found[k] = exc
-        said[k] += noted
+    readings, found, said = each_card(cards, lambda card: card_runs(unit, mechanism, card, spm, grids, crank_motion))
     keys = sorted(readings)
     analysed = card_torques(unit, [readings[k][0].card for k in keys], [readings[k][1] for k in keys], method,
                             criterion, energy) if keys else []
