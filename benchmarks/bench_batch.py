@@ -121,29 +121,23 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
     jobs = read_manifest(manifest)[:cards]
     settings = asdict(per_card.Options())
     size = chunk_size(len(jobs), 1)
-    parse_time = [0.0]
-    diagnose_time = [0.0]
+    spent = {"parsing": 0.0, "diagnosis": 0.0}
     real_strokes, real_diagnose = per_card._strokes, diagnosis.diagnose
 
-    def timed_strokes(*args):
-        start = time.process_time()
-        try:
-            return real_strokes(*args)
-        finally:
-            parse_time[0] += time.process_time() - start
-
-    def timed_diagnose(*args):
-        start = time.process_time()
-        try:
-            return real_diagnose(*args)
-        finally:
-            diagnose_time[0] += time.process_time() - start
+    def timed(function, what: str):
+        def run(*args):
+            start = time.process_time()
+            try:
+                return function(*args)
+            finally:
+                spent[what] += time.process_time() - start
+        return run
 
     per_card.analyse_chunk([(0, asdict(jobs[0]))], settings)        # imports and unit loading out of the timing
-    per_card._strokes = timed_strokes
+    per_card._strokes = timed(real_strokes, "parsing")
     from pumpjack_cli.analysis import downhole as downhole_module
 
-    downhole_module.diagnose = timed_diagnose
+    downhole_module.diagnose = timed(real_diagnose, "diagnosis")
     results = []
     start = time.process_time()
     try:
@@ -165,8 +159,8 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
     finally:
         stored.close()
     storing = time.process_time() - start
-    return {"parsing": parse_time[0], "physics": analysis - parse_time[0] - diagnose_time[0],
-            "diagnosis": diagnose_time[0], "storing": storing, "analysis": analysis + storing}
+    return {**spent, "physics": analysis - spent["parsing"] - spent["diagnosis"], "storing": storing,
+            "analysis": analysis + storing}
 
 
 def singles(folder: Path, count: int) -> float:
