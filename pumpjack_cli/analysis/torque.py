@@ -30,7 +30,7 @@ from ..core.beam.counterbalance import (
     upstroke_mask,
     upstroke_test_angle,
 )
-from ..core.beam.loading import card_work, cyclic_load_factor, driving_work, stroke_peaks
+from ..core.beam.loading import card_works, cyclic_load_factor, driving_work, stroke_peaks
 from ..core.beam.torque import (
     ExactTorqueBasis,
     TorqueComponents,
@@ -193,7 +193,7 @@ def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]],
     check_options(method, criterion)
     context = _TorqueContext.of(unit, method)
     try:
-        figures = _dense_figures(context, runs, criterion)
+        figures = _dense_figures(context, cards, runs, criterion)
     except PumpjackError as exc:
         if len(cards) == 1:
             return [(exc, ())]
@@ -242,9 +242,11 @@ class _TorqueContext:
 
 @dataclass(frozen=True)
 class _DenseFigures:
-    """The K cards' torques on the summary grid and what is read of them, arrays (K, ...)."""
+    """The K cards' works per cycle and torques on the summary grid and what is read of them,
+    arrays (K, ...)."""
 
     theta: np.ndarray
+    works: np.ndarray
     dense: list
     dt: np.ndarray
     frequency: np.ndarray
@@ -257,7 +259,8 @@ class _DenseFigures:
     extremes: tuple | None
 
 
-def _dense_figures(context: _TorqueContext, runs: list[list[CardRun]], criterion: str) -> _DenseFigures:
+def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[CardRun]],
+                   criterion: str) -> _DenseFigures:
     """The torques of K cards on the summary grid, their balances and duties (raises for a card
     whose figures cannot be made)."""
     linkage, balance = context.linkage, context.balance
@@ -288,8 +291,8 @@ def _dense_figures(context: _TorqueContext, runs: list[list[CardRun]], criterion
         extremes = extremes_of(theta, current)
     if dense[0].exact is not None:
         peaks["exact"] = peaks_of(theta, np.array([t.exact - t.api for t in dense]))
-    return _DenseFigures(theta, dense, dt, frequency, recommendations, recommended, current, duty, peaks, strokes,
-                         extremes)
+    return _DenseFigures(theta, card_works(linkage, cards), dense, dt, frequency, recommendations, recommended,
+                         current, duty, peaks, strokes, extremes)
 
 
 def _duty_of(net: np.ndarray, dt: np.ndarray, frequency: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -310,7 +313,7 @@ def _card_result(context: _TorqueContext, card: Card, runs: list[CardRun], figur
         """The net torque with the balancing variable at ``value`` (its torque is affine in it)."""
         return t.net + (value - balance.value) * balance.torque_per_value(linkage.motion(t.run.crank_angle))
 
-    work = card_work(linkage, card)
+    work = float(figures.works[k])
     summary = [Scalar(name, value) for name, value in balance.summary()]
     if context.balance_known:
         top, bottom = figures.extremes

@@ -57,11 +57,21 @@ def card_work(linkage: Mechanism, card: Card) -> float:
     ----------
     [API11E] (polished-rod load and position); work of a force along its path.
     """
-    s = linkage.rod_position(card.crank_angle)
-    w = np.asarray(card.load, dtype=float)
-    if not (np.all(np.isfinite(s)) and np.all(np.isfinite(w))):
-        raise TorqueError("card work: the card is not finite at every point")
-    return float(np.sum(0.5 * (w + np.roll(w, -1)) * (np.roll(s, -1) - s)))
+    return float(card_works(linkage, [card])[0])
+
+
+def card_works(linkage: Mechanism, cards: list[Card]) -> np.ndarray:
+    """:func:`card_work` of K cards of one unit, any lengths, their positions from one
+    evaluation of the kinematics [J]."""
+    angles = np.concatenate([np.asarray(card.crank_angle, dtype=float) for card in cards])
+    positions = np.split(linkage.rod_position(angles), np.cumsum([len(card.crank_angle) for card in cards])[:-1])
+    found = np.empty(len(cards))
+    for k, (s, card) in enumerate(zip(positions, cards)):
+        w = np.asarray(card.load, dtype=float)
+        if not (np.all(np.isfinite(s)) and np.all(np.isfinite(w))):
+            raise TorqueError("card work: the card is not finite at every point")
+        found[k] = np.sum(0.5 * (w + np.roll(w, -1)) * (np.roll(s, -1) - s))
+    return found
 
 
 def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None):
