@@ -438,3 +438,30 @@ def test_a_subnormal_rating_is_an_error_row_naming_the_field(run_cli, tmp_path):
                    "1", "--analyses", "torque")[0] == 0
     error = stored(store)[(card, "torque")]["error"]
     assert "rating.gearbox_torque: 1e-320 is too small" in error and "not finite" not in error
+
+
+def test_the_options_keys_a_run_makes_once_are_those_made_for_each_row(tmp_path):
+    """A run makes each distinct options key once (the cards of a well share theirs, and a
+    rod-string or survey file is hashed once): the key a row reuses is the one made for it
+    afresh, whichever field of the row differs, and rows that differ in a field of the key get
+    different keys."""
+    from dataclasses import replace
+
+    from pumpjack_cli.analysis.batch.keys import options_key
+    from pumpjack_cli.analysis.batch.per_card import Options
+    from pumpjack_cli.readers.manifest import Job
+
+    for name, text in (("rods-a.toml", "a"), ("rods-b.toml", "b"), ("survey-a.csv", "a"), ("survey-b.csv", "b")):
+        (tmp_path / name).write_text(text)
+    base = Job("W-1", "sk8-3.5-4000", "c.csv", 2)
+    jobs = [base, replace(base, well="W-2", card="d.csv", line=3, timestamp="2026-11-25"), replace(base, spm=7.5),
+            replace(base, counterbalance_moment=9e4), replace(base, rod_string=str(tmp_path / "rods-a.toml")),
+            replace(base, rod_string=str(tmp_path / "rods-b.toml")), replace(base, survey=str(tmp_path / "survey-a.csv")),
+            replace(base, survey=str(tmp_path / "survey-b.csv")), replace(base, runtime=0.75)]
+    options, known = Options(), {}
+    made = [options_key(job, analysis, options, unit, known) for unit in ("u1", "u2") for job in jobs * 2
+            for analysis in options.analyses]
+    assert made == [options_key(job, analysis, options, unit) for unit in ("u1", "u2") for job in jobs * 2
+                    for analysis in options.analyses]
+    assert len(known) == 2 * 2 * (len(jobs) - 1)  # the first two jobs differ in no field of the key
+    assert len(set(made)) == len(known) - 2  # a runtime is downhole's alone: torque's key is the first job's

@@ -21,10 +21,11 @@ from .per_card import Options
 
 
 def _sha256(path: str | Path) -> str:
-    """SHA-256 of a file's bytes (hex), read in blocks of 1 MiB."""
+    """SHA-256 of a file's bytes (hex), read unbuffered in blocks of 64 KiB (a card in one; a
+    larger block is allocated whole at each read, which costs more than hashing a card)."""
     digest = hashlib.sha256()
-    with open(path, "rb") as handle:
-        for block in iter(lambda: handle.read(1 << 20), b""):
+    with open(path, "rb", buffering=0) as handle:
+        while block := handle.read(1 << 16):
             digest.update(block)
     return digest.hexdigest()
 
@@ -72,10 +73,16 @@ def _survey_of(path: Path) -> str | None:
         return f"unreadable:{file}"
 
 
-def options_key(job: Job, analysis: str, options: Options, unit_digest: str) -> tuple[str, str]:
+def options_key(job: Job, analysis: str, options: Options, unit_digest: str,
+                known: dict | None = None) -> tuple[str, str]:
     """What makes a result, as JSON text (stored beside the result, so that a view can say
     which options differ), and its SHA-256 (the key): the analysis and its options, the unit
-    (its file's content) and the row's overrides (a rod-string file by its content)."""
+    (its file's content) and the row's overrides (a rod-string file by its content).
+    ``known`` keeps the keys made so far with the same ``options`` (a run's), by what they are
+    made of: the cards of a well share one key, made (and its files read) once."""
+    made_of = (analysis, unit_digest, job.spm, job.counterbalance_moment, job.rod_string, job.survey, job.runtime)
+    if known is not None and made_of in known:
+        return known[made_of]
     rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
     made = {"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
             "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
@@ -84,7 +91,10 @@ def options_key(job: Job, analysis: str, options: Options, unit_digest: str) -> 
     if job.runtime is not None and analysis == "downhole":  # a row without one keeps the hash stores had before
         made["runtime"] = job.runtime
     text = json.dumps(made, sort_keys=True)
-    return text, hashlib.sha256(text.encode()).hexdigest()
+    key = text, hashlib.sha256(text.encode()).hexdigest()
+    if known is not None:
+        known[made_of] = key
+    return key
 
 
 def with_files(done: set[tuple[str, str, str, str]]) -> set[tuple[str, str, str, str]]:

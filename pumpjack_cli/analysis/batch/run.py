@@ -112,12 +112,13 @@ def _pending(jobs: list[Job], options: Options, done: set, catalogue: Catalogue 
     """The jobs (by index) with an analysis not in ``done`` (the store's keys; a card named
     twice in the manifest is analysed once); units named in the ``catalogue`` by its rows."""
     digests: dict[str, str] = {}
+    known: dict = {}
     pending = {}
     for index, job in enumerate(jobs):
         if job.unit not in digests:
             digests[job.unit] = unit_digest(job.unit, catalogue)
         card = card_digest(job.card)
-        keys = {a: options_key(job, a, options, digests[job.unit]) for a in options.analyses}
+        keys = {a: options_key(job, a, options, digests[job.unit], known) for a in options.analyses}
         wanted = tuple(a for a in options.analyses if (job.well, card, a, keys[a][1]) not in done)
         done.update((job.well, card, a, keys[a][1]) for a in wanted)
         if wanted:
