@@ -273,6 +273,17 @@ def dynamics_forces() -> list[str]:
     return [row.rsplit("|", 2)[0] + f"| {n(x[key])} N |" for row, key in zip(body, keys)]
 
 
+def batch_tasks() -> list[str]:
+    """The tasks a field is cut into (``analysis.batch.run.chunk_size``: a rule, not a command's output)."""
+    import math
+
+    from pumpjack_cli.analysis.batch.run import chunk_size
+
+    fields = ((40, 2), (1000, 2), (10_000, 2), (100_000, 2), (100_000, 64))
+    return [f"| {n(cards)} cards | {workers} | {chunk_size(cards, workers)} | "
+            f"{math.ceil(cards / chunk_size(cards, workers))} |" for cards, workers in fields]
+
+
 #: Declared tables: (document, header line) -> the rows' builder.
 TABLES: dict[tuple[str, str], Callable[[], list[str]]] = {
     ("reactions.md", "| `--counterweight-radius` | max M_z [N·m] | min M_z [N·m] |"): reactions_radius,
@@ -292,6 +303,7 @@ TABLES: dict[tuple[str, str], Callable[[], list[str]]] = {
     ("dynamics.md", "| rtol | start ω1 [1/s] | ω1 at 90° [1/s] | energy per cycle [J] | periodicity error |"):
         dynamics_rtol,
     ("dynamics.md", "| force | formula | source | SK8 well |"): dynamics_forces,
+    ("batch.md", "| field | workers | cards per task | tasks |"): batch_tasks,
 }
 
 #: Tables whose numbers are not results of a command, by (document, header line): why.
@@ -301,6 +313,8 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("batch.md", "| column | a card | stroke 7 of a recording |"): "the key format of a stored row",
     ("batch.md", "| column | meaning |"): "store format",
     ("batch.md", "| what | result |"): "timings (docs/performance.md)",
+    ("batch.md", "| cards | wall time | cards/s | peak RSS, all processes (sum) | batch process | each worker | "
+                 "Dask's profiler |"): "timings and memory measured (benchmarks/bench_dask.py)",
     ("batch.md", "| what happens | what the run does |"): "behaviour under faults (tests/commands/test_batch_faults.py)",
     ("cards.md", "| format | module | an example | recognised by content | file name endings |"): "formats",
     ("cards.md", "| option | meaning |"): "options",
