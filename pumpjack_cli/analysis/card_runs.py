@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -68,6 +69,15 @@ class Reading(PlacedCard):
 
     stated_speed: float | None = None
     stated_line: int | None = None
+
+    @cached_property
+    def motion_tables(self) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray], np.ndarray]:
+        """The fitted crank speed's and acceleration's periodic tables and the time from crank angle
+        0 on the fine grid of :func:`_card_motion` (made once for every grid a card is run on)."""
+        speed = periodic_table(self.crank_angle, self.crank_speed)
+        fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
+        return speed, periodic_table(self.crank_angle, self.crank_acceleration), _elapsed(fine, periodic_interp(fine,
+                                                                                                               speed))
 
 
 def parse_stroke(text: str | None) -> int | str:
@@ -329,9 +339,7 @@ def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --crank-motion card needs a card with time stamps")
     fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
-    speed = periodic_table(reading.crank_angle, reading.crank_speed)
-    acceleration = periodic_table(reading.crank_angle, reading.crank_acceleration)
-    elapsed = _elapsed(fine, periodic_interp(fine, speed))
+    speed, acceleration, elapsed = reading.motion_tables
     return [CardRun(theta, np.interp(theta, fine, elapsed), periodic_interp(theta, speed),
                     periodic_interp(theta, acceleration), card_load(reading.card, theta),
                     float(elapsed[-1]), "card") for theta in thetas]

@@ -12,6 +12,7 @@ intersection of the active lines.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -127,6 +128,12 @@ def _leading(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return a, s, at
 
 
+@functools.lru_cache(maxsize=16)
+def _order(sine: bytes) -> np.ndarray:
+    """The stable sort order of the sines (the same for every card of a unit on one grid: made once)."""
+    return np.argsort(np.frombuffer(sine), kind="stable")
+
+
 def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The lines a_i - M s_i that are the largest for some M >= 0: their upper envelope, in the
     order of s.
@@ -139,7 +146,7 @@ def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     others leading at a single point), until the line of smallest s (the convex-hull trick).
     The maximum over the envelope is the maximum over all lines; a line that would lead only
     by rounding may be left out, which moves the maximum by a rounding error."""
-    order = np.argsort(sine, kind="stable")
+    order = _order(np.ascontiguousarray(sine, dtype=float).tobytes())
     a, s = base[order], sine[order]
     before = np.concatenate(([-np.inf], np.maximum.accumulate(a)[:-1]))
     keep = a > before
