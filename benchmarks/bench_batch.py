@@ -14,9 +14,9 @@ one well per 20 cards of a unit and a time stamp per card, and
 2. analyses the first ``--split`` cards in this process, one core, as a worker does
    (:func:`pumpjack_cli.analysis.batch.per_card.analyse_chunk` in chunks of the run's size),
    and splits that time into parsing (reading the card files), physics (placing the cards,
-   torque and balance, the damping search and the pump cards), diagnosis (the pump's
-   condition of the same pump cards, timed again on its own and taken out of the physics) and
-   storing (the rows written to a store in the run's transactions);
+   torque and balance, the damping search and the pump cards, the summaries), diagnosis (the
+   pump's condition of the pump cards) and storing (the rows written to a store in the run's
+   transactions), the physics again by phase (:data:`PHASES`);
 3. runs ``pumpjack torque`` and ``pumpjack downhole`` on ``--singles`` cards as a shell loop
    would, for comparison.
 
@@ -109,35 +109,58 @@ def end_to_end(manifest: Path, store: Path, workers: int) -> tuple[float, float,
     return wall, peak[0], out.strip().splitlines()[-1] if out.strip() else ""
 
 
+#: The functions a worker's analysis is timed by (module path, attribute, phase), inner first:
+#: the time of a phase is its function's less that of the phases it calls.
+PHASES = (
+    ("pumpjack_cli.analysis.batch.per_card", "_strokes", "parsing"),
+    ("pumpjack_cli.analysis.batch.per_card", "_PlacedOnce.place_together", "placing"),
+    ("pumpjack_cli.analysis.downhole", "diagnose", "diagnosis"),
+    ("pumpjack_cli.analysis.torque", "torques", "torque"),
+    ("pumpjack_cli.analysis.downhole", "downholes", "downhole"),
+    ("pumpjack_cli.analysis.batch.per_card", "_checked", "summaries"),
+)
+
+
 def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
-    """CPU seconds of parsing, physics, diagnosis and storing for the first ``cards`` cards in
+    """CPU seconds of each phase (:data:`PHASES`) and of storing for the first ``cards`` cards in
     this process, chunk by chunk as a worker analyses them."""
+    import importlib
+
     from pumpjack_cli.analysis.batch import per_card
     from pumpjack_cli.analysis.batch.run import chunk_size
-    from pumpjack_cli.core.rods import diagnosis
     from pumpjack_cli.readers.manifest import read_manifest
     from pumpjack_cli.readers.store import Store
 
     jobs = read_manifest(manifest)[:cards]
     settings = asdict(per_card.Options())
     size = chunk_size(len(jobs), 1)
-    spent = {"parsing": 0.0, "diagnosis": 0.0}
-    real_strokes, real_diagnose = per_card._strokes, diagnosis.diagnose
+    spent = dict.fromkeys([phase for _, _, phase in PHASES], 0.0)
+    inner = [0.0]      # the time of the phases running inside the one being timed
 
-    def timed(function, what: str):
-        def run(*args):
+    def timed(function, phase: str):
+        def run(*args, **kwargs):
+            outer, inner[0] = inner[0], 0.0
             start = time.process_time()
             try:
-                return function(*args)
+                return function(*args, **kwargs)
             finally:
-                spent[what] += time.process_time() - start
+                took = time.process_time() - start
+                spent[phase] += took - inner[0]
+                inner[0] = outer + took
         return run
 
     per_card.analyse_chunk([(0, asdict(jobs[0]))], settings)        # imports and unit loading out of the timing
-    per_card._strokes = timed(real_strokes, "parsing")
-    from pumpjack_cli.analysis import downhole as downhole_module
-
-    downhole_module.diagnose = timed(real_diagnose, "diagnosis")
+    patched = []
+    for module, name, phase in PHASES:
+        owner = importlib.import_module(module)
+        *path, attribute = name.split(".")
+        for part in path:
+            owner = getattr(owner, part)
+        real = owner.__dict__[attribute]
+        patched.append((owner, attribute, real))
+        function = real.__func__ if isinstance(real, staticmethod) else real
+        setattr(owner, attribute, staticmethod(timed(function, phase)) if isinstance(real, staticmethod)
+                else timed(function, phase))
     results = []
     start = time.process_time()
     try:
@@ -145,7 +168,8 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
             results.append(per_card.analyse_chunk([(i, asdict(jobs[i])) for i in range(k, min(k + size, len(jobs)))],
                                                   settings))
     finally:
-        per_card._strokes, downhole_module.diagnose = real_strokes, real_diagnose
+        for owner, attribute, real in patched:
+            setattr(owner, attribute, real)
     analysis = time.process_time() - start
     stored = Store(store, write=True)
     start = time.process_time()
@@ -159,8 +183,7 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
     finally:
         stored.close()
     storing = time.process_time() - start
-    return {**spent, "physics": analysis - spent["parsing"] - spent["diagnosis"], "storing": storing,
-            "analysis": analysis + storing}
+    return {**spent, "other": analysis - sum(spent.values()), "storing": storing, "analysis": analysis + storing}
 
 
 def singles(folder: Path, count: int) -> float:
@@ -193,9 +216,12 @@ def main() -> None:
         cards = min(args.split, args.cards)
         found = split(manifest, cards, folder / "split.sqlite")
         per = {name: 1e3 * value / cards for name, value in found.items()}
+        physics = per["placing"] + per["torque"] + per["downhole"] + per["summaries"] + per["other"]
         print(f"in this process, {cards} cards, ms of CPU per card: parsing {per['parsing']:.2f}, physics "
-              f"{per['physics']:.2f}, diagnosis {per['diagnosis']:.2f}, storing {per['storing']:.2f}; "
+              f"{physics:.2f}, diagnosis {per['diagnosis']:.2f}, storing {per['storing']:.2f}; "
               f"total {per['analysis']:.2f}")
+        print(f"  physics: placing {per['placing']:.2f}, torque {per['torque']:.2f}, downhole without the "
+              f"diagnosis {per['downhole']:.2f}, summaries {per['summaries']:.2f}, the rest {per['other']:.2f}")
         ratio = wall * args.workers / (found["analysis"] / cards * args.cards)
         print(f"batch CPU (wall x workers) over in-process analysis of as many cards: {ratio:.2f}")
         if args.singles:

@@ -389,6 +389,17 @@ def each_card(cards: list, compute) -> tuple[dict[int, object], list, list[list[
     return values, errors, said
 
 
+def alone(found: list[tuple[object, tuple[str, ...]]]):
+    """The one card of a K-card analysis ([(value or error, warnings)]): its warnings given
+    (:func:`~pumpjack_cli.errors.warn`), its error raised, else its value."""
+    ((value, said),) = found
+    for text in said:
+        warn(text)
+    if isinstance(value, PumpjackError):
+        raise value
+    return value
+
+
 @dataclass(frozen=True)
 class TimeCard:
     """A card on a uniform time grid over one period: t_k = k T / N [s], the crank angle

@@ -40,7 +40,7 @@ from ..core.rods.production import (energy_per_day, fluid_above_pump, inferred_p
 from ..core.rods.pump import discharge_pressure
 from ..errors import DownholeError, PumpjackError, collected_warnings, warn
 from ..results import Column, Curve, Panel, Result, Scalar
-from .card_runs import CardSource, each_card, time_card
+from .card_runs import CardSource, alone, each_card, time_card
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
                        surveyed, with_survey)
 from .inputs import dead_position_marks
@@ -103,13 +103,8 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
              deviation: Deviation = Deviation(), production: Production = Production()) -> Result:
     """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
     of one surface card: :func:`downholes` of one card."""
-    (found, said), = downholes(unit, [card], spm, crank_motion, method, damping, samples, service_factor, deviation,
-                               production)
-    for text in said:
-        warn(text)
-    if isinstance(found, PumpjackError):
-        raise found
-    return found
+    return alone(downholes(unit, [card], spm, crank_motion, method, damping, samples, service_factor, deviation,
+                           production))
 
 
 def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: str, method: str | None,
@@ -131,10 +126,12 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     string = unit.rods()
     linkage = unit.geometry.mechanism()
     surfaces, found, said = each_card(cards, lambda card: time_card(unit, linkage, card, spm, samples, crank_motion))
-    if deviated_path(unit) is None:
+    path = deviated_path(unit)
+    if path is None:
         pumps = _vertical_pumps(unit, string, cards, surfaces, damping, method, said)
     else:
-        pumps = {k: _deviated_pump(unit, string, cards[k], surfaces[k][1], damping, method, said[k]) for k in surfaces}
+        pumps = {k: _deviated_pump(unit, string, path, cards[k], surfaces[k][1], damping, method, said[k])
+                 for k in surfaces}
     for k, pump in pumps.items():
         if isinstance(pump, PumpjackError):
             found[k] = pump
@@ -147,7 +144,7 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
                               np.array([p.pump_load for p in pump_cards]), reference_fluid_load(unit))
         for i, k in enumerate(good):
             with collected_warnings() as noted:
-                found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, method,
+                found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, path, method,
                                             PumpCardSummary(*(value[i] for value in vars(figures).values())),
                                             conditions.card(i), service_factor, deviation, production)
             said[k] += noted
@@ -185,14 +182,15 @@ def _vertical_pump(unit: UnitConfig, string, card, surface, nu: float, method: s
         return PumpjackError(f"{card.name} on the rods of unit {unit.name}: {exc}")
 
 
-def _deviated_pump(unit: UnitConfig, string, card, surface, damping: float | None, method: str, said: list[str]):
+def _deviated_pump(unit: UnitConfig, string, path, card, surface, damping: float | None, method: str,
+                   said: list[str]):
     """One card's pump card in a deviated well, marched with the drag ([Gibbs1963] damping from
     the energy balance with the drag taking its share), or the error."""
     well = unit.require_well()
     mu = friction_coefficient(unit)
 
     def transfer(nu: float, mu: float = mu):
-        return deviated_pump_card(string, well.path(), surface.period, surface.position, surface.load,
+        return deviated_pump_card(string, path, surface.period, surface.position, surface.load,
                                   fluid_density=well.fluid_density, damping_factor=nu, friction_coefficient=mu)
 
     try:
@@ -205,14 +203,15 @@ def _deviated_pump(unit: UnitConfig, string, card, surface, damping: float | Non
     return nu, deviated.card, deviated
 
 
-def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, method: str, figures: PumpCardSummary,
-                     condition, service_factor: float, deviation: Deviation, production: Production) -> Result:
+def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, path, method: str,
+                     figures: PumpCardSummary, condition, service_factor: float, deviation: Deviation,
+                     production: Production) -> Result:
     """The result of one card from its pump card (``found``: nu, the pump card, the deviated
-    march or None), its figures and its condition."""
+    march or None), the well's deviated path (None in a vertical well), its figures and its
+    condition."""
     well = unit.require_well()
     reading, surface = reading_surface
     nu, pump, deviated = found
-    path = deviated_path(unit)
     loads = taper_loads(string, pump.joint_load)
     surface_work = float(card_work(surface.position, surface.load))
     pump_work = float(card_work(pump.pump_position, pump.pump_load))
@@ -306,13 +305,12 @@ PRODUCTION_NAMES = ("pump_displacement", "pump_fillage", "net_pump_stroke", "dis
 def reference_fluid_load(unit: UnitConfig) -> float:
     """F_o of the pump card's reference lines [N] ([Rowlan2008]): from the well's fluid level or intake
     pressure, else with the fluid level at the pump (the intake at the casing-head pressure)."""
-    well = unit.require_well()
-    area = math.pi * well.plunger_diameter**2 / 4.0
-    found = unit.pump_pressures()
+    found = fluid_load_of(unit)
     if found is not None:
-        return (found[0] - found[1]) * area
+        return found
+    well = unit.require_well()
     return (discharge_pressure(well.pump_vertical_depth(), well.fluid_density, well.tubing_head_pressure)
-            - well.casing_head_pressure) * area
+            - well.casing_head_pressure) * math.pi * well.plunger_diameter**2 / 4.0
 
 
 def condition_summary(unit: UnitConfig, surface, found, string) -> list[Scalar]:

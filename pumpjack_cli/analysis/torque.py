@@ -47,7 +47,7 @@ from ..core.sampling import Extreme, extremes_of, peaks_of
 from ..errors import PumpjackError, collected_warnings, warn
 from ..quantities import DAY, HORSEPOWER, INCH
 from ..results import Column, Curve, Panel, Result, Scalar
-from .card_runs import CardRun, CardSource, card_runs, each_card
+from .card_runs import CardRun, CardSource, alone, card_runs, each_card
 from .inputs import crank_columns, dead_position_marks, extreme_scalars
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
@@ -104,12 +104,7 @@ class Energy:
 def torque(unit: UnitConfig, card: CardSource, spm: float | None, steps: int | None, crank_motion: str, method: str,
            criterion: str, drive_efficiency: float = 1.0, energy: Energy | None = None) -> Result:
     """The torque analysis of one card (see the module docstring): :func:`torques` of one card."""
-    ((found, said),) = torques(unit, [card], spm, steps, crank_motion, method, criterion, drive_efficiency, energy)
-    for text in said:
-        warn(text)
-    if isinstance(found, PumpjackError):
-        raise found
-    return found
+    return alone(torques(unit, [card], spm, steps, crank_motion, method, criterion, drive_efficiency, energy))
 
 
 def torques(unit: UnitConfig, cards: list, spm: float | None, steps: int | None, crank_motion: str, method: str,
@@ -171,12 +166,7 @@ class CardTorque:
 def card_torque(unit: UnitConfig, card: Card, runs: list[CardRun], method: str, criterion: str,
                 energy: Energy = Energy()) -> CardTorque:
     """Net torque, balance and loading of one card: :func:`card_torques` of one card."""
-    ((found, said),) = card_torques(unit, [card], [runs], method, criterion, energy)
-    for text in said:
-        warn(text)
-    if isinstance(found, PumpjackError):
-        raise found
-    return found
+    return alone(card_torques(unit, [card], [runs], method, criterion, energy))
 
 
 def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]], method: str, criterion: str,

@@ -318,13 +318,9 @@ def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load
 
 
 def _many(period, position, load, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """K cards (K, N) and their periods (K,) from one card or many."""
-    position, load = as_cards(position, load, what)
-    position, load = np.atleast_2d(position), np.atleast_2d(load)
-    periods = np.broadcast_to(np.asarray(period, dtype=float), position.shape[:1]).copy()
-    if not (np.all(np.isfinite(periods)) and np.all(periods > 0)):
-        raise DownholeError(f"card period must be finite and positive, got {period}")
-    return periods, position, load
+    """K cards (K, N) and their periods (K,) from one card or many (checked by :func:`_card_arrays`)."""
+    position, load = (np.atleast_2d(a) for a in _card_arrays(period, position, load, what))
+    return np.broadcast_to(np.asarray(period, dtype=float), position.shape[:1]).copy(), position, load
 
 
 def damping_for_pump_work(string: RodString, period: float, position, load, pump_work: float, *,
