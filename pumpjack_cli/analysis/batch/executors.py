@@ -107,11 +107,11 @@ def on_pool(workers: int, chunks, settings: dict, store_chunk) -> None:
     except BaseException as exc:
         for process in set(multiprocessing.active_children()) - others:
             process.kill()
+        pool.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
         if isinstance(exc, BrokenProcessPool):
             raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
         raise
-    finally:
-        pool.shutdown(wait=True, cancel_futures=True)
+    pool.shutdown(wait=True)
 
 
 @contextmanager
