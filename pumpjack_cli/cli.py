@@ -9,6 +9,7 @@ models) is imported only when that subcommand runs; ``pumpjack --help``,
 
 from __future__ import annotations
 
+import functools
 import importlib
 import sys
 import warnings
@@ -58,21 +59,29 @@ class LazyCommands(TyperGroup):
     def get_command(self, ctx, name: str):
         if name not in COMMANDS:
             return None
-        found = command_function(name)
-        if isinstance(found, typer.Typer):
-            group = typer.main.get_group(found)
-            group.name = name
-            return group
-        single = typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
-                             context_settings=CONTEXT)
-        single.command(name)(found)
-        command = typer.main.get_command(single)
-        command.name = name
-        return command
+        return _built_command(name)
 
     def format_commands(self, ctx, formatter) -> None:
         with formatter.section("Commands"):
             formatter.write_dl([(name, summary) for name, (_, _, summary) in COMMANDS.items()])
+
+
+@functools.cache
+def _built_command(name: str):
+    """The click command of a subcommand, built from its function once per process (typer reads
+    every option's annotation to build it; a library or test calling :func:`main` repeatedly
+    reuses it: a command holds no state of a run)."""
+    found = command_function(name)
+    if isinstance(found, typer.Typer):
+        group = typer.main.get_group(found)
+        group.name = name
+        return group
+    single = typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None,
+                         context_settings=CONTEXT)
+    single.command(name)(found)
+    command = typer.main.get_command(single)
+    command.name = name
+    return command
 
 
 def _version(value: bool) -> None:
@@ -101,6 +110,12 @@ def _root(
     """Engineering calculator for beam pumping units (pumpjacks)."""
 
 
+@functools.cache
+def _built_group():
+    """The click group of :data:`app`, built once per process (as :func:`_built_command`)."""
+    return typer.main.get_command(app)
+
+
 def _fail(message: str) -> int:
     sys.stderr.write(f"pumpjack: error: {message}\n")
     return 2
@@ -117,7 +132,7 @@ def main(argv: list[str] | None = None) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
-    command = typer.main.get_command(app)
+    command = _built_group()
     forget_inputs()
     with collected_warnings() as noted:
         try:

@@ -2,7 +2,7 @@
 
 It runs what `pumpjack torque` and `pumpjack downhole` run on the same card with the same
 options (the page's numbers are their ``-f json`` summaries, keyed by command) and lays
-them out as a :class:`~pumpjack_cli.results.Page` in the order a production engineer
+them out as a :class:`~pumpjack_cli.page.Page` in the order a production engineer
 reads: the unit and the well, the cards, the gearbox torque against the ratings, the
 balance recommendation, the rod loading (modified Goodman, [API11BR]), the pump condition
 and its evidence, production and fluid level, the warnings, and the provenance (tool
@@ -23,7 +23,8 @@ from typing import TYPE_CHECKING
 from .. import __version__
 from ..errors import PumpjackError, collected_warnings, warn
 from ..quantities import KWH
-from ..results import Figure, Note, Page, Quantities, Result, Section, SideBySide, Table, Values
+from ..page import Figure, Note, Page, Quantities, Section, SideBySide, Table, Values
+from ..results import Result
 from .card_runs import CardSource
 
 if TYPE_CHECKING:

@@ -183,7 +183,7 @@ def field_page(path: Path):
     production (any stored ``*production*`` or ``*fluid_level*`` figure too); each well links to
     its section below, the trend of its cards (:func:`trend_result`)."""
     from ..names import written_names
-    from ..results import Note, Page, Section, Table
+    from ..page import Note, Page, Section, Table
 
     columns, rows = _stored_rows(path, None, None, "si")
     names = [stored for stored, _, _, _ in columns]

@@ -13,12 +13,13 @@ import dataclasses
 import math
 from typing import TYPE_CHECKING, Annotated, Any, Literal, Union
 
-from pydantic import Discriminator, Field, Tag, ValidationInfo, field_validator, model_validator
+from pydantic import Field, PlainValidator, ValidationInfo, field_validator, model_validator
 
 from ..core.designations import parse_designation
 from ..errors import ConfigError, DesignationError
 from ..quantities import parse_quantity
 from .drive import Drive
+from .letters import BeamLetters
 from .masses import Masses
 from .unit_classes import UNIT_CLASSES, unit_class
 from .well import Well
@@ -38,14 +39,24 @@ from .quantities import (Angle, Area, AreaMoment, Force, Length, Pressure, Rotat
                          Torque, at_least)
 
 
-def _class_tag(value: Any) -> str | None:
-    """The ``[geometry] class`` of a raw table (set by :meth:`UnitConfig._unit_class`) or a model."""
-    return value.get("class") if isinstance(value, dict) else getattr(value, "unit_class", None)
+def _kind_geometry(value: Any, info: ValidationInfo) -> BeamLetters:
+    """A ``[geometry]`` validated by the schema of its kind alone (``class``, set by
+    :meth:`UnitConfig._unit_class`, names it in :data:`~.unit_classes.UNIT_CLASSES`): the
+    other kinds' schemas are not built, which keeps a command's start-up short. Errors keep
+    their place in the file (``geometry.pitman``)."""
+    if isinstance(value, BeamLetters):
+        return value
+    if not isinstance(value, dict):
+        raise ValueError(f"expected a table of keys, got {value!r}")
+    return UNIT_CLASSES[value["class"]].model().model_validate(value, context=info.context)
 
 
-#: The ``[geometry]`` of any kind of unit: the schema its ``class`` names in the registry.
-Geometry = Annotated[Union[tuple(Annotated[kind.model(), Tag(name)] for name, kind in UNIT_CLASSES.items())],
-                     Discriminator(_class_tag)]
+#: The ``[geometry]`` of any kind of unit: the schema its ``class`` names in the registry (typed
+#: ``Any`` for pydantic, so that ``model_dump`` writes out the kind's own schema whole).
+if TYPE_CHECKING:
+    Geometry = BeamLetters
+else:
+    Geometry = Annotated[Any, PlainValidator(_kind_geometry)]
 
 
 class PitmanSectionConfig(Section):

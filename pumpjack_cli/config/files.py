@@ -15,16 +15,17 @@ import importlib
 import math
 import typing
 from dataclasses import dataclass
-from functools import partial
 from pathlib import Path
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 from ..errors import ConfigError
 from ..quantities import SI_LABELS, parse_quantity
-from ..readers.catalogue import Catalogue, CatalogueRow, read_catalogue
 from ..readers.unit_files import bundled_units, read_table, unit_source
 from .geometry_names import slider_crank_of
 from .unit_classes import UNIT_CLASSES, raw_stroke
+
+if TYPE_CHECKING:  # an operator's catalogue is read only when a command is given one
+    from ..readers.catalogue import Catalogue
 
 
 @dataclass(frozen=True)
@@ -64,32 +65,32 @@ def _inside(annotation: Any) -> list[Any]:
     return found
 
 
-def _is_tag(loc: tuple, index: int) -> bool:
-    """Whether ``loc[index]`` is the kind of unit pydantic inserts after ``geometry`` (the union's tag)."""
-    return index > 0 and loc[index - 1] == "geometry" and loc[index] in UNIT_CLASSES
-
-
 def field_path(loc: tuple) -> str:
     """A pydantic error location as a unit file's key path (``geometry.pitman``)."""
-    return ".".join(str(part) for i, part in enumerate(loc) if not _is_tag(loc, i))
+    return ".".join(str(part) for part in loc)
+
+
+def _geometry_with(key: str) -> Any:
+    """The ``[geometry]`` schema of the first kind of unit that has ``key`` (a key means one
+    quantity in every kind that has it), None if none has."""
+    return next((kind.model() for kind in UNIT_CLASSES.values() if key in kind.model().model_fields), None)
 
 
 def _dimension(model: Any, loc: tuple) -> str | None:
     """The physical dimension of the field at ``loc`` of a unit-file model, if it is a quantity."""
+    from .quantities import dimension_of
+
     names = [part for part in loc if isinstance(part, str)]
     for depth, name in enumerate(names):
-        if _is_tag(tuple(names), depth):
-            model = UNIT_CLASSES[name].model()
-            continue
         field = getattr(model, "model_fields", {}).get(name)
         if field is None:
             return None
         parts = [*field.metadata, *_inside(field.annotation)]
         if depth == len(names) - 1:
-            return next((part.func.keywords["dimension"] for part in parts
-                         if isinstance(getattr(part, "func", None), partial) and "dimension" in part.func.keywords),
-                        None)
+            return next(filter(None, map(dimension_of, parts)), None)
         model = next((part for part in parts if isinstance(part, type) and hasattr(part, "model_fields")), None)
+        if name == "geometry" and names[depth + 1] not in getattr(model, "model_fields", {}):
+            model = _geometry_with(names[depth + 1])  # a beam unit's: its kind's own schema validates it
     return None
 
 
@@ -172,13 +173,15 @@ def load_any_unit(spec: str, catalogue: Catalogue | Path | None = None):
     """A unit of any kind by bundled name (case-insensitive, ``sk8-3.5-4000``), by file path, or
     as ``DESIGNATION/HOLE`` of an operator's ``catalogue`` (read, or its file; docs/catalogue.md)."""
     if isinstance(catalogue, Path):
+        from ..readers.catalogue import read_catalogue
+
         catalogue = read_catalogue(catalogue)
     found = unit_source(spec, catalogue)
-    if isinstance(found, CatalogueRow):
-        from .catalogue import catalogue_unit
+    if isinstance(found, Path):
+        return read_unit_file(found)
+    from .catalogue import catalogue_unit
 
-        return catalogue_unit(found)
-    return read_unit_file(found)
+    return catalogue_unit(found)
 
 
 def load_unit(spec: str, catalogue: Catalogue | Path | None = None):

@@ -7,8 +7,7 @@ Every physical field of a unit file is one of these annotated types; the convers
 
 from __future__ import annotations
 
-from functools import partial
-from typing import Annotated
+from typing import Annotated, Any
 
 from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Strict
 
@@ -16,7 +15,19 @@ from ..quantities import parse_quantity
 
 
 def _quantity(dimension: str) -> BeforeValidator:
-    return BeforeValidator(partial(parse_quantity, dimension=dimension))
+    """The validator of a field of ``dimension``: a plain one-argument function (pydantic
+    inspects each validator's signature, and a partial's costs start-up time)."""
+
+    def parse(value: Any) -> float:
+        return parse_quantity(value, dimension)
+
+    parse.dimension = dimension  # type: ignore[attr-defined]  # read by dimension_of
+    return BeforeValidator(parse)
+
+
+def dimension_of(metadata: Any) -> str | None:
+    """The dimension a field's metadata item parses its value as (a quantity's validator), else None."""
+    return getattr(getattr(metadata, "func", None), "dimension", None)
 
 
 Length = Annotated[float, _quantity("length")]

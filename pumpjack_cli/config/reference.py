@@ -29,6 +29,7 @@ from pydantic_core import PydanticUndefined
 
 from ..quantities import SI_LABELS
 from .geometry_names import GEOMETRY_ALIASES
+from .quantities import dimension_of
 
 #: The page and the markers of its generated part.
 PAGE = Path(__file__).resolve().parents[2] / "docs" / "unit-files.md"
@@ -164,12 +165,8 @@ def _base(annotation: Any) -> Any:
 
 
 def _dimension(annotation: Any) -> str | None:
-    """The dimension a value is parsed as (the ``parse_quantity`` partial of its BeforeValidator)."""
-    for item in _metadata(annotation):
-        func = getattr(item, "func", None)
-        if isinstance(func, functools.partial) and "dimension" in func.keywords:
-            return func.keywords["dimension"]
-    return None
+    """The dimension a value is parsed as (the quantity validator among its metadata)."""
+    return next(filter(None, map(dimension_of, _metadata(annotation))), None)
 
 
 def _floor(annotation: Any) -> str | None:

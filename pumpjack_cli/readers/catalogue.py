@@ -25,6 +25,7 @@ from typing import Any
 from ..errors import ConfigError
 from ..quantities import parse_quantity
 from ..text_input import display_name, read_text
+from .unit_files import HOLE_SPEC, designation_key
 
 #: Largest catalogue [bytes]: some 100 000 rows of about 150 characters.
 MAX_BYTES = 16 << 20
@@ -84,19 +85,6 @@ _EXAMPLE_UNITS = {"length": "in", "force": "lbf", "angle": "deg", "torque": "lbf
                   "volume": "ft3", "pressure": "psi"}
 _NUMBER = re.compile(r"^[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
 _WHOLE = re.compile(r"^[0-9]+$")
-_HOLE_SPEC = re.compile(r"^(?P<designation>[^/\\]+)/(?P<hole>[0-9]+)$")
-
-
-def designation_key(text: str) -> str:
-    """A designation as names are compared: case-insensitive, a decimal comma read as a point."""
-    return text.strip().lower().replace(",", ".")
-
-
-def names_a_crank_hole(spec: str) -> bool:
-    """Whether a unit spec is written ``DESIGNATION/HOLE`` (``C-228D-213-86/3``)."""
-    return _HOLE_SPEC.match(spec.strip()) is not None
-
-
 @dataclass(frozen=True)
 class CatalogueRow:
     """One unit and crank hole of a catalogue: its file and line, designation and hole, the unit
@@ -141,7 +129,7 @@ class Catalogue:
         """The row ``spec`` names (``DESIGNATION/HOLE``, or a designation with one hole), None when
         the catalogue has no such designation; a ConfigError for a hole it does not have or a
         designation of several holes without one."""
-        found = _HOLE_SPEC.match(spec.strip())
+        found = HOLE_SPEC.match(spec.strip())
         designation, hole = (found["designation"], int(found["hole"])) if found else (spec, None)
         rows = self._holes.get(designation_key(designation))
         if rows is None:

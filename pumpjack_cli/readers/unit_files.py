@@ -14,13 +14,15 @@ import difflib
 import importlib
 import json
 import os
+import re
 import tomllib
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..errors import ConfigError
 from ..text_input import read_text
-from .catalogue import Catalogue, CatalogueRow, designation_key, names_a_crank_hole
+if TYPE_CHECKING:  # an operator's catalogue is read only when a command is given one
+    from .catalogue import Catalogue, CatalogueRow
 
 BUNDLED_PACKAGE = "pumpjack_cli.configs"
 SUFFIXES = (".toml", ".yaml", ".yml", ".json")
@@ -138,6 +140,20 @@ def bundled_units() -> dict[str, Path]:
     """Bundled unit files by name (file stem), sorted."""
     folder = Path(next(iter(importlib.import_module(BUNDLED_PACKAGE).__path__)))
     return {entry.stem: entry for entry in sorted(folder.iterdir(), key=lambda e: e.name) if entry.suffix in SUFFIXES}
+
+
+#: A unit spec naming a crank hole of a catalogue's unit: ``DESIGNATION/HOLE``.
+HOLE_SPEC = re.compile(r"^(?P<designation>[^/\\]+)/(?P<hole>[0-9]+)$")
+
+
+def designation_key(text: str) -> str:
+    """A designation as names are compared: case-insensitive, a decimal comma read as a point."""
+    return text.strip().lower().replace(",", ".")
+
+
+def names_a_crank_hole(spec: str) -> bool:
+    """Whether a unit spec is written ``DESIGNATION/HOLE`` (``C-228D-213-86/3``)."""
+    return HOLE_SPEC.match(spec.strip()) is not None
 
 
 def names_a_file(spec: str) -> bool:

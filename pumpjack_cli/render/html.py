@@ -16,8 +16,8 @@ import re
 
 from ..names import suffixed
 from ..quantities import output_unit
-from ..results import (STORED, TEXT, Figure, Note, Page, Quantities, Result, Scalar, Section, SideBySide, Table,
-                       Values)
+from ..page import Figure, Note, Page, Quantities, Section, SideBySide, Table, Values
+from ..results import STORED, TEXT, Result, Scalar
 from .display import display_number
 
 STYLE = """

@@ -16,6 +16,8 @@ the mean speed of the energy balance (a u + b u^2 <omega>_theta = E / 2 pi).
 
 from __future__ import annotations
 
+from bisect import bisect_right
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -45,6 +47,13 @@ STALL_FRACTION = 1e-3
 #: from the mean-torque guess, not from the coarse start speed: a secant step between two
 #: start speeds that close follows the integration's noise on a card's kinks.)
 COARSE_RTOL = 1e-6
+#: The cycle is integrated to this share of the periodicity tolerance rtol: the state at its
+#: end then carries an integration error well below rtol, and the secant iteration on
+#: omega_end - omega_0 ends in a few steps instead of wandering in the integration's noise
+#: (which, integrated to rtol itself, is some 10 rtol on a card's kinks).
+INTEGRATION_SHARE = 1e-2
+#: Tightest integration tolerance asked of DOP853 (scipy's floor is 100 machine epsilons).
+INTEGRATION_FLOOR = 1e-13
 #: A coarse solution's motor torque may exceed the pull-out torque by this share before the
 #: load is refused: its torque is off by about rtol / slip (1e-6 / 0.03), far less.
 PULL_OUT_MARGIN = 1e-3
@@ -63,6 +72,23 @@ class _Stroke:
     start: float
     travel: float
     spline: CubicSpline
+
+    def at(self) -> Callable[[float], tuple[float, float, float]]:
+        """The spline at one crank angle in plain floats: its own cubic pieces by Horner's rule
+        (scipy's call checks its argument for some 10 µs, and the integration asks for every
+        right-hand side)."""
+        breaks = self.spline.x.tolist()
+        pieces = np.transpose(self.spline.c, (1, 2, 0)).tolist()  # [piece][column][c3, c2, c1, c0]
+        last = len(pieces) - 1
+
+        def at(theta: float) -> tuple[float, float, float]:
+            i = min(max(bisect_right(breaks, theta) - 1, 0), last)
+            x = theta - breaks[i]
+            (a3, a2, a1, a0), (b3, b2, b1, b0), (c3, c2, c1, c0) = pieces[i]
+            return (((a3 * x + a2) * x + a1) * x + a0, ((b3 * x + b2) * x + b1) * x + b0,
+                    ((c3 * x + c2) * x + c1) * x + c0)
+
+        return at
 
 
 @dataclass(frozen=True)
@@ -270,7 +296,8 @@ class _Shooter:
 
     def __init__(self, machine: Machine, strokes: tuple[_Stroke, _Stroke], rtol: float, scale: float, energy: float):
         self.machine, self.strokes, self.rtol = machine, strokes, rtol
-        self.atol = rtol * np.array([scale, 2.0 * np.pi / scale, max(abs(energy), 1.0)])
+        self.integration_rtol = max(INTEGRATION_SHARE * rtol, INTEGRATION_FLOOR)
+        self.atol = self.integration_rtol * np.array([scale, 2.0 * np.pi / scale, max(abs(energy), 1.0)])
         self.floor = STALL_FRACTION * scale
         self.evaluations = 0
 
@@ -285,16 +312,14 @@ class _Shooter:
         y = np.array([omega0, 0.0, 0.0])
         solutions = []
         for stroke in self.strokes:
-            spline = stroke.spline
-
-            def rhs(theta, y, spline=spline):
+            def rhs(theta, y, spline=stroke.at()):
                 inertia, rate, torque = spline(theta)
                 w = y[0]
                 drive = a_u + b_u2 * w
                 return [(drive - torque - 0.5 * w * w * rate) / (inertia * w), 1.0 / w, drive]
 
             sol = solve_ivp(rhs, (stroke.start, stroke.start + stroke.travel), y, method="DOP853",
-                            rtol=self.rtol, atol=self.atol, dense_output=True, events=stalled)
+                            rtol=self.integration_rtol, atol=self.atol, dense_output=True, events=stalled)
             self.evaluations += sol.nfev
             if sol.status == 1:
                 raise DynamicsError(

@@ -285,3 +285,33 @@ def test_non_converging_shooting_reports_what_it_tried(sk8_machine):
 def test_tolerance_out_of_range(sk8_machine, rtol):
     with pytest.raises(DynamicsError, match="rtol"):
         steady_state(sk8_machine, rtol=rtol)
+
+
+def test_a_strokes_spline_at_one_angle_is_scipys_spline():
+    """The integration's right-hand side reads the coefficient splines one angle at a time
+    from their own cubic pieces (``_Stroke.at``): the same polynomials as scipy's
+    CubicSpline, to rounding, inside the stroke and at its ends."""
+    from scipy.interpolate import CubicSpline
+
+    from pumpjack_cli.core.dynamics.periodic import _Stroke
+
+    theta = np.linspace(0.3, 3.5, 257)
+    table = np.stack([np.sin(theta) + 2.0, np.cos(3 * theta), theta**2], axis=1)
+    stroke = _Stroke(0.3, 3.2, CubicSpline(theta, table))
+    at = stroke.at()
+    angles = np.concatenate([[0.3, 3.5, theta[100]], np.random.default_rng(5).uniform(0.3, 3.5, 2000)])
+    found = np.array([at(float(a)) for a in angles])
+    np.testing.assert_allclose(found, stroke.spline(angles), rtol=0, atol=1e-14 * np.max(np.abs(table)))
+
+
+def test_a_cards_kinks_do_not_keep_the_shooting_going(sk8_unit, sk8_drivable_card):
+    """On a card (linear between its points) the integration's error on omega_end is some
+    10 x its tolerance; integrated to rtol / 100, the secant iteration reaches
+    |omega_end - omega_0| <= rtol omega_0 in a few shots instead of following that noise."""
+    from pumpjack_cli.analysis.card_runs import place
+    from pumpjack_cli.readers.cards import read_card
+
+    machine = sk8_unit.machine(place(read_card(sk8_drivable_card), sk8_unit.geometry.mechanism()).card)
+    convergence = steady_state(machine, crank_grid(36)).summary.convergence
+    assert len(convergence.start_speeds) <= 4
+    assert abs(convergence.residuals[-1]) <= convergence.rtol * convergence.start_speeds[-1]
