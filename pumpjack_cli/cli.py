@@ -10,6 +10,7 @@ models) is imported only when that subcommand runs; ``pumpjack --help``,
 from __future__ import annotations
 
 import functools
+import gc
 import importlib
 import sys
 import warnings
@@ -121,13 +122,17 @@ def _fail(message: str) -> int:
     return 2
 
 
-def main(argv: list[str] | None = None) -> int:
+def main(argv: list[str] | None = None, *, whole_process: bool = False) -> int:
     """Run the CLI; return the exit code (console-script entry point).
 
     Floating-point warnings are not printed: a result that is not finite is refused by
     the renderer with one line naming it. The run's own warnings
     (:func:`~pumpjack_cli.errors.warn`) follow on stderr when it succeeds; a failed run
-    prints only its error line.
+    prints only its error line. ``whole_process`` (the console script, one command per
+    process): the subcommand's module is imported first and what the imports made is
+    frozen out of the garbage collector's walks (:func:`gc.freeze`): modules, classes and
+    schemas live as long as the process, and walking them again in every full collection
+    and at exit costs a tenth of a short command's time.
     """
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
@@ -136,6 +141,9 @@ def main(argv: list[str] | None = None) -> int:
     forget_inputs()
     with collected_warnings() as noted:
         try:
+            if whole_process and args[0] in COMMANDS:
+                _built_command(args[0])
+                gc.freeze()
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", RuntimeWarning)
                 code = command.main(args=args, prog_name="pumpjack", standalone_mode=False)
@@ -162,4 +170,4 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(whole_process=True))

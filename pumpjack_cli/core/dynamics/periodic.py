@@ -19,6 +19,7 @@ from __future__ import annotations
 from bisect import bisect_right
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -73,10 +74,11 @@ class _Stroke:
     travel: float
     spline: CubicSpline
 
+    @cached_property
     def at(self) -> Callable[[float], tuple[float, float, float]]:
         """The spline at one crank angle in plain floats: its own cubic pieces by Horner's rule
         (scipy's call checks its argument for some 10 µs, and the integration asks for every
-        right-hand side)."""
+        right-hand side); made once per stroke for all the shots."""
         breaks = self.spline.x.tolist()
         pieces = np.transpose(self.spline.c, (1, 2, 0)).tolist()  # [piece][column][c3, c2, c1, c0]
         last = len(pieces) - 1
@@ -312,7 +314,7 @@ class _Shooter:
         y = np.array([omega0, 0.0, 0.0])
         solutions = []
         for stroke in self.strokes:
-            def rhs(theta, y, spline=stroke.at()):
+            def rhs(theta, y, spline=stroke.at):
                 inertia, rate, torque = spline(theta)
                 w = y[0]
                 drive = a_u + b_u2 * w

@@ -298,7 +298,7 @@ def test_a_strokes_spline_at_one_angle_is_scipys_spline():
     theta = np.linspace(0.3, 3.5, 257)
     table = np.stack([np.sin(theta) + 2.0, np.cos(3 * theta), theta**2], axis=1)
     stroke = _Stroke(0.3, 3.2, CubicSpline(theta, table))
-    at = stroke.at()
+    at = stroke.at
     angles = np.concatenate([[0.3, 3.5, theta[100]], np.random.default_rng(5).uniform(0.3, 3.5, 2000)])
     found = np.array([at(float(a)) for a in angles])
     np.testing.assert_allclose(found, stroke.spline(angles), rtol=0, atol=1e-14 * np.max(np.abs(table)))
