@@ -13,7 +13,7 @@ from ..analysis.downhole import downhole as run
 from ..config import load_unit
 from ..options import (CardColumnsOption, CardOption, CardSpmOption, CardUnitsOption, FormatOption, Output, OutputOption,
                        PlotOption, CrankMotion, CrankMotionOption, ServiceFactorOption, UnitArgument, UnitsOption, UnitSystem,
-                       card_source, finite, quantity)
+                       card_source, finite)
 from ..options import What, WhatOption
 from ..options import CatalogueOption
 from ..errors import PumpjackError

@@ -25,7 +25,6 @@ from pathlib import Path
 from typing import Any, Literal
 
 from pydantic import BaseModel
-from pydantic_core import PydanticUndefined
 
 from ..quantities import SI_LABELS
 from .geometry_names import GEOMETRY_ALIASES

@@ -16,7 +16,6 @@ from __future__ import annotations
 import importlib.util
 import re
 import shlex
-from pathlib import Path
 
 import matplotlib
 import pytest

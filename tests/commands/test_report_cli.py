@@ -22,7 +22,7 @@ from pumpjack_cli.analysis.report import SECTIONS
 from pumpjack_cli.names import written_names
 from pumpjack_cli.render.display import display_number
 
-from helpers import REPO_ROOT, sample_card
+from helpers import sample_card
 
 CARD = sample_card("c-114d-133-54")
 UNIT = """\

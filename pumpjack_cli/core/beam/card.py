@@ -38,7 +38,6 @@ import numpy as np
 
 from ...errors import CardError
 from ..mechanism import Mechanism
-from .geometry import Linkage
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
 _BRANCH_STEPS = 8192

@@ -29,7 +29,6 @@ from typing import Protocol
 import numpy as np
 
 from ..beam.card import Card, card_load
-from ..beam.geometry import Linkage
 from ..mechanism import Mechanism, Motion
 from ..beam.masses import MassModel
 from ..constants import STANDARD_GRAVITY

@@ -12,7 +12,7 @@ import pytest
 
 from pumpjack_cli.core.constants import STEEL_DENSITY
 from pumpjack_cli.core.rods.string import RodString
-from pumpjack_cli.core.rods.tables import RodSection, mass_per_length, rod_string, steel_rod, tensile_strength
+from pumpjack_cli.core.rods.tables import RodSection, rod_string, steel_rod, tensile_strength
 from pumpjack_cli.errors import DownholeError, PumpjackError
 
 from helpers import FOOT, INCH, POUND_FORCE, POUND_MASS
