@@ -38,6 +38,7 @@ import numpy as np
 
 from ...errors import CardError
 from ..mechanism import Mechanism
+from .geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
 _BRANCH_STEPS = 8192

@@ -26,6 +26,7 @@ from ..sampling import crank_grid, largest_magnitude
 from ..slider_crank.mechanism import DENSE_STEPS, InertiaComparison, exact_motion, law_errors
 from .kinematics import APPROXIMATIONS, RodMotion, approximate_motion, rod_motion
 from ..mechanism import Mechanism
+from .geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 
 
 def chord_motion(linkage: Mechanism, crank_angle: np.ndarray, crank_speed: float) -> RodMotion:

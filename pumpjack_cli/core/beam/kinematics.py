@@ -26,6 +26,7 @@ import numpy as np
 
 from ..mechanism import DeadPositions, Mechanism, Motion
 from ..sampling import Extreme, crank_grid, cycle_period, extremes, uniform_time
+from .geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 
 #: Crank positions used to locate extremes, independent of the output resolution.
 _DENSE_STEPS = 7200

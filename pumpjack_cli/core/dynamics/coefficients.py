@@ -29,6 +29,7 @@ from typing import Protocol
 import numpy as np
 
 from ..beam.card import Card, card_load
+from ..beam.geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 from ..mechanism import Mechanism, Motion
 from ..beam.masses import MassModel
 from ..constants import STANDARD_GRAVITY
