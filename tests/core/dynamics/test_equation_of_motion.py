@@ -235,8 +235,9 @@ def test_card_energy_closure(sk8_machine):
     dense = crank_grid(400_000)
     work = np.sum(np.interp(dense, theta, card.load, period=2 * math.pi)
                   * sk8_machine.linkage.front_arm * motion(sk8_machine.linkage, dense).beam_rate) * (dense[1] - dense[0])
-    # The card's kinks (linear interpolation) cost the integrator many steps, each within
-    # rtol: the global error of the energy is then about 1e-8 here, not 1e-10.
+    # The card's kinks (linear interpolation) cost the integrator many steps, each within its
+    # tolerance (rtol / 100): the global error of the energy is then some 1e-10 here, and the
+    # dense sum's own error on the kinks about 1e-9; 1e-6 bounds both with room.
     assert r.summary.energy_per_cycle == pytest.approx(work, rel=1e-6)
     assert r.summary.energy_per_cycle == pytest.approx(r.summary.rod_work_per_cycle, rel=1e-6)
 
