@@ -145,8 +145,13 @@ class _Channels:
         self.position_load = m.bottom**2 @ q
         self.position_load[0] += m.residual_compliance
         self.position_drive = -(m.bottom * m.participation) @ q
-        self.reversed = [k[::-1].copy() for k in (self.velocity_load, self.velocity_drive, self.force_load,
-                                                   self.force_drive, self.position_load, self.position_drive)]
+        # The kernels of the past samples, reversed and interleaved (load, drive, load, ...) in
+        # rows of velocity, force and position: one product with the interleaved history of
+        # the block gives the three sums of a step.
+        self.past = np.stack([np.stack([load, drive], axis=1).ravel() for load, drive in (
+            (self.velocity_load[samples:0:-1], self.velocity_drive[samples:0:-1]),
+            (self.force_load[samples:0:-1], self.force_drive[samples:0:-1]),
+            (self.position_load[samples:0:-1], self.position_drive[samples:0:-1]))])
         self.tail = response.hat[:, samples:0:-1].copy()
 
     def carried(self, model: WellModel, carry: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -306,22 +311,22 @@ class _CoupledMarch:
         carry_velocity[0] -= m.residual_compliance / h * self.last_load
         carry_velocity, carry_position = carry_velocity.tolist(), carry_position.tolist()
         carry_force = (carry_force + model.buoyant_weight).tolist()
-        r_vl, r_vd, r_fl, r_fd, r_pl, r_pd = ch.reversed
+        past = ch.past
+        pl0, pd0 = float(ch.position_load[0]), float(ch.position_drive[0])
         stretch, give = model.pump.fluid_load / model.pump.tubing_stiffness, 1.0 / model.pump.tubing_stiffness
         vd0, fl0, fd0 = float(ch.velocity_drive[0]), float(ch.force_load[0]), float(ch.force_drive[0])
         c = m.damping
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
         load, drive = np.zeros(n), np.zeros(n)
+        history = np.zeros(2 * n)   # load and drive of the block's samples so far, interleaved
         rows = np.empty((n, 8))
         theta_p, omega_p, eps_p, load_p, down = self.theta, self.omega, self.epsilon, self.last_load, self.last_position
         start = theta_p
         chamber = self.chamber
         for k in range(n):
-            past_load, past_drive = load[:k], drive[:k]
-            v_known = (carry_velocity[k] + float(np.dot(r_vl[n - k:n], past_load))
-                       + float(np.dot(r_vd[n - k:n], past_drive)))
-            f_known = (carry_force[k] + float(np.dot(r_fl[n - k:n], past_load))
-                       + float(np.dot(r_fd[n - k:n], past_drive)))
+            v_past, f_past, p_past = (past[:, 2 * (n - k):] @ history[:2 * k]).tolist()
+            v_known = carry_velocity[k] + v_past
+            f_known = carry_force[k] + f_past
             omega = omega_p + h * eps_p
             f_k = load_p
             for sweep in range(2):
@@ -347,9 +352,8 @@ class _CoupledMarch:
                 raise PredictionError(
                     f"the crank stalls (omega1 {omega:.3g} 1/s at crank angle {np.degrees(theta) % 360:.1f} deg): "
                     f"the motor cannot turn the unit with this well")
-            load[k], drive[k] = f_k, a_k
-            down = (carry_position[k] - s + float(np.dot(r_pl[n - k:n + 1], load[:k + 1]))
-                    + float(np.dot(r_pd[n - k:n + 1], drive[:k + 1])))
+            load[k], drive[k] = history[2 * k], history[2 * k + 1] = f_k, a_k
+            down = carry_position[k] - s + p_past + pl0 * f_k + pd0 * a_k
             rows[k] = (theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav)
             theta_p, omega_p, eps_p, load_p = theta, omega, eps, f_k
         forcing_sum = m.bottom * (ch.tail @ load) - m.participation * (ch.tail @ drive)

@@ -185,8 +185,9 @@ class PumpMarch:
         self.model, self.chamber, self.carry = model, chamber, carry
         self.last_load, self.last_position = last_load, last_position
         n = model.response.hat.shape[1] - 1
-        self.reversed_velocity = model.velocity_kernel[::-1].copy()
-        self.reversed_position = model.position_kernel[::-1].copy()
+        # the velocity and position kernels of the past samples, reversed, in two rows: one
+        # product with the cycle's loads so far gives both sums of a step
+        self.past = np.stack([model.velocity_kernel[n:0:-1], model.position_kernel[n:0:-1]])
         self.tail = model.response.hat[:, n:0:-1].copy()
         self.samples = n
 
@@ -207,17 +208,18 @@ class PumpMarch:
         velocity = known_velocity + carried_velocity
         velocity[0] -= model.modes.residual_compliance / h * self.last_load
         velocity, position_base = velocity.tolist(), (known_position + carried_position).tolist()
-        r_velocity, r_position, chamber = self.reversed_velocity, self.reversed_position, self.chamber
+        past, chamber, p0 = self.past, self.chamber, float(model.position_kernel[0])
         stretch, give = model.pump.fluid_load / model.pump.tubing_stiffness, 1.0 / model.pump.tubing_stiffness
         load = np.zeros(n)
         position = np.empty(n)
         previous, down = self.last_load, self.last_position
         for k in range(n):
-            rate = tubing * previous - velocity[k] - float(np.dot(r_velocity[n - k:n], load[:k]))
+            v_past, p_past = (past[:, n - k:] @ load[:k]).tolist()
+            rate = tubing * previous - velocity[k] - v_past
             exact = stretch - give * previous - down
             previous, position[k] = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate)
             load[k] = previous
-            down = position_base[k] + float(np.dot(r_position[n - k:n + 1], load[:k + 1]))
+            down = position_base[k] + p_past + p0 * previous
         m = model.modes
         self.carry = model.response.powers[:, n] * self.carry + m.bottom * (self.tail @ load)
         self.last_load, self.last_position = previous, down
