@@ -8,9 +8,11 @@ this process, each worker under its nanny), and runs ``pumpjack batch MANIFEST -
 ADDRESS --store STORE`` (torque and downhole) in a fresh process whose standard error is a
 pseudo-terminal, so that it draws its progress bar as on an operator's terminal. Every
 0.5 s it takes the resident memory (RSS) of every process of the run: this one (the
-scheduler and the nannies), the workers, the batch process. It prints the wall time, the cards
-per second, the peak of the total (a sum of RSS counts the pages processes share once
-each: an upper bound) and of each process, and the progress the bar drew.
+scheduler and the nannies), the workers, the batch process, and their CPU time. It prints the
+wall time, the cards per second, the peak of the total (a sum of RSS counts the pages
+processes share once each: an upper bound) and of each process, the progress the bar drew,
+and the CPU each process used over the run (to its last sample, so a process's last half
+second may be missing).
 
 A Dask worker samples the stacks of its tasks every 10 ms and keeps the last 1000 seconds
 of these profiles (``distributed.worker.profile``); ``--no-profiler`` starts the workers
@@ -45,13 +47,15 @@ SAMPLE = 0.5
 MIB = 1 << 20
 
 
-def _memory(root: psutil.Process, batch: int) -> dict[str, int]:
-    """RSS [bytes] of every process under ``root`` (and of root), named by its role."""
+def _memory(root: psutil.Process, batch: int, cpu: dict[str, float] | None = None) -> dict[str, int]:
+    """RSS [bytes] of every process under ``root`` (and of root), named by its role; ``cpu``
+    gets each one's CPU time so far [s] (user + system)."""
     found = {}
     for process in [root, *root.children(recursive=True)]:
         try:
             rss = process.memory_info().rss
             command = " ".join(process.cmdline())
+            times = process.cpu_times()
         except psutil.NoSuchProcess:
             continue
         if process.pid == root.pid:
@@ -61,6 +65,8 @@ def _memory(root: psutil.Process, batch: int) -> dict[str, int]:
         else:
             role = "resource tracker" if "resource_tracker" in command else "worker"
         found[f"{role} {process.pid}"] = rss
+        if cpu is not None:
+            cpu[f"{role} {process.pid}"] = times.user + times.system
     return found
 
 
@@ -104,9 +110,10 @@ def main() -> None:
                                      stdout=subprocess.PIPE, stderr=terminal, text=True,
                                      env={**os.environ, "TERM": "xterm", "COLUMNS": "100"})
             os.close(terminal)
-            root, peak, peaks = psutil.Process(), 0, {}
+            root, peak, peaks, cpu_before, cpu_after = psutil.Process(), 0, {}, {}, {}
+            _memory(root, batch.pid, cpu_before)
             while batch.poll() is None:
-                sample = _memory(root, batch.pid)
+                sample = _memory(root, batch.pid, cpu_after)
                 peak = max(peak, sum(sample.values()))
                 for name, rss in sample.items():
                     peaks[name] = max(peaks.get(name, 0), rss)
@@ -127,6 +134,13 @@ def main() -> None:
     for name, rss in sorted(peaks.items()):
         print(f"  peak {name}: {rss / MIB:.0f} MiB")
     print(f"progress bar: {len(set(counts))} distinct counts drawn, the last {max(counts, default=0)}/{args.cards}")
+    print(f"CPU over the run (user + system, to the last sample; {SAMPLE:g} s apart):")
+    used = {name: seconds - cpu_before.get(name, 0.0) for name, seconds in sorted(cpu_after.items())}
+    for name, seconds in used.items():
+        print(f"  {name}: {seconds:.1f} s")
+    workers = sum(seconds for name, seconds in used.items() if name.startswith("worker"))
+    print(f"  the workers together: {workers:.1f} s, {workers / args.cards * 1e3:.2f} ms a card (their first task "
+          f"imports the analysis)")
 
 
 if __name__ == "__main__":
