@@ -38,12 +38,11 @@ from pathlib import Path
 
 import numpy as np
 
+from timing import machine, process_tree
+
 ROOT = Path(__file__).resolve().parent.parent
 BIN = Path(sys.executable).parent
 UNITS = ("sk8-3.5-4000", "7sk12-2.5-5600", "c-114d-133-54", "c-80d-133-48")
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from timing import machine  # noqa: E402
 
 
 def sample(unit: str) -> tuple[str, np.ndarray]:
@@ -81,12 +80,7 @@ def _peak_memory(process: subprocess.Popen, found: list[float]) -> None:
     try:
         root = psutil.Process(process.pid)
         while process.poll() is None:
-            total = 0
-            for p in [root, *root.children(recursive=True)]:
-                try:
-                    total += p.memory_info().rss
-                except psutil.Error:
-                    pass
+            total = sum(info["memory_info"].rss for info in process_tree(root, ("memory_info",)).values())
             found[0] = max(found[0], total)
             time.sleep(0.1)
     except psutil.Error:

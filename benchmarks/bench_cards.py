@@ -16,8 +16,6 @@ groups of GROUP (``place_cards``: one time fit for the group), in microseconds p
 from __future__ import annotations
 
 import io
-import os
-import platform
 import sys
 from pathlib import Path
 
@@ -28,7 +26,7 @@ from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
 from pumpjack_cli.core.cards import CardSamples, place_card, place_cards
 from pumpjack_cli.readers.cards import read_card
-from timing import best_of
+from timing import best_of, machine
 
 POINTS = 200
 #: Time cards placed one by one and in groups, and the size of a group.
@@ -69,8 +67,7 @@ def varied(count: int, seed: int = 1) -> list[CardSamples]:
 
 def main() -> None:
     linkage = load_unit("sk8-3.5-4000").geometry.mechanism()
-    print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
-          f"Python {platform.python_version()}, numpy {np.__version__}")
+    print(f"machine: {machine()}, numpy {np.__version__}")
     for name, text in texts(linkage).items():
         raw = read_card("-", stream=io.StringIO(text))
         place(raw, linkage)

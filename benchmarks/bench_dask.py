@@ -39,7 +39,7 @@ import psutil
 from distributed import LocalCluster
 
 from bench_batch import generate
-from timing import machine
+from timing import machine, process_tree
 
 BIN = Path(sys.executable).parent
 #: Seconds between two looks at the processes' memory.
@@ -51,22 +51,16 @@ def _memory(root: psutil.Process, batch: int, cpu: dict[str, float] | None = Non
     """RSS [bytes] of every process under ``root`` (and of root), named by its role; ``cpu``
     gets each one's CPU time so far [s] (user + system)."""
     found = {}
-    for process in [root, *root.children(recursive=True)]:
-        try:
-            rss = process.memory_info().rss
-            command = " ".join(process.cmdline())
-            times = process.cpu_times()
-        except psutil.NoSuchProcess:
-            continue
-        if process.pid == root.pid:
+    for pid, info in process_tree(root, ("memory_info", "cmdline", "cpu_times")).items():
+        if pid == root.pid:
             role = "this process (scheduler, nannies)"
-        elif process.pid == batch:
+        elif pid == batch:
             role = "pumpjack batch"
         else:
-            role = "resource tracker" if "resource_tracker" in command else "worker"
-        found[f"{role} {process.pid}"] = rss
+            role = "resource tracker" if "resource_tracker" in " ".join(info["cmdline"] or ()) else "worker"
+        found[f"{role} {pid}"] = info["memory_info"].rss
         if cpu is not None:
-            cpu[f"{role} {process.pid}"] = times.user + times.system
+            cpu[f"{role} {pid}"] = info["cpu_times"].user + info["cpu_times"].system
     return found
 
 

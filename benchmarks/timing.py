@@ -28,3 +28,18 @@ def machine() -> str:
         model = ""
     return (f"{platform.machine()}, {model or platform.processor() or 'unknown CPU'}, {os.cpu_count()} cores, "
             f"{platform.python_implementation()} {platform.python_version()}")
+
+
+def process_tree(root, attributes: tuple[str, ...]) -> dict[int, dict]:
+    """The ``attributes`` (psutil's names: ``memory_info``, ``cmdline``, ``cpu_times``) of the
+    psutil process ``root`` and of every process under it, by pid; one that ended meanwhile is
+    left out. psutil comes with the ``dev`` and ``dask`` extras."""
+    import psutil
+
+    found = {}
+    for process in [root, *root.children(recursive=True)]:
+        try:
+            found[process.pid] = process.as_dict(attrs=list(attributes))
+        except psutil.NoSuchProcess:
+            continue
+    return found

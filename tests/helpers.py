@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from pumpjack_cli.core.beam.geometry import Linkage
 # The package's conversion factors, re-exported so that a test takes every constant from here.
@@ -89,6 +90,17 @@ def zoom_scan(objective, lo: float, hi: float, rounds: int = 12, points: int = 4
         k = int(np.argmin(objective(grid)))
         lo, hi = grid[max(k - 2, 0)], grid[min(k + 2, points - 1)]
     return float(grid[k])
+
+
+def assert_same_summary(found: dict, expected: dict, rel: float, absolute: float, *where) -> int:
+    """Every value of the summary ``expected`` in ``found``: a text label equal, a number within
+    ``rel`` and ``absolute``; ``where`` heads the failure message. Returns how many were compared."""
+    for name, value in expected.items():
+        if isinstance(value, str):
+            assert found[name] == value, (*where, name)
+        else:
+            assert found[name] == pytest.approx(value, rel=rel, abs=absolute), (*where, name)
+    return len(expected)
 
 
 def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:

@@ -200,7 +200,8 @@ def _periodic(theta: np.ndarray, angle: np.ndarray, values: np.ndarray) -> np.nd
 def median_card(raw: RawCard, mechanism: Mechanism) -> Reading:
     """The median card of a file's strokes, point by point on a common crank-angle grid.
 
-    Each stroke is placed on ``mechanism`` (its own time fit), its load interpolated
+    Each stroke is placed on ``mechanism`` (its own time fit, the strokes' fits one array
+    computation, :func:`place_all`), its load interpolated
     periodically on a grid of as many crank angles as the longest stroke has samples,
     and the median taken at each angle; likewise the fitted crank speed and
     acceleration of strokes with time stamps, whose mean speed is then 2 pi over the
@@ -208,7 +209,10 @@ def median_card(raw: RawCard, mechanism: Mechanism) -> Reading:
     and ignores a stroke that departs from it (a gas pound, a glitch), which a mean would
     smear into every angle.
     """
-    placed = [place(stroke, mechanism) for stroke in raw.strokes]
+    placed = place_all(list(raw.strokes), mechanism)
+    for found in placed:
+        if isinstance(found, CardError):
+            raise found
     theta = crank_grid(max(p.crank_angle.size for p in placed))
     load = np.median([card_load(p.card, theta) for p in placed], axis=0)
     common = {"card": card_from_angles(theta, load), "source": raw.source, "load": load, "crank_angle": theta,

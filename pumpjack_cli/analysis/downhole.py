@@ -24,6 +24,7 @@ from ..core.rods.analysis import (
     card_work,
     displacement_rate,
     intake_pressure,
+    plunger_area,
     summarise_pump_card,
     taper_loads,
 )
@@ -71,7 +72,7 @@ def fluid_load_of(unit: UnitConfig) -> float | None:
     found = unit.pump_pressures()
     if found is None:
         return None
-    return (found[0] - found[1]) * math.pi * unit.require_well().plunger_diameter**2 / 4.0
+    return (found[0] - found[1]) * plunger_area(unit.require_well().plunger_diameter)
 
 
 def damping_factors(unit: UnitConfig, given: float | None, rod_string, cards: list, method: str,
@@ -137,16 +138,15 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
             found[k] = pump
     good = sorted(k for k in pumps if not isinstance(pumps[k], PumpjackError))
     if good:
-        pump_cards = [pumps[k][1] for k in good]
-        figures = summarise_pump_card(np.array([p.pump_position for p in pump_cards]),
-                                      np.array([p.pump_load for p in pump_cards]))
-        conditions = diagnose(np.array([p.pump_position for p in pump_cards]),
-                              np.array([p.pump_load for p in pump_cards]), reference_fluid_load(unit))
+        position = np.array([pumps[k][1].pump_position for k in good])
+        load = np.array([pumps[k][1].pump_load for k in good])
+        figures = summarise_pump_card(position, load)
+        conditions = diagnose(position, load, reference_fluid_load(unit))
         for i, k in enumerate(good):
             with collected_warnings() as noted:
                 found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, path, method,
-                                            PumpCardSummary(*(value[i] for value in vars(figures).values())),
-                                            conditions.card(i), service_factor, deviation, production)
+                                            figures.card(i), conditions.card(i), service_factor, deviation,
+                                            production)
             said[k] += noted
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
@@ -258,7 +258,7 @@ def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, pat
         curves += more_curves
         title += f", survey {Path(well.survey).name}" + (f", friction {deviated.friction_coefficient:g}"
                                                          if deviated is not None else "")
-    f_o = reference_fluid_load(unit)   # the reference load lines of [Rowlan2008] on both cards
+    f_o = float(condition.features.reference_load[0])   # the reference load lines of [Rowlan2008] on both cards
     lines = (("W_rf", pump.buoyant_weight), ("W_rf + F_o", pump.buoyant_weight + f_o), ("F_o (pump card)", f_o),
              ("", 0.0))
     panels: tuple[Panel, ...] = (Panel("load", (), curves=curves, x_label="position", levels=lines),
@@ -310,7 +310,7 @@ def reference_fluid_load(unit: UnitConfig) -> float:
         return found
     well = unit.require_well()
     return (discharge_pressure(well.pump_vertical_depth(), well.fluid_density, well.tubing_head_pressure)
-            - well.casing_head_pressure) * math.pi * well.plunger_diameter**2 / 4.0
+            - well.casing_head_pressure) * plunger_area(well.plunger_diameter)
 
 
 def condition_summary(unit: UnitConfig, surface, found, string) -> list[Scalar]:
@@ -344,7 +344,7 @@ def well_summary(unit: UnitConfig, figures, pump, polished_rod_power: float, per
     """Intake pressure, fluid level, production and energy per day from the pump card ([Rowlan2009PIP],
     [Wang2019]); a rate or an energy only with a runtime."""
     well = unit.require_well()
-    area = math.pi * well.plunger_diameter**2 / 4.0
+    area = plunger_area(well.plunger_diameter)
     depth = well.pump_vertical_depth()
     outlet = discharge_pressure(depth, well.fluid_density, well.tubing_head_pressure)
     intake = float(intake_pressure_from_load(float(figures.fluid_load), area, outlet))

@@ -15,7 +15,6 @@ without ``[well]`` gets the torque sections only, and says why.
 from __future__ import annotations
 
 import datetime
-import hashlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -25,6 +24,7 @@ from ..errors import PumpjackError, collected_warnings, warn
 from ..quantities import KWH
 from ..page import Figure, Note, Page, Quantities, Section, SideBySide, Table, Values
 from ..results import Result
+from .batch.keys import file_sha256
 from .card_runs import CardSource
 
 if TYPE_CHECKING:
@@ -54,15 +54,6 @@ class ReportOptions:
     energy: object | None = None
     system: str = "si"
     runtime: float | None = None
-
-
-def sha256(path: Path) -> str:
-    """SHA-256 of a file's bytes (hex)."""
-    digest = hashlib.sha256()
-    with open(path, "rb") as stream:
-        for block in iter(lambda: stream.read(1 << 20), b""):
-            digest.update(block)
-    return digest.hexdigest()
 
 
 def report(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportOptions) -> tuple[Page, dict]:
@@ -270,8 +261,8 @@ def _options_text(card: CardSource, options: ReportOptions, system: str) -> str:
 def _provenance_section(unit: UnitConfig, unit_file: Path, card: CardSource, options: ReportOptions) -> Section:
     now = datetime.datetime.now(datetime.timezone.utc).replace(microsecond=0).isoformat()
     rows = (("tool", f"pumpjack {__version__}"), ("unit", unit.name),
-            ("unit file (or catalogue)", str(unit_file)), ("its SHA-256", sha256(unit_file)),
-            ("card file", str(card.path)), ("card file SHA-256", sha256(card.path)),
+            ("unit file (or catalogue)", str(unit_file)), ("its SHA-256", file_sha256(unit_file)),
+            ("card file", str(card.path)), ("card file SHA-256", file_sha256(card.path)),
             ("options", _options_text(card, options, options.system)), ("generated (UTC)", now))
     return Section("provenance", dict(SECTIONS)["provenance"],
                    (Table((("item", "text"), ("value", "text")), rows),))

@@ -203,7 +203,7 @@ def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]],
 @dataclass(frozen=True)
 class _TorqueContext:
     """What the torque analysis of a unit's cards shares: the unit, its mechanism, masses,
-    counterbalance and ratings."""
+    counterbalance (and its effect at the test angle, when the present one is known) and ratings."""
 
     unit: UnitConfig
     method: str
@@ -214,6 +214,7 @@ class _TorqueContext:
     balance_known: bool
     rated: Ratings
     test_angle: float
+    effect: float | None
 
     @classmethod
     def of(cls, unit: UnitConfig, method: str) -> _TorqueContext:
@@ -226,23 +227,20 @@ class _TorqueContext:
             unit.spatial()          # refuses a kind without the spatial model
         balance, balance_known = unit.counterbalance_model()
         linkage = unit.geometry.mechanism()
+        test_angle = upstroke_test_angle(linkage)
+        effect = counterbalance_effect(linkage.motion(np.array([test_angle])), balance) if balance_known else None
         return cls(unit, method, linkage, masses, masses if spatial else None, balance, balance_known, unit.ratings(),
-                   upstroke_test_angle(linkage))
+                   test_angle, effect)
 
 
 @dataclass(frozen=True)
 class _DenseFigures:
-    """The K cards' works per cycle and torques on the summary grid and what is read of them,
+    """What is read of the K cards' torques on the summary grid, and their works per cycle,
     arrays (K, ...)."""
 
-    theta: np.ndarray
     works: np.ndarray
-    dense: list
-    dt: np.ndarray
     frequency: np.ndarray
     recommendations: list
-    recommended: np.ndarray
-    current: np.ndarray | None
     duty: dict
     peaks: dict
     strokes: tuple | None
@@ -269,7 +267,7 @@ def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[C
             raise PumpjackError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms")
     net = np.array([t.net for t in dense])
     values = np.array([r.value for r in recommendations])
-    recommended = net + (values[:, None] - balance.value) * balance.torque_per_value(linkage.motion(theta))
+    recommended = _with_value(balance, linkage, theta, net, values[:, None])
     current = net if context.balance_known else None
     duty = {"recommended_": _duty_of(recommended, dt, frequency)}
     peaks = {"recommended": peaks_of(theta, recommended)}
@@ -281,8 +279,13 @@ def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[C
         extremes = extremes_of(theta, current)
     if dense[0].exact is not None:
         peaks["exact"] = peaks_of(theta, np.array([t.exact - t.api for t in dense]))
-    return _DenseFigures(theta, card_works(linkage, cards), dense, dt, frequency, recommendations, recommended,
-                         current, duty, peaks, strokes, extremes)
+    return _DenseFigures(card_works(linkage, cards), frequency, recommendations, duty, peaks, strokes, extremes)
+
+
+def _with_value(balance: CounterbalanceModel, linkage, crank_angle: np.ndarray, net: np.ndarray, value) -> np.ndarray:
+    """The net torque ``net`` [N·m] at ``crank_angle`` with the balancing variable at ``value``
+    (its torque is affine in it): a value, or one per cycle of ``net`` (K, 1)."""
+    return net + (value - balance.value) * balance.torque_per_value(linkage.motion(crank_angle))
 
 
 def _duty_of(net: np.ndarray, dt: np.ndarray, frequency: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -299,17 +302,12 @@ def _card_result(context: _TorqueContext, card: Card, runs: list[CardRun], figur
     recommendation = figures.recommendations[k]
     frequency = float(figures.frequency[k])
 
-    def shifted(t: _Torques, value: float) -> np.ndarray:
-        """The net torque with the balancing variable at ``value`` (its torque is affine in it)."""
-        return t.net + (value - balance.value) * balance.torque_per_value(linkage.motion(t.run.crank_angle))
-
     work = float(figures.works[k])
     summary = [Scalar(name, value) for name, value in balance.summary()]
     if context.balance_known:
         top, bottom = figures.extremes
         summary += [Scalar(balance.variable, balance.value),
-                    Scalar("counterbalance_effect",
-                           counterbalance_effect(linkage.motion(np.array([context.test_angle])), balance)),
+                    Scalar("counterbalance_effect", context.effect),
                     Scalar("peak_net_torque", float(figures.peaks["current"][0][k])),
                     Scalar("peak_net_torque_crank_angle", float(figures.peaks["current"][1][k]))]
         summary += extreme_scalars((("max_net_torque", Extreme(float(top[0][k]), float(top[1][k]))),
@@ -343,7 +341,7 @@ def _card_result(context: _TorqueContext, card: Card, runs: list[CardRun], figur
     columns, panels, headline = [], (), None
     if len(runs) == 2:
         out = _torques(unit, linkage, context.spatial_masses, masses, balance, runs[0], context.method)
-        columns = _columns(linkage, out, context.balance_known, shifted(out, recommendation.value), rated)
+        columns = _columns(linkage, out, context.balance_known, _with_value(balance, linkage, out.run.crank_angle, out.net, recommendation.value), rated)
         headline = next(c for c in columns
                         if c.name == ("net_torque" if context.balance_known else "recommended_net_torque"))
         panels = _panels(linkage, out.run, columns, levels, context.balance_known)

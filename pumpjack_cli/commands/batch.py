@@ -15,8 +15,7 @@ from ..analysis.store_views import export_result, field_page, trend_result
 from ..errors import PumpjackError
 from ..options import (CardFormatOption, CardPointsOption, CardUnitsOption, CatalogueOption, FormatOption, Output,
                        OutputOption, UnitsOption, UnitSystem, finite)
-from ..render import drop_stdout
-from ..text_input import describe_os_error
+from ..render import standard_output
 
 VERBS = ("run", "export", "trend", "report")
 
@@ -88,15 +87,8 @@ def _report(line: str) -> None:
 
     if sys.stdout is None:
         return
-    try:
-        sys.stdout.write(line + "\n")
-        sys.stdout.flush()
-    except BrokenPipeError:
-        raise
-    except OSError as exc:
-        drop_stdout()
-        raise PumpjackError(f"standard output: cannot write: {describe_os_error(exc)} (the results are stored)") \
-            from None
+    with standard_output(" (the results are stored)") as out:
+        out.write(line + "\n")
 
 
 @app.command("export")

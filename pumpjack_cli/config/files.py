@@ -73,7 +73,8 @@ def field_path(loc: tuple) -> str:
 def _geometry_with(key: str) -> Any:
     """The ``[geometry]`` schema of the first kind of unit that has ``key`` (a key means one
     quantity in every kind that has it), None if none has."""
-    return next((kind.model() for kind in UNIT_CLASSES.values() if key in kind.model().model_fields), None)
+    return next((model for model in (kind.model() for kind in UNIT_CLASSES.values()) if key in model.model_fields),
+                None)
 
 
 def _dimension(model: Any, loc: tuple) -> str | None:
@@ -87,7 +88,7 @@ def _dimension(model: Any, loc: tuple) -> str | None:
             return None
         parts = [*field.metadata, *_inside(field.annotation)]
         if depth == len(names) - 1:
-            return next(filter(None, map(dimension_of, parts)), None)
+            return dimension_of(parts)
         model = next((part for part in parts if isinstance(part, type) and hasattr(part, "model_fields")), None)
         if name == "geometry" and names[depth + 1] not in getattr(model, "model_fields", {}):
             model = _geometry_with(names[depth + 1])  # a beam unit's: its kind's own schema validates it

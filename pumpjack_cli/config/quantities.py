@@ -7,6 +7,7 @@ Every physical field of a unit file is one of these annotated types; the convers
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import Annotated, Any
 
 from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Strict
@@ -25,9 +26,10 @@ def _quantity(dimension: str) -> BeforeValidator:
     return BeforeValidator(parse)
 
 
-def dimension_of(metadata: Any) -> str | None:
-    """The dimension a field's metadata item parses its value as (a quantity's validator), else None."""
-    return getattr(getattr(metadata, "func", None), "dimension", None)
+def dimension_of(metadata: Iterable[Any]) -> str | None:
+    """The dimension a field's metadata items parse its value as (the first quantity validator
+    among them), else None."""
+    return next((item.func.dimension for item in metadata if hasattr(getattr(item, "func", None), "dimension")), None)
 
 
 Length = Annotated[float, _quantity("length")]

@@ -165,7 +165,7 @@ def _base(annotation: Any) -> Any:
 
 def _dimension(annotation: Any) -> str | None:
     """The dimension a value is parsed as (the quantity validator among its metadata)."""
-    return next(filter(None, map(dimension_of, _metadata(annotation))), None)
+    return dimension_of(_metadata(annotation))
 
 
 def _floor(annotation: Any) -> str | None:

@@ -147,9 +147,9 @@ class Well(Section):
 
     def rods(self) -> RodString:
         """The core's tapered rod string of ``rod_string``, top section first ([API11L], [API11B] tables),
-        built once per well: kept with the hash of the fields it was built from (a copy with other
-        fields, ``model_copy(update=...)``, builds its own)."""
-        key = hash(self)
+        built once per well: kept with the fields it is built from (a copy whose ``rod_string``,
+        ``pump_depth`` or ``rod_density`` differ, ``model_copy(update=...)``, builds its own)."""
+        key = (self.rod_string, self.pump_depth, self.rod_density)
         kept = self.__dict__.get("_built_rods")
         if kept is None or kept[0] != key:
             kept = self.__dict__["_built_rods"] = (key, self._build_rods())

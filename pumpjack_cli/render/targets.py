@@ -137,25 +137,25 @@ class Target:
 
 
 @contextmanager
-def standard_output():
+def standard_output(note: str = ""):
     """Standard output as a stream to write to, flushed at the end; a failure to write names it
-    and drops what is still buffered."""
-    with _failures_named("standard output", drop_stdout):
+    (followed by ``note``) and drops what is still buffered."""
+    with _failures_named("standard output", drop_stdout, note):
         yield EncodedText(sys.stdout)
         sys.stdout.flush()
 
 
 @contextmanager
-def _failures_named(where: str, cleanup=lambda: None):
-    """An OSError as one line naming where the output went, after ``cleanup`` (a closed pipe
-    stays a BrokenPipeError: the run stops quietly)."""
+def _failures_named(where: str, cleanup=lambda: None, note: str = ""):
+    """An OSError as one line naming where the output went, then ``note``, after ``cleanup`` (a
+    closed pipe stays a BrokenPipeError: the run stops quietly)."""
     try:
         yield
     except BrokenPipeError:
         raise
     except OSError as exc:
         cleanup()
-        raise PumpjackError(f"{where}: cannot write: {describe_os_error(exc)}") from None
+        raise PumpjackError(f"{where}: cannot write: {describe_os_error(exc)}{note}") from None
 
 
 def drop_stdout() -> None:

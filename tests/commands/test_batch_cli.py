@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, assert_same_summary
 from helpers import field_cards as field
 from helpers import field_manifest as manifest
 from helpers import stored_results as stored
@@ -51,12 +51,7 @@ def test_batch_results_equal_the_single_commands(run_cli, tmp_path, part):
                 assert row["status"] == "error" and row["error"] == expected
                 continue
             assert row["status"] == "ok", row["error"]
-            for name, value in expected.items():
-                if isinstance(value, str):  # a label: stored as text
-                    assert row[name] == value, (card, command, name)
-                else:
-                    assert row[name] == pytest.approx(value, rel=1e-12, abs=1e-12), (card, command, name)
-                compared += 1
+            compared += assert_same_summary(row, expected, 1e-12, 1e-12, card, command)
     assert compared > 2000
 
 
@@ -420,11 +415,7 @@ def test_a_rows_counterbalance_moment_and_rod_string_are_the_units_own(run_cli, 
     for analysis in ("torque", "downhole"):
         row, expected = results[(card, analysis)], single(run_cli, tmp_path, analysis, str(edited), card)
         assert row["status"] == "ok", row["error"]
-        for name, value in expected.items():
-            if isinstance(value, str):     # a label: the pump's condition
-                assert row[name] == value, (analysis, name)
-            else:
-                assert row[name] == pytest.approx(value, rel=1e-9, abs=1e-12), (analysis, name)
+        assert_same_summary(row, expected, 1e-9, 1e-12, analysis)
     assert results[(card, "torque")]["counterbalance_moment_n_m"] == pytest.approx(95e3)
 
 

@@ -317,16 +317,13 @@ def test_permissions_are_named(run_cli, tmp_path):
 
 # --- real file systems: read-only, full ---------------------------------------------------
 
-def _namespace(script: str, cwd: Path) -> None:
-    """Run a shell script as root of a private user and mount namespace, whose mounts end
-    with it; skip where the system allows none."""
+def _namespace(script: str, cwd: Path, pumpjack: str) -> None:
+    """Run a shell script (``$1``: the console script ``pumpjack``) as root of a private user and
+    mount namespace, whose mounts end with it; skip where the system allows none."""
     unshare = shutil.which("unshare")
     if unshare is None or subprocess.run([unshare, "-rm", "true"], capture_output=True).returncode != 0:
         pytest.skip("no private mount namespace (unshare -rm) on this system")
-    pumpjack = Path(sys.executable).parent / "pumpjack"
-    if not pumpjack.is_file():
-        pytest.skip("the pumpjack console script is not installed")
-    done = subprocess.run([unshare, "-rm", "sh", "-c", script, "sh", str(pumpjack)], cwd=cwd, capture_output=True,
+    done = subprocess.run([unshare, "-rm", "sh", "-c", script, "sh", pumpjack], cwd=cwd, capture_output=True,
                           text=True, timeout=300)
     assert done.returncode == 0, done.stderr
 
@@ -340,7 +337,7 @@ def _run(name: str, command: str) -> str:
     return f'"$1" {command} > {name}.out 2> {name}.err; echo $? > {name}.rc\n'
 
 
-def test_a_store_on_a_read_only_file_system(run_cli, tmp_path):
+def test_a_store_on_a_read_only_file_system(run_cli, tmp_path, pumpjack_script):
     """Export and trend read a store in a read-only directory (SQLite cannot make its WAL
     journal's shared-memory file there); a run with nothing new to store succeeds without
     writing; a run with cards to store is refused naming the read-only file system."""
@@ -353,7 +350,7 @@ def test_a_store_on_a_read_only_file_system(run_cli, tmp_path):
                + _run("export", "batch export --store ro/r.sqlite -f csv")
                + _run("trend", f"batch trend --store ro/r.sqlite --well {rows[0][0]} -f csv")
                + _run("done", f"batch {done.name} --store ro/r.sqlite --workers 1")
-               + _run("more", f"batch {more.name} --store ro/r.sqlite --workers 1"), tmp_path)
+               + _run("more", f"batch {more.name} --store ro/r.sqlite --workers 1"), tmp_path, pumpjack_script)
     for name in ("export", "trend"):
         code, out, err = _outcome(tmp_path, name)
         assert code == 0 and err == "" and rows[0][2] in out, err
@@ -363,7 +360,7 @@ def test_a_store_on_a_read_only_file_system(run_cli, tmp_path):
     assert _listing(tmp_path / "ro") == before
 
 
-def test_a_full_disk_during_a_run_is_one_line(tmp_path):
+def test_a_full_disk_during_a_run_is_one_line(tmp_path, pumpjack_script):
     """A store on a 160 KiB tmpfs fills up: the run ends with one line naming the full
     device, not a traceback or "not a results store"."""
     rows = field_cards(tmp_path, 1)
@@ -371,6 +368,7 @@ def test_a_full_disk_during_a_run_is_one_line(tmp_path):
     path = field_manifest(tmp_path, wells)
     (tmp_path / "full").mkdir()
     _namespace("mount -t tmpfs -o size=160k tmpfs full || exit 1\n"
-               + _run("full", f"batch {path.name} --store full/r.sqlite --workers 1 --analyses torque"), tmp_path)
+               + _run("full", f"batch {path.name} --store full/r.sqlite --workers 1 --analyses torque"), tmp_path,
+               pumpjack_script)
     one_line_error(*_outcome(tmp_path, "full"), "full/r.sqlite: cannot write: no space left on device",
                    "every card stored before is kept")

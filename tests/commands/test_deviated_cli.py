@@ -21,7 +21,7 @@ import pytest
 
 from pumpjack_cli.core.constants import STANDARD_GRAVITY
 
-from helpers import REPO_ROOT, SK8, SK8_CARD, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, SK8_TOML
+from helpers import REPO_ROOT, SK8, SK8_CARD, SK8_FLUID_DENSITY, SK8_PUMP_DEPTH, SK8_TOML, assert_same_summary
 
 J_SURVEY = REPO_ROOT / "samples" / "j-well-survey.csv"
 DEVIATED_CARD = REPO_ROOT / "samples" / "sk8-3.5-4000-deviated-card.csv"
@@ -47,11 +47,7 @@ def test_a_vertical_survey_gives_the_vertical_results(run_cli, tmp_path, method)
     code, surveyed, err = run_cli(*argv, "--survey", _vertical_survey(tmp_path), "--friction-coefficient", "0.3")
     assert code == 0, err
     plain, surveyed = json.loads(plain), json.loads(surveyed)
-    for name, value in plain["summary"].items():
-        if isinstance(value, str):      # a label: the pump's condition
-            assert surveyed["summary"][name] == value, name
-        else:
-            assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
+    assert_same_summary(surveyed["summary"], plain["summary"], 1e-9, 1e-9)
     for name, column in plain["series"].items():
         assert np.allclose(surveyed["series"][name], column, rtol=1e-9, atol=1e-9), name
     extra = surveyed["summary"]
@@ -199,11 +195,7 @@ def test_batch_takes_a_survey_per_well(run_cli, run_json, tmp_path):
 def test_predict_with_a_vertical_survey_is_the_vertical_prediction(run_json, tmp_path):
     plain = run_json("predict", SK8, "--samples", "64", "--damping", "0.1")
     surveyed = run_json("predict", SK8, "--samples", "64", "--damping", "0.1", "--survey", _vertical_survey(tmp_path))
-    for name, value in plain["summary"].items():
-        if isinstance(value, str):      # a label: the pump's condition
-            assert surveyed["summary"][name] == value, name
-        else:
-            assert surveyed["summary"][name] == pytest.approx(value, rel=1e-9, abs=1e-9), name
+    assert_same_summary(surveyed["summary"], plain["summary"], 1e-9, 1e-9)
     assert surveyed["summary"]["friction_work_per_cycle_j"] == 0.0
 
 

@@ -20,7 +20,7 @@ from ...readers.unit_files import read_table, unit_source
 from .per_card import Options
 
 
-def _sha256(path: str | Path) -> str:
+def file_sha256(path: str | Path) -> str:
     """SHA-256 of a file's bytes (hex), read unbuffered in blocks of 64 KiB (a card in one; a
     larger block is allocated whole at each read, which costs more than hashing a card)."""
     digest = hashlib.sha256()
@@ -34,7 +34,7 @@ def card_digest(path: str) -> str:
     """The content hash of a card file, or a hash of its name when it cannot be read (the
     analysis then records the error)."""
     try:
-        return _sha256(path)
+        return file_sha256(path)
     except OSError:
         return "unreadable:" + hashlib.sha256(path.encode()).hexdigest()
 
@@ -48,7 +48,7 @@ def unit_digest(spec: str, catalogue: Catalogue | None = None) -> str:
         found = unit_source(spec, catalogue)
         if isinstance(found, CatalogueRow):
             return hashlib.sha256(json.dumps([found.table, found.stroke], sort_keys=True).encode()).hexdigest()
-        digest = _sha256(found)
+        digest = file_sha256(found)
     except (ConfigError, OSError):
         return f"unreadable:{spec}"
     survey = _survey_of(found)
@@ -68,7 +68,7 @@ def _survey_of(path: Path) -> str | None:
         return None
     file = Path(survey) if Path(survey).is_absolute() else path.parent / survey
     try:
-        return _sha256(file)
+        return file_sha256(file)
     except OSError:
         return f"unreadable:{file}"
 
@@ -83,11 +83,11 @@ def options_key(job: Job, analysis: str, options: Options, unit_digest: str,
     made_of = (analysis, unit_digest, job.spm, job.counterbalance_moment, job.rod_string, job.survey, job.runtime)
     if known is not None and made_of in known:
         return known[made_of]
-    rod_digest = _sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
+    rod_digest = file_sha256(job.rod_string) if job.rod_string and os.path.isfile(job.rod_string) else job.rod_string
     made = {"analysis": analysis, "options": options.for_analysis(analysis), "unit": unit_digest,
             "spm": job.spm, "counterbalance_moment": job.counterbalance_moment, "rod_string": rod_digest}
     if job.survey is not None:  # absent without one, so that the stores written before surveys keep their keys
-        made["survey"] = _sha256(job.survey) if os.path.isfile(job.survey) else job.survey
+        made["survey"] = file_sha256(job.survey) if os.path.isfile(job.survey) else job.survey
     if job.runtime is not None and analysis == "downhole":  # a row without one keeps the hash stores had before
         made["runtime"] = job.runtime
     text = json.dumps(made, sort_keys=True)

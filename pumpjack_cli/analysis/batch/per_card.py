@@ -198,21 +198,26 @@ def _attempt(compute: Callable[[], object]) -> tuple[str, str, object]:
         return "error", f"internal error ({type(exc).__name__}: {' '.join(str(exc).split())}); please report it", None
 
 
+def _analysed(analysis: str, unit, cards: list[_PlacedOnce], job: Job, options: Options) -> list:
+    """One analysis of a unit's cards (:func:`..torque.torques`, :func:`..downhole.downholes`; the
+    summary alone): each card's result or error with its warnings."""
+    from ..downhole import Production, downholes
+    from ..torque import torques
+
+    if analysis == "torque":
+        return torques(unit, cards, job.spm, None, "auto", options.method, options.balance)
+    return downholes(unit, cards, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
+                     production=Production(runtime=job.runtime))
+
+
 def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:
     """One analysis of one card as the single command runs it: its summary (SI, suffixed names)."""
-    from ..downhole import Production, downhole
-    from ..torque import torque
+    from ..card_runs import alone
 
     unit, noted = _unit(job, options.catalogue)  # loaded once per process
     for text in noted:
         warn(text)
-    if analysis == "torque":
-        result = torque(unit, card, job.spm, None, "auto", options.method, options.balance)  # the summary alone
-    else:
-        result = downhole(unit, card, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
-                          production=Production(runtime=job.runtime))
-    check_finite(result)
-    return converted_summary(result, "si")
+    return _checked(alone(_analysed(analysis, unit, [card], job, options)))
 
 
 @dataclass
@@ -262,21 +267,12 @@ def _together(analysis: str, strokes: list[_Stroke], options: Options) -> None:
     (:func:`..torque.torques`, :func:`..downhole.downholes`: each card as the single command
     analyses it); if the group fails as a whole (the unit, or a fault of this program), each
     card alone."""
-    from ..downhole import Production, downholes
-    from ..torque import torques
-
     job = strokes[0].job
     unit, loading = _unit(job, options.catalogue)
-    cards = [s.card for s in strokes]
 
     def together():
-        if analysis == "torque":
-            found = torques(unit, cards, job.spm, None, "auto", options.method, options.balance)  # the summary alone
-        else:
-            found = downholes(unit, cards, job.spm, "auto", None, options.damping,  # Everitt-Jennings if deviated
-                              production=Production(runtime=job.runtime))
         out = []
-        for result, said in found:
+        for result, said in _analysed(analysis, unit, [s.card for s in strokes], job, options):
             status, error, summary = _attempt(lambda: _checked(result))
             out.append((status, error, [*loading, *said], summary))
         return out

@@ -87,8 +87,10 @@ def _check_jobs(jobs: list[Job], manifest: Path) -> None:
     from ...config.beam_unit import CounterbalanceConfig
     from ...config.files import error_message
 
+    checked = set()   # each moment once: a glob row gives thousands of cards the same one
     for job in jobs:
-        if job.counterbalance_moment is not None:
+        if job.counterbalance_moment is not None and job.counterbalance_moment not in checked:
+            checked.add(job.counterbalance_moment)
             try:
                 CounterbalanceConfig(moment=job.counterbalance_moment)
             except ValidationError as exc:

@@ -12,7 +12,6 @@ intersection of the active lines.
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 
@@ -52,13 +51,10 @@ def _strokes(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> tuple[
     return base[upstroke], sine[upstroke], base[~upstroke], sine[~upstroke]
 
 
-def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, float, int, int]:
-    """Largest net torque of the upstroke and of the downstroke at ``moment``, and the
-    indices of those lines in ``lines`` (:func:`_strokes`)."""
+def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, float]:
+    """Largest net torque of the upstroke and of the downstroke at ``moment`` (:func:`_strokes`)."""
     base_up, sine_up, base_down, sine_down = lines
-    up, down = base_up - moment * sine_up, base_down - moment * sine_down
-    i, j = int(np.argmax(up)), int(np.argmax(down))
-    return float(up[i]), float(down[j]), i, j
+    return float(np.max(base_up - moment * sine_up)), float(np.max(base_down - moment * sine_down))
 
 
 def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> float | None:
@@ -128,12 +124,6 @@ def _leading(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray
     return a, s, at
 
 
-@functools.lru_cache(maxsize=16)
-def _order(sine: bytes) -> np.ndarray:
-    """The stable sort order of the sines (the same for every card of a unit on one grid: made once)."""
-    return np.argsort(np.frombuffer(sine), kind="stable")
-
-
 def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The lines a_i - M s_i that are the largest for some M >= 0: their upper envelope, in the
     order of s.
@@ -146,7 +136,7 @@ def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     others leading at a single point), until the line of smallest s (the convex-hull trick).
     The maximum over the envelope is the maximum over all lines; a line that would lead only
     by rounding may be left out, which moves the maximum by a rounding error."""
-    order = _order(np.ascontiguousarray(sine, dtype=float).tobytes())
+    order = np.argsort(sine, kind="stable")
     a, s = base[order], sine[order]
     before = np.concatenate(([-np.inf], np.maximum.accumulate(a)[:-1]))
     keep = a > before
@@ -376,7 +366,7 @@ def recommend_counterbalances(criterion: str, linkage: Mechanism, crank_angle: n
         if criterion == "equal-peaks":
             moment = equal_peaks_moment(base, sine, up)
             if moment is None:
-                u, d, _, _ = _peaks(_strokes(base, sine, up), 0.0)
+                u, d = _peaks(_strokes(base, sine, up), 0.0)
                 found.append(BalanceRecommendation(criterion, None, None, None, None, None, None,
                                                    f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke "
                                                    f"peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)"))
@@ -390,7 +380,7 @@ def recommend_counterbalances(criterion: str, linkage: Mechanism, crank_angle: n
         else:
             moment = min_peak_moment(base, sine)
         torque = _lines(base, sine, moment)
-        u, d, _, _ = _peaks(_strokes(base, sine, up), moment)
+        u, d = _peaks(_strokes(base, sine, up), moment)
         w = np.ones_like(torque) if weights is None else np.asarray(weights[k], dtype=float)
         rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
         cbe = counterbalance_effect(at_test, balance.with_value(moment))

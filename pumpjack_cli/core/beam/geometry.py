@@ -162,15 +162,16 @@ class Linkage:
     def motion(self, crank_angle: Any):
         """Link angles [rad] and their crank-angle derivatives at crank angles [rad] (:func:`.linkage.motion`).
 
-        The motion on a grid of :data:`CACHED_GRID` to :data:`LARGEST_CACHED_GRID` angles is
-        kept (read-only) for the next call with the same angles: the run layer asks for the
-        same summary grid many times per card, and a batch for every card of a unit. Larger
-        arrays are not grids asked for again (the time fit of many cards evaluates the
-        angles of all of them at once, new ones at every step) and are not kept."""
+        The motion on a shared grid (a read-only array of at least :data:`CACHED_GRID` angles,
+        as :func:`~pumpjack_cli.core.sampling.crank_grid` makes them) is kept (read-only) for
+        the next call with the same angles: the run layer asks for the same summary grid many
+        times per card, and a batch for every card of a unit. Other arrays (a card's own
+        angles, the time fit's iterates) are asked for once and are not kept."""
         from .linkage import motion
 
         theta = crank_angle
-        if CACHED_GRID <= getattr(theta, "size", 0) <= LARGEST_CACHED_GRID and getattr(theta, "dtype", None) == float:
+        grid = getattr(getattr(theta, "flags", None), "writeable", True) is False
+        if grid and getattr(theta, "size", 0) >= CACHED_GRID and getattr(theta, "dtype", None) == float:
             return _cached_motion(self, theta.tobytes())
         return motion(self, crank_angle)
 
@@ -226,11 +227,8 @@ class Linkage:
         return chord_slider_crank(self)
 
 
-#: Grids of at least this many crank angles, and at most the largest, have their motion cached
-#: (:meth:`Linkage.motion`): the cache's 64 motions then hold at most 64 x 10 arrays of 5760
-#: angles, 30 MB.
+#: Shared grids of at least this many crank angles have their motion cached (:meth:`Linkage.motion`).
 CACHED_GRID = 360
-LARGEST_CACHED_GRID = 16 * CACHED_GRID
 
 
 @functools.lru_cache(maxsize=64)

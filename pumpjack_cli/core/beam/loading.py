@@ -31,7 +31,7 @@ import numpy as np
 
 from ...errors import TorqueError
 from ..sampling import crank_grid
-from .card import Card
+from .card import Card, loop_work
 from ..mechanism import Mechanism
 
 
@@ -70,7 +70,7 @@ def card_works(linkage: Mechanism, cards: list[Card]) -> np.ndarray:
         w = np.asarray(card.load, dtype=float)
         if not (np.all(np.isfinite(s)) and np.all(np.isfinite(w))):
             raise TorqueError("card work: the card is not finite at every point")
-        found[k] = np.sum(0.5 * (w + np.roll(w, -1)) * (np.roll(s, -1) - s))
+        found[k] = loop_work(s, w)
     return found
 
 

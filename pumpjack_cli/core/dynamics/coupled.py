@@ -317,8 +317,7 @@ class _CoupledMarch:
         vd0, fl0, fd0 = float(ch.velocity_drive[0]), float(ch.force_load[0]), float(ch.force_drive[0])
         c = m.damping
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
-        load, drive = np.zeros(n), np.zeros(n)
-        history = np.zeros(2 * n)   # load and drive of the block's samples so far, interleaved
+        history = np.zeros(2 * n)   # pump load and top drive of the block's samples so far, interleaved
         rows = np.empty((n, 8))
         theta_p, omega_p, eps_p, load_p, down = self.theta, self.omega, self.epsilon, self.last_load, self.last_position
         start = theta_p
@@ -352,10 +351,11 @@ class _CoupledMarch:
                 raise PredictionError(
                     f"the crank stalls (omega1 {omega:.3g} 1/s at crank angle {np.degrees(theta) % 360:.1f} deg): "
                     f"the motor cannot turn the unit with this well")
-            load[k], drive[k] = history[2 * k], history[2 * k + 1] = f_k, a_k
+            history[2 * k], history[2 * k + 1] = f_k, a_k
             down = carry_position[k] - s + p_past + pl0 * f_k + pd0 * a_k
             rows[k] = (theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav)
             theta_p, omega_p, eps_p, load_p = theta, omega, eps, f_k
+        load, drive = history[0::2], history[1::2]
         forcing_sum = m.bottom * (ch.tail @ load) - m.participation * (ch.tail @ drive)
         self.carry = ch.response.powers[:, n] * self.carry + forcing_sum
         self.theta, self.omega, self.epsilon, self.last_load, self.last_position = theta_p, omega_p, eps_p, load_p, down

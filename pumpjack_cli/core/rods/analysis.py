@@ -138,6 +138,10 @@ class PumpCardSummary:
     peak_load: np.ndarray
     minimum_load: np.ndarray
 
+    def card(self, index: int) -> PumpCardSummary:
+        """The figures of card ``index`` of cards (K, N)."""
+        return PumpCardSummary(*(value[index] for value in vars(self).values()))
+
 
 def summarise_pump_card(pump_position, pump_load) -> PumpCardSummary:
     """Strokes, fillage and load levels of pump cards; definitions in :class:`PumpCardSummary`.
@@ -177,9 +181,7 @@ def summarise_pump_card(pump_position, pump_load) -> PumpCardSummary:
     crossing = p[rows, before] + weight * (p[rows, first] - p[rows, before])
     net = np.where(unloaded, np.clip(crossing - low, 0.0, stroke), 0.0)
     result = PumpCardSummary(stroke, net, net / stroke, up, down, up - down, f.max(axis=-1), f.min(axis=-1))
-    if single:
-        return PumpCardSummary(*(value[0] for value in vars(result).values()))
-    return result
+    return result.card(0) if single else result
 
 
 def plunger_area(plunger_diameter: float) -> float:

@@ -459,7 +459,8 @@ def balanced_dampings(string: RodString, period, position, load, fluid_load, *, 
         roots, problems = dampings_from_fluid_load(string, period, position, load, fluid_load,
                                                    fluid_density=fluid_density, method=method, solve=solve)
     except DownholeError as exc:
-        roots, problems = np.full(np.atleast_2d(position).shape[0], np.nan), (str(exc),) * np.atleast_2d(position).shape[0]
+        count = np.atleast_2d(position).shape[0]
+        roots, problems = np.full(count, np.nan), (str(exc),) * count
     low, high = PLAUSIBLE_DAMPING
     out = []
     for nu, problem in zip(roots, problems):

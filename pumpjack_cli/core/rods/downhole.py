@@ -291,8 +291,6 @@ def _brent_root(excess, largest: float, count: int) -> tuple[np.ndarray, np.ndar
     vertical well, solved together, do not need to share."""
     from scipy.optimize import brentq
 
-    if count != 1:
-        raise DownholeError("a transfer of its own (solve) takes one card")
     rows, known = np.zeros(1, dtype=int), {}
 
     def one(nu: float) -> float:
@@ -311,9 +309,10 @@ def _brent_root(excess, largest: float, count: int) -> tuple[np.ndarray, np.ndar
 
 def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
                fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
-    """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)."""
-    card = pump_card(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method,
-                     gravity=gravity)
+    """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)
+    (the cards checked once by the caller, :func:`_many`)."""
+    card = _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method,
+                  harmonics=None, gravity=gravity, upward=False)
     return card.pump_position, card.pump_load
 
 
@@ -420,17 +419,18 @@ def dampings_from_fluid_load(string: RodString, period, position, load, fluid_lo
     def excess(nu: np.ndarray, rows: np.ndarray) -> np.ndarray:
         p, f = pump_ends(nu, rows)
         out = np.full(len(rows), np.nan)
-        live = np.array([not problems[r] for r in rows])
+        live = np.array([not problems[r] for r in rows], dtype=bool)
+        p, f = p[live], f[live]
         try:
-            net = summarise_pump_card(p[live], f[live]).net_stroke
+            net = summarise_pump_card(p, f).net_stroke
         except DownholeError:       # a card without a stroke or a load level: each card alone, for its message
-            net = np.full(live.sum(), np.nan)
+            net = np.full(len(p), np.nan)
             for i, r in enumerate(rows[live]):
                 try:
-                    net[i] = summarise_pump_card(p[live][i], f[live][i]).net_stroke
+                    net[i] = summarise_pump_card(p[i], f[i]).net_stroke
                 except DownholeError as exc:
                     problems[r] = str(exc)
-        out[live] = card_work(p[live], f[live]) - fluid[rows[live]] * net
+        out[live] = card_work(p, f) - fluid[rows[live]] * net
         return np.where(np.isnan(out), 0.0, out)    # a card with a problem stops at once
 
     roots, undamped, damped = (decreasing_roots if solve is None else _brent_root)(excess, largest, count)
