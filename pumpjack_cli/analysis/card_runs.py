@@ -33,7 +33,7 @@ from ..core.beam.card import card_from_angles, card_load, periodic_interp, perio
 from ..core.cards import PlacedCard, place_cards
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
-from ..core.rods.plausibility import check_card_loads
+from ..core.rods.plausibility import check_cards_loads
 from ..core.sampling import crank_grid, cycle_period, uniform_time
 from ..errors import CardError, PumpjackError, collected_warnings, warn
 from ..quantities import parse_quantity
@@ -47,6 +47,9 @@ if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
 SPEED_TOLERANCE = 0.02
 #: Steps of the integration t = int dtheta / omega over one revolution.
 FINE_STEPS = 3600
+#: The crank angles of that integration, 0 to 2 pi [rad].
+_FINE = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
+_FINE.flags.writeable = False
 #: Crank-angle points per time sample when a card is put on a uniform time grid.
 RESAMPLE_FACTOR = 8
 #: The strokes ``--stroke`` may choose besides a number (from 1).
@@ -71,13 +74,14 @@ class Reading(PlacedCard):
     stated_line: int | None = None
 
     @cached_property
-    def motion_tables(self) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray], np.ndarray]:
-        """The fitted crank speed's and acceleration's periodic tables and the time from crank angle
-        0 on the fine grid of :func:`_card_motion` (made once for every grid a card is run on)."""
+    def motion_tables(self) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray], np.ndarray,
+                                     np.ndarray]:
+        """The fitted crank speed's and acceleration's periodic tables, and the speed and the time
+        from crank angle 0 on the fine grid of :func:`_card_motion` (made once for every grid a
+        card is run on)."""
         speed = periodic_table(self.crank_angle, self.crank_speed)
-        fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
-        return speed, periodic_table(self.crank_angle, self.crank_acceleration), _elapsed(fine, periodic_interp(fine,
-                                                                                                               speed))
+        fine = periodic_interp(_FINE, speed)
+        return speed, periodic_table(self.crank_angle, self.crank_acceleration), fine, _elapsed(_FINE, fine)
 
 
 def parse_stroke(text: str | None) -> int | str:
@@ -129,9 +133,12 @@ class CardSource:
 
 
 def noted(reading: Reading, unit: UnitConfig, spm: float | None) -> Reading:
-    """The reading checked against what the unit and its rods can produce (:func:`plausible`,
+    """The reading checked against what the unit and its rods can produce (:func:`judged`,
     the one rule of every command), its warnings noted (:func:`~pumpjack_cli.errors.warn`)."""
-    for warning in reading.warnings + plausible(unit, reading, spm):
+    (found,) = judged(unit, [reading], spm)
+    if isinstance(found, CardError):
+        raise found
+    for warning in found:
         warn(warning)
     return reading
 
@@ -241,24 +248,33 @@ def _agree(given: float, known: float, given_name: str, known_name: str, hint: s
 FAST_PUMPING = 20.0
 
 
-def plausible(unit: UnitConfig, placed: Reading, spm: float | None) -> tuple[str, ...]:
-    """Refuse a card the unit and its rods cannot have made, with the same one line for every
-    command (:func:`~pumpjack_cli.core.rods.plausibility.check_card_loads`); the warning of a
-    parted string, if any."""
+def judged(unit: UnitConfig, readings: list[Reading], spm: float | None) -> list[tuple[str, ...] | CardError]:
+    """Each card's warnings (its own and the warning of a parted string, if any), or the refusal
+    of a card the unit and its rods cannot have made, with the same one line for every command
+    (:func:`~pumpjack_cli.core.rods.plausibility.check_cards_loads`, the cards of one unit
+    judged in one array computation)."""
     mechanism = unit.geometry.mechanism()
     theta = crank_grid(PLAUSIBILITY_STEPS)
-    if placed.speed is not None:
-        speed = placed.speed
-    elif placed.stated_speed is not None:
-        speed = placed.stated_speed
-    elif spm is not None or unit.drive is None:
-        speed = parse_quantity(f"{FAST_PUMPING if spm is None else spm} spm", "rotational_speed")
-    else:
-        speed = unit.crank_speed(None)
-    verdict = check_card_loads(card_load(placed.card, theta), mechanism.rod_position(theta), stroke=mechanism.stroke,
-                               crank_speed=speed, well=unit.well_limits(),
-                               structure_rating=unit.ratings().structure_load, source=placed.source)
-    return (verdict.warning,) if verdict.warning else ()
+    verdicts = check_cards_loads(np.array([card_load(r.card, theta) for r in readings]), mechanism.rod_position(theta),
+                                 stroke=mechanism.stroke, crank_speeds=np.array([_judged_speed(unit, r, spm)
+                                                                                 for r in readings]),
+                                 well=unit.well_limits(), structure_rating=unit.ratings().structure_load,
+                                 sources=[r.source for r in readings])
+    return [verdict if isinstance(verdict, CardError) else reading.warnings + ((verdict.warning,) if verdict.warning
+                                                                              else ())
+            for reading, verdict in zip(readings, verdicts)]
+
+
+def _judged_speed(unit: UnitConfig, reading: Reading, spm: float | None) -> float:
+    """The crank speed [1/s] a card's loads are judged at: its time stamps', the SPM its file
+    states, ``--spm``, the drive's, else :data:`FAST_PUMPING`."""
+    if reading.speed is not None:
+        return reading.speed
+    if reading.stated_speed is not None:
+        return reading.stated_speed
+    if spm is not None or unit.drive is None:
+        return parse_quantity(f"{FAST_PUMPING if spm is None else spm} spm", "rotational_speed")
+    return unit.crank_speed(None)
 
 
 def check_speed(card_speed: float | None, spm_option: float | None, source: str = "the card") -> float | None:
@@ -339,33 +355,43 @@ def _elapsed(theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
 
 
 def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:
-    """The crank speed and acceleration fitted to the card's time stamps ([Takacs2016]), on each grid."""
+    """The crank speed and acceleration fitted to the card's time stamps ([Takacs2016]), on each grid
+    (on the grid of the time integration, its values)."""
     if reading.time is None:
         raise PumpjackError(f"{reading.source}: --crank-motion card needs a card with time stamps")
-    fine = np.linspace(0.0, 2.0 * np.pi, FINE_STEPS + 1)
-    speed, acceleration, elapsed = reading.motion_tables
-    return [CardRun(theta, np.interp(theta, fine, elapsed), periodic_interp(theta, speed),
-                    periodic_interp(theta, acceleration), card_load(reading.card, theta),
-                    float(elapsed[-1]), "card") for theta in thetas]
+    speed, acceleration, fine, elapsed = reading.motion_tables
+    runs = []
+    for theta in thetas:
+        on_fine = theta.size == FINE_STEPS and np.array_equal(theta, _FINE[:-1])
+        runs.append(CardRun(theta, elapsed[:-1] if on_fine else np.interp(theta, _FINE, elapsed),
+                            fine[:-1] if on_fine else periodic_interp(theta, speed),
+                            periodic_interp(theta, acceleration), card_load(reading.card, theta), float(elapsed[-1]),
+                            "card"))
+    return runs
 
 
 def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, grids: tuple[int, ...],
               crank_motion: str) -> tuple[Reading, list[CardRun]]:
     """The card read once and run on each crank-angle grid of ``grids`` (steps per revolution)."""
     reading = source.read(unit, spm)
+    return reading, reading_runs(unit, reading, spm, grids, crank_motion)
+
+
+def reading_runs(unit: UnitConfig, reading: Reading, spm: float | None, grids: tuple[int, ...],
+                 crank_motion: str) -> list[CardRun]:
+    """A card read and placed, run on each crank-angle grid of ``grids`` (steps per revolution)."""
     thetas = [crank_grid(steps) for steps in grids]
     if crank_motion == "auto":
         crank_motion = "uniform" if reading.time is None or spm is not None else "card"
     if crank_motion == "uniform":
         omega = uniform_speed(unit, reading, spm)
-        runs = [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),
+        return [CardRun(theta, uniform_time(theta, omega), np.full(theta.size, omega), np.zeros(theta.size),
                         card_load(reading.card, theta), cycle_period(omega), crank_motion) for theta in thetas]
-        return reading, runs
     if spm is not None:
         raise PumpjackError(f"--spm sets a uniform crank speed; with --crank-motion {crank_motion} the "
                             f"{'card' if crank_motion == 'card' else 'motor'} sets the speed")
     if crank_motion == "card":
-        return reading, _card_motion(reading, thetas)
+        return _card_motion(reading, thetas)
     state = steady_state(unit.machine(reading.card), np.concatenate(thetas))
     runs, start = [], 0
     for theta in thetas:
@@ -373,7 +399,7 @@ def card_runs(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: f
         runs.append(CardRun(theta, state.time[part], state.crank_speed[part], state.crank_acceleration[part],
                             card_load(reading.card, theta), state.summary.period, crank_motion))
         start += theta.size
-    return reading, runs
+    return runs
 
 
 def each_card(cards: list, compute) -> tuple[dict[int, object], list, list[list[str]]]:
@@ -419,11 +445,42 @@ class TimeCard:
 
 def time_card(unit: UnitConfig, mechanism: Mechanism, source: CardSource, spm: float | None, samples: int,
               crank_motion: str) -> tuple[Reading, TimeCard]:
-    """The card on ``samples`` equal time steps of one period: the crank's motion (uniform,
-    from the card's time stamps or from the equation of motion) is resolved on a fine
-    crank-angle grid and inverted, so a card of positions only is usable through the
-    unit's exact kinematics."""
-    reading, (run,) = card_runs(unit, mechanism, source, spm, (RESAMPLE_FACTOR * samples,), crank_motion)
-    time = np.arange(samples) * (run.period / samples)
-    theta = np.interp(time, np.append(run.time, run.period), np.append(run.crank_angle, 2.0 * np.pi))
-    return reading, TimeCard(time, theta, mechanism.rod_position(theta), card_load(reading.card, theta), run.period)
+    """The card on ``samples`` equal time steps of one period: :func:`time_cards` of one card."""
+    readings, errors, said = time_cards(unit, mechanism, [source], spm, samples, crank_motion)
+    return alone([(readings.get(0, errors[0]), tuple(said[0]))])
+
+
+def time_cards(unit: UnitConfig, mechanism: Mechanism, sources: list, spm: float | None, samples: int,
+               crank_motion: str) -> tuple[dict[int, tuple[Reading, TimeCard]], list, list[list[str]]]:
+    """Each card on ``samples`` equal time steps of one period, as :func:`each_card` gives them
+    (the readings and time cards by the cards' indices, each card's error and warnings): the
+    crank's motion (uniform, from the card's time stamps or from the equation of motion) is
+    resolved on a fine crank-angle grid and inverted, so a card of positions only is usable
+    through the unit's exact kinematics; the polished rod's positions of all the cards are one
+    array computation."""
+    grid = crank_grid(RESAMPLE_FACTOR * samples)
+
+    def timed(source) -> tuple[Reading, np.ndarray, float]:
+        reading = source.read(unit, spm)
+        card_motion = reading.time is not None and (crank_motion == "card" or (crank_motion == "auto" and spm is None))
+        if card_motion and spm is None:       # the time integration's table, without the rest of a run
+            *_, elapsed = reading.motion_tables
+            when, period = np.interp(grid, _FINE, elapsed), float(elapsed[-1])
+        else:
+            (run,) = reading_runs(unit, reading, spm, (grid.size,), crank_motion)
+            when, period = run.time, run.period
+        time = np.arange(samples) * (period / samples)
+        return reading, np.interp(time, np.append(when, period), np.append(grid, 2.0 * np.pi)), period
+
+    found, errors, said = each_card(sources, timed)
+    keys = sorted(found)
+    if not keys:
+        return {}, errors, said
+    thetas = np.array([found[k][1] for k in keys])
+    positions = mechanism.rod_position(thetas.ravel()).reshape(thetas.shape)
+    cards = {}
+    for k, theta, position in zip(keys, thetas, positions):
+        reading, _, period = found[k]
+        cards[k] = reading, TimeCard(np.arange(samples) * (period / samples), theta, position,
+                                     card_load(reading.card, theta), period)
+    return cards, errors, said

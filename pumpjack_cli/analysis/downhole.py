@@ -41,7 +41,7 @@ from ..core.rods.production import (energy_per_day, fluid_above_pump, inferred_p
 from ..core.rods.pump import discharge_pressure
 from ..errors import DownholeError, PumpjackError, collected_warnings, warn
 from ..results import Column, Curve, Panel, Result, Scalar
-from .card_runs import CardSource, alone, each_card, time_card
+from .card_runs import CardSource, alone, time_cards
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
                        surveyed, with_survey)
 from .inputs import dead_position_marks
@@ -126,7 +126,7 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     unit.require_well()
     string = unit.rods()
     linkage = unit.geometry.mechanism()
-    surfaces, found, said = each_card(cards, lambda card: time_card(unit, linkage, card, spm, samples, crank_motion))
+    surfaces, found, said = time_cards(unit, linkage, cards, spm, samples, crank_motion)
     path = deviated_path(unit)
     if path is None:
         pumps = _vertical_pumps(unit, string, cards, surfaces, damping, method, said)

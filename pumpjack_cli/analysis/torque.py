@@ -68,21 +68,31 @@ class _Torques:
     net: np.ndarray
 
 
-def _torques(unit: UnitConfig, linkage, spatial_masses, masses, balance: CounterbalanceModel, run: CardRun,
-             method: str) -> _Torques:
-    """The torque terms of a run; the exact net torque too when ``spatial_masses`` (the masses of
-    a unit with the spatial model) are given."""
-    parts = torque_components(linkage, run.crank_angle, run.load, balance,
-                              beam_inertia=beam_group_inertia(linkage, masses) if masses else 0.0,
-                              rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
-                              crank_speed=run.crank_speed, crank_acceleration=run.crank_acceleration)
-    api = (parts.rod_load + parts.structural + parts.counterbalance + parts.articulating_inertia
-           + parts.rotary_inertia)
-    exact = None
-    if spatial_masses is not None:
-        basis = _exact_basis(unit.spatial(), spatial_masses, run.crank_angle.tobytes())
-        exact = basis.torque(run.load, run.crank_speed, run.crank_acceleration)
-    return _Torques(run, parts, api, exact, exact if method == "exact" else api)
+def _torques(context: _TorqueContext, run: CardRun) -> _Torques:
+    """The torque terms of a run; the exact net torque too for a unit with the spatial model and masses."""
+    parts = _components(context, run.crank_angle, run.load, run.crank_speed, run.crank_acceleration)
+    api = parts.net
+    exact = _exact_torque(context, run.crank_angle, run.load, run.crank_speed, run.crank_acceleration)
+    return _Torques(run, parts, api, exact, exact if context.method == "exact" else api)
+
+
+def _components(context: _TorqueContext, theta: np.ndarray, load: np.ndarray, speed: np.ndarray,
+                acceleration: np.ndarray) -> TorqueComponents:
+    """The torque terms [N·m] of loads on the crank grid ``theta`` (one card (N,) or K cards (K, N))."""
+    masses = context.masses
+    return torque_components(context.linkage, theta, load, context.balance,
+                             beam_inertia=beam_group_inertia(context.linkage, masses) if masses else 0.0,
+                             rotary_inertia=crank_group_inertia(masses) if masses else 0.0,
+                             crank_speed=speed, crank_acceleration=acceleration)
+
+
+def _exact_torque(context: _TorqueContext, theta: np.ndarray, load: np.ndarray, speed: np.ndarray,
+                  acceleration: np.ndarray) -> np.ndarray | None:
+    """The exact net torque [N·m] (None without the spatial model and masses), shaped as ``load``."""
+    if context.spatial_masses is None:
+        return None
+    return _exact_basis(context.unit.spatial(), context.spatial_masses, theta.tobytes()).torque(load, speed,
+                                                                                                   acceleration)
 
 
 @functools.lru_cache(maxsize=32)
@@ -252,20 +262,23 @@ def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[C
     """The torques of K cards on the summary grid, their balances and duties (raises for a card
     whose figures cannot be made)."""
     linkage, balance = context.linkage, context.balance
-    dense = [_torques(context.unit, linkage, context.spatial_masses, context.masses, balance, run[-1], context.method)
-             for run in runs]
-    theta = dense[0].run.crank_angle
-    dt = np.array([1.0 / t.run.crank_speed for t in dense])   # time share of each point of the uniform grid
-    frequency = np.array([1.0 / t.run.period for t in dense])
+    dense = [run[-1] for run in runs]
+    theta = dense[0].crank_angle
+    load = np.array([run.load for run in dense])
+    speed = np.array([run.crank_speed for run in dense])
+    acceleration = np.array([run.crank_acceleration for run in dense])
+    parts = _components(context, theta, load, speed, acceleration)
+    api = parts.net
+    exact = _exact_torque(context, theta, load, speed, acceleration)
+    net = exact if context.method == "exact" else api
+    dt = 1.0 / speed                                     # time share of each point of the uniform grid
+    frequency = np.array([1.0 / run.period for run in dense])
     recommendations = recommend_counterbalances(
-        criterion, linkage, theta, np.array([t.run.load for t in dense]), balance, weights=dt,
-        test_angle=context.test_angle,
-        extra_torque=np.array([t.net - t.components.rod_load - t.components.structural - t.components.counterbalance
-                               for t in dense]))
+        criterion, linkage, theta, load, balance, weights=dt, test_angle=context.test_angle,
+        extra_torque=net - parts.rod_load - parts.structural - parts.counterbalance)
     for found in recommendations:
         if found.value is None:
             raise PumpjackError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms")
-    net = np.array([t.net for t in dense])
     values = np.array([r.value for r in recommendations])
     recommended = _with_value(balance, linkage, theta, net, values[:, None])
     current = net if context.balance_known else None
@@ -277,8 +290,8 @@ def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[C
         peaks["current"] = peaks_of(theta, current)
         strokes = stroke_peaks(linkage, theta, current)
         extremes = extremes_of(theta, current)
-    if dense[0].exact is not None:
-        peaks["exact"] = peaks_of(theta, np.array([t.exact - t.api for t in dense]))
+    if exact is not None:
+        peaks["exact"] = peaks_of(theta, exact - api)
     return _DenseFigures(card_works(linkage, cards), frequency, recommendations, duty, peaks, strokes, extremes)
 
 
@@ -340,7 +353,7 @@ def _card_result(context: _TorqueContext, card: Card, runs: list[CardRun], figur
     levels = _rating_levels(rated)
     columns, panels, headline = [], (), None
     if len(runs) == 2:
-        out = _torques(unit, linkage, context.spatial_masses, masses, balance, runs[0], context.method)
+        out = _torques(context, runs[0])
         columns = _columns(linkage, out, context.balance_known, _with_value(balance, linkage, out.run.crank_angle, out.net, recommendation.value), rated)
         headline = next(c for c in columns
                         if c.name == ("net_torque" if context.balance_known else "recommended_net_torque"))

@@ -33,6 +33,7 @@ from .beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_po
                         fit_rotations, largest_gap, loop_work, time_samples, upstroke_points)
 from .beam.geometry import CLOCKWISE, COUNTERCLOCKWISE
 from .mechanism import Mechanism
+from .sampling import wrapped
 
 #: Relative stroke mismatch refused, and warned about (the card is scaled to the unit's stroke).
 STROKE_ERROR = 0.05
@@ -239,7 +240,7 @@ def _prepared(mechanism: Mechanism, card: CardSamples) -> PlacedCard | _TimeCard
     load, crank_angle, position, time = card["load"], card.get("crank_angle"), card.get("position"), card.get("time")
     source, reversed = card.get("source", "the card"), card.get("reversed", False)
     if crank_angle is not None:
-        theta = np.asarray(crank_angle, dtype=float) % (2.0 * math.pi)
+        theta = wrapped(crank_angle)
         if np.all(theta == theta[0]):
             raise CardError(f"{source}: every crank angle is {math.degrees(theta[0]):.6g} deg; a card covers a whole cycle")
         _check_coverage(theta, source, "crank angles")

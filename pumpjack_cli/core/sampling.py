@@ -61,6 +61,19 @@ def _grid(steps: int) -> np.ndarray:
     return grid
 
 
+def wrapped(angle) -> np.ndarray:
+    """Angles [rad] taken modulo 2 pi, into [0, 2 pi): the array itself when it already lies
+    there (a crank grid, a card's placed angles), for ``numpy.mod`` of floats is costly.
+
+    >>> wrapped(np.array([-0.5, 7.0])).round(4).tolist(), wrapped(crank_grid(4)) is crank_grid(4)
+    ([5.7832, 0.7168], True)
+    """
+    angle = np.asarray(angle, dtype=float)
+    if angle.size and angle.min() >= 0.0 and angle.max() < 2.0 * np.pi:
+        return angle
+    return angle % (2.0 * np.pi)
+
+
 def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
     """Maximum and minimum of a periodic curve sampled on a uniform crank-angle grid.
 

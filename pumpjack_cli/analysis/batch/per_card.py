@@ -23,7 +23,7 @@ from datetime import datetime, timedelta
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ...errors import PumpjackError, collected_warnings, warn
+from ...errors import CardError, PumpjackError, collected_warnings, warn
 from ...readers.catalogue import read_catalogue
 from ...readers.manifest import Job
 from ...readers.unit_files import read_table
@@ -154,33 +154,36 @@ def _with_rod_string(unit: UnitConfig, path: str):
 
 
 class _PlacedOnce:
-    """A raw card placed once for all the analyses of a card (duck-typed CardSource), its
-    warnings given to each analysis that reads it; placed with the other cards of its unit
-    (:meth:`place_together`) or, when first read, alone."""
+    """A raw card placed and judged once for all the analyses of a card (duck-typed CardSource),
+    its warnings given to each analysis that reads it; placed and judged with the other cards
+    of its unit (:meth:`place_together`) or, when first read, alone."""
 
     def __init__(self, raw, name: str):
         self.raw, self.name = raw, name
-        self._placed = None
-        self._reading: tuple | None = None
+        self._reading: tuple | CardError | None = None
 
     @staticmethod
-    def place_together(cards: list[_PlacedOnce], unit) -> None:
-        """Place the cards of one unit in one array computation (:func:`..card_runs.place_all`)."""
-        from ..card_runs import place_all
+    def place_together(cards: list[_PlacedOnce], unit, spm) -> None:
+        """Place the cards of one unit in one array computation (:func:`..card_runs.place_all`) and
+        judge their loads so (:func:`..card_runs.judged`)."""
+        from ..card_runs import judged, place_all
 
-        for card, placed in zip(cards, place_all([c.raw for c in cards], unit.geometry.mechanism())):
-            card._placed = placed
+        placed = place_all([c.raw for c in cards], unit.geometry.mechanism())
+        good = [k for k, found in enumerate(placed) if not isinstance(found, CardError)]
+        for k, found in enumerate(placed):
+            cards[k]._reading = found if isinstance(found, CardError) else None
+        for k, verdict in zip(good, judged(unit, [placed[k] for k in good], spm) if good else []):
+            cards[k]._reading = verdict if isinstance(verdict, CardError) else (placed[k], verdict)
 
     def read(self, unit, spm=None):
         from ..card_runs import noted, place
 
         if self._reading is None:
-            placed = self._placed if self._placed is not None else place(self.raw, unit.geometry.mechanism())
-            if isinstance(placed, Exception):
-                raise placed
             with collected_warnings() as said:
-                reading = noted(placed, unit, spm)
+                reading = noted(place(self.raw, unit.geometry.mechanism()), unit, spm)
             self._reading = reading, tuple(said)
+        if isinstance(self._reading, CardError):
+            raise self._reading
         for text in self._reading[1]:
             warn(text)
         return self._reading[0]
@@ -311,7 +314,8 @@ def analyse_chunk(chunk: list[tuple[int, dict]], options: dict) -> list[tuple[in
             groups.setdefault(key, []).append(stroke)
         for members in groups.values():
             _attempt(lambda: _PlacedOnce.place_together([s.card for s in members],
-                                                        _unit(members[0].job, settings.catalogue)[0]))
+                                                        _unit(members[0].job, settings.catalogue)[0],
+                                                        members[0].job.spm))
         for analysis in settings.analyses:
             for members in groups.values():
                 _together(analysis, members, settings)

@@ -46,29 +46,19 @@ def _lines(base: np.ndarray, sine: np.ndarray, moment: float) -> np.ndarray:
     return base - moment * sine
 
 
-def _strokes(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> tuple[np.ndarray, ...]:
-    """The lines (a, s) of the upstroke and of the downstroke: (a_up, s_up, a_down, s_down)."""
-    return base[upstroke], sine[upstroke], base[~upstroke], sine[~upstroke]
-
-
-def _peaks(lines: tuple[np.ndarray, ...], moment: float) -> tuple[float, float]:
-    """Largest net torque of the upstroke and of the downstroke at ``moment`` (:func:`_strokes`)."""
-    base_up, sine_up, base_down, sine_down = lines
-    return float(np.max(base_up - moment * sine_up)), float(np.max(base_down - moment * sine_down))
-
-
 def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> float | None:
     """M >= 0 at which the largest net torques of the up- and the downstroke are equal.
 
     With T_i(M) = a_i - M s_i (a = net torque without counterbalance, s = sin(theta -
     tau)), U(M) = max over the upstroke of T and D(M) = max over the downstroke are
     convex piecewise-linear; g = U - D is piecewise-linear but need not be monotonic.
-    Each maximum follows its upper envelope (:func:`_front`), whose lines take over one
+    Each maximum follows its upper envelope (:func:`_fronts`), whose lines take over one
     from the next at known M; between the union of those M (and beyond the last) one line
     of each stroke leads, g is linear, and its root there, if it lies in the piece, is the
     exact intersection of the two lines. Every root at M >= 0 is found so; of several the
     one with the smallest largest |T| is returned; None when g has no root at M >= 0 (the
-    criterion cannot be met by any counterbalance).
+    criterion cannot be met by any counterbalance). This is :func:`equal_peaks_moments`
+    of one card.
 
     Parameters
     ----------
@@ -97,59 +87,113 @@ def equal_peaks_moment(base: np.ndarray, sine: np.ndarray, upstroke: np.ndarray)
     """
     base, sine = np.asarray(base, dtype=float), np.asarray(sine, dtype=float)
     _check("equal peak torques", base, sine)
+    found = float(equal_peaks_moments(base[None], sine, upstroke)[0])
+    return None if math.isnan(found) else found
+
+
+def equal_peaks_moments(bases: np.ndarray, sine: np.ndarray, upstroke: np.ndarray) -> np.ndarray:
+    """:func:`equal_peaks_moment` of K cards on one crank grid, ``bases`` (K, N), their sine and
+    strokes shared: M (K,) [N·m], NaN where no M >= 0 makes the stroke peaks equal. Each card's
+    envelopes, pieces and roots are rows of arrays; every card gets the moment it has alone."""
+    bases, sine = np.asarray(bases, dtype=float), np.asarray(sine, dtype=float)
     up = np.asarray(upstroke, dtype=bool)
-    if up.shape != base.shape or not np.any(up) or np.all(up):
+    if up.shape != sine.shape or not np.any(up) or np.all(up):
         raise TorqueError("equal peak torques: the crank angles must cover both the upstroke and the downstroke")
-    strokes = _strokes(base, sine, up)
-    (a_up, s_up, at_up), (a_down, s_down, at_down) = _leading(*strokes[:2]), _leading(*strokes[2:])
-    cuts = np.unique(np.concatenate(([0.0], at_up[at_up > 0.0], at_down[at_down > 0.0])))
-    i, j = np.searchsorted(at_up, cuts, side="right"), np.searchsorted(at_down, cuts, side="right")
-    gap, turn = a_up[i] - a_down[j], s_up[i] - s_down[j]        # g = gap - M turn on each piece
+    (a_up, s_up, at_up), (a_down, s_down, at_down) = (_leading(bases, sine, np.flatnonzero(mask))
+                                                      for mask in (up, ~up))
+    rows = np.arange(len(bases))[:, None]
+    cuts = np.sort(np.concatenate((np.zeros((len(bases), 1)), np.where(at_up > 0.0, at_up, np.inf),
+                                   np.where(at_down > 0.0, at_down, np.inf)), axis=1), axis=1)
+    cuts[:, 1:][cuts[:, 1:] == cuts[:, :-1]] = np.inf           # each cut once
+    cuts = np.sort(cuts, axis=1)
+    following = np.append(cuts[:, 1:], np.full((len(bases), 1), np.inf), axis=1)
+    i = np.sum(at_up[:, None, :] <= cuts[:, :, None], axis=2)  # the line leading from each cut on
+    j = np.sum(at_down[:, None, :] <= cuts[:, :, None], axis=2)
+    gap, turn = a_up[rows, i] - a_down[rows, j], s_up[rows, i] - s_down[rows, j]    # g = gap - M turn
     with np.errstate(divide="ignore", invalid="ignore"):
         root = np.where(turn != 0.0, gap / np.where(turn != 0.0, turn, 1.0), np.nan)
-    inside = (turn != 0.0) & (root >= cuts) & (root <= np.append(cuts[1:], np.inf))
-    same = (turn == 0.0) & (gap == 0.0)                          # the same line leads both strokes: g = 0
-    roots = np.unique(np.concatenate((root[inside], cuts[same])))
-    if not roots.size:
-        return None
-    return float(min(roots, key=lambda m: float(np.max(np.abs(_lines(base, sine, m))))))
+    cut = np.isfinite(cuts)
+    inside = cut & (turn != 0.0) & (root >= cuts) & (root <= following)
+    same = cut & (turn == 0.0) & (gap == 0.0)                 # the same line leads both strokes: g = 0
+    roots = np.sort(np.where(inside, root, np.where(same, cuts, np.nan)), axis=1)
+    roots[:, 1:][roots[:, 1:] == roots[:, :-1]] = np.nan        # each root once
+    roots = np.sort(roots, axis=1)
+    count = np.sum(~np.isnan(roots), axis=1)
+    found = np.where(count > 0, roots[:, 0], np.nan)
+    several = np.flatnonzero(count > 1)
+    if several.size:       # of several roots the one of the smallest largest |T|, the first of equals
+        peak = np.full((several.size, roots.shape[1]), np.inf)
+        for r in range(int(count.max())):
+            live = count[several] > r
+            peak[live, r] = np.max(np.abs(bases[several[live]] - roots[several[live], r:r + 1] * sine), axis=1)
+        found[several] = roots[several, np.argmin(peak, axis=1)]
+    return found
 
 
-def _leading(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The lines of the upper envelope (:func:`_front`) in the order they lead as M grows from 0,
-    and the M at which each after the first takes over from the one before (increasing)."""
-    a, s = _front(base, sine)
-    a, s = a[::-1], s[::-1]
-    at = np.maximum.accumulate((a[:-1] - a[1:]) / (s[:-1] - s[1:])) if a.size > 1 else np.zeros(0)
-    return a, s, at
+def _leading(bases: np.ndarray, sine: np.ndarray, columns: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The lines of each card's upper envelope over ``columns`` (:func:`_fronts`) in the order they
+    lead as M grows from 0, and the M at which each after the first takes over from the one
+    before (increasing; +inf past a card's last line): arrays (K, E), (K, E), (K, E - 1)."""
+    a, s, size = _fronts(bases[:, columns], sine[columns])
+    a, s = _reverse_rows(a, size), _reverse_rows(s, size)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        at = np.maximum.accumulate((a[:, :-1] - a[:, 1:]) / (s[:, :-1] - s[:, 1:]), axis=1)
+    return a, s, np.where(np.arange(a.shape[1] - 1) < size[:, None] - 1, at, np.inf)
 
 
-def _front(base: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The lines a_i - M s_i that are the largest for some M >= 0: their upper envelope, in the
-    order of s.
+def _reverse_rows(values: np.ndarray, size: np.ndarray) -> np.ndarray:
+    """Each row's first ``size`` entries in reverse order (the padding after them kept)."""
+    columns = np.arange(values.shape[1])
+    index = np.where(columns < size[:, None], size[:, None] - 1 - columns, columns)
+    return np.take_along_axis(values, index, axis=1)
+
+
+def _fronts(bases: np.ndarray, sine: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The lines a_i - M s_i of each of K cards (``bases`` (K, n), ``sine`` (n,)) that are the
+    largest for some M >= 0: their upper envelope, in the order of s, as rows padded with NaN
+    after each card's ``size`` lines: (a (K, E), s (K, E), size (K,)).
 
     Line j is at or above line i for every M >= 0 when a_j >= a_i and s_j <= s_i, so first
-    only the lines above every line of smaller (or equal, earlier) s are kept: in the order
-    of s their a increases, and the last is the largest at M = 0. From it the envelope is
-    followed as M grows: the next line is the one of smaller s that overtakes the present
-    one first, at M = (a_j - a_i) / (s_j - s_i) (of equal such M the one of smallest s, the
-    others leading at a single point), until the line of smallest s (the convex-hull trick).
-    The maximum over the envelope is the maximum over all lines; a line that would lead only
-    by rounding may be left out, which moves the maximum by a rounding error."""
+    only the lines above every line of smaller (or equal, earlier) s are kept (of equal s the
+    largest a): in the order of s their a increases, and the last is the largest at M = 0.
+    From it the envelope is followed as M grows: the next line is the one of smaller s that
+    overtakes the present one first, at M = (a_j - a_i) / (s_j - s_i) (of equal such M the
+    one of smallest s, the others leading at a single point), until the line of smallest s
+    (the convex-hull trick), every card's next line found at once. The maximum over the
+    envelope is the maximum over all lines; a line that would lead only by rounding may be
+    left out, which moves the maximum by a rounding error."""
     order = np.argsort(sine, kind="stable")
-    a, s = base[order], sine[order]
-    before = np.concatenate(([-np.inf], np.maximum.accumulate(a)[:-1]))
-    keep = a > before
-    a, s = a[keep], s[keep]
-    distinct = np.append(s[1:] != s[:-1], True)        # of equal s the last, whose a is largest
-    a, s = a[distinct], s[distinct]
-    chain = [a.size - 1]
-    while chain[-1] > 0:
-        i = chain[-1]
-        takeover = (a[i] - a[:i]) / (s[i] - s[:i])
-        chain.append(int(np.flatnonzero(takeover == takeover.min())[0]))
-    chosen = np.array(chain[::-1])
-    return a[chosen], s[chosen]
+    s_sorted = sine[order]
+    starts = np.flatnonzero(np.append(True, s_sorted[1:] != s_sorted[:-1]))
+    a = np.maximum.reduceat(bases[:, order], starts, axis=1)      # of equal s the largest a
+    before = np.concatenate((np.full((len(a), 1), -np.inf), np.maximum.accumulate(a, axis=1)[:, :-1]), axis=1)
+    a, s, size = _compact(a, np.broadcast_to(s_sorted[starts], a.shape), a > before)
+    present = size - 1
+    leads = np.zeros(a.shape, dtype=bool)
+    leads[np.arange(len(a)), present] = True
+    while True:
+        k = np.flatnonzero(present > 0)
+        if not k.size:
+            return _compact(a, s, leads)
+        at = present[k]
+        width = int(at.max())
+        with np.errstate(divide="ignore", invalid="ignore"):
+            takeover = (a[k, at][:, None] - a[k, :width]) / (s[k, at][:, None] - s[k, :width])
+        takeover[np.arange(width) >= at[:, None]] = np.inf
+        present[k] = np.argmin(takeover, axis=1)
+        leads[k, present[k]] = True
+
+
+def _compact(a: np.ndarray, s: np.ndarray, chosen: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The chosen entries of each row of ``a`` and ``s`` (K, n), in order, as rows padded with NaN,
+    and their number in each row."""
+    rows, columns = np.nonzero(chosen)
+    size = np.bincount(rows, minlength=len(a))
+    place = np.arange(rows.size) - (np.cumsum(size) - size)[rows]
+    shape = (len(a), max(int(size.max()), 1))
+    kept_a, kept_s = np.full(shape, np.nan), np.full(shape, np.nan)
+    kept_a[rows, place], kept_s[rows, place] = a[rows, columns], s[rows, columns]
+    return kept_a, kept_s, size
 
 
 def min_rms_moment(base: np.ndarray, sine: np.ndarray, weights: np.ndarray | None = None) -> float:
@@ -360,29 +404,32 @@ def recommend_counterbalances(criterion: str, linkage: Mechanism, crank_angle: n
     up = upstroke_mask(linkage, theta)
     at_test = linkage.motion(np.array([test_angle]))
     name = balance.variable.replace("_", " ")
+    notes = [""] * len(bases)
+    if criterion == "equal-peaks":
+        moments = equal_peaks_moments(bases, sine, up)
+    elif criterion == "min-rms":
+        moments = np.array([min_rms_moment(base, sine, None if weights is None else weights[k])
+                            for k, base in enumerate(bases)])
+        for below in np.flatnonzero(moments < 0):
+            notes[below] = (f"the RMS torque is least at a {name} of {moments[below]:.6g} {balance.symbol} < 0; 0 is "
+                            f"the best counterbalance")
+        moments = np.maximum(moments, 0.0)
+    else:
+        moments = np.array([min_peak_moment(base, sine) for base in bases])
+    torque = bases - np.where(np.isnan(moments), 0.0, moments)[:, None] * sine
+    upstroke_peak, downstroke_peak = np.max(torque[:, up], axis=1), np.max(torque[:, ~up], axis=1)
+    w = np.ones_like(torque) if weights is None else np.asarray(weights, dtype=float)
+    rms = np.sqrt(np.sum(w * torque * torque, axis=1) / np.sum(w, axis=1))
+    peak = np.max(np.abs(torque), axis=1)
     found = []
-    for k, base in enumerate(bases):
-        note = ""
-        if criterion == "equal-peaks":
-            moment = equal_peaks_moment(base, sine, up)
-            if moment is None:
-                u, d = _peaks(_strokes(base, sine, up), 0.0)
-                found.append(BalanceRecommendation(criterion, None, None, None, None, None, None,
-                                                   f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke "
-                                                   f"peak is {u:.6g} N·m, the downstroke peak {d:.6g} N·m)"))
-                continue
-        elif criterion == "min-rms":
-            moment = min_rms_moment(base, sine, None if weights is None else weights[k])
-            if moment < 0:
-                note = (f"the RMS torque is least at a {name} of {moment:.6g} {balance.symbol} < 0; 0 is the best "
-                        f"counterbalance")
-                moment = 0.0
-        else:
-            moment = min_peak_moment(base, sine)
-        torque = _lines(base, sine, moment)
-        u, d = _peaks(_strokes(base, sine, up), moment)
-        w = np.ones_like(torque) if weights is None else np.asarray(weights[k], dtype=float)
-        rms = math.sqrt(float(np.sum(w * torque * torque) / np.sum(w)))
+    for k, moment in enumerate(moments.tolist()):
+        if math.isnan(moment):
+            found.append(BalanceRecommendation(criterion, None, None, None, None, None, None,
+                                               f"no {name} >= 0 makes the stroke peaks equal (at 0 the upstroke "
+                                               f"peak is {upstroke_peak[k]:.6g} N·m, the downstroke peak "
+                                               f"{downstroke_peak[k]:.6g} N·m)"))
+            continue
         cbe = counterbalance_effect(at_test, balance.with_value(moment))
-        found.append(BalanceRecommendation(criterion, moment, float(np.max(np.abs(torque))), u, d, rms, cbe, note))
+        found.append(BalanceRecommendation(criterion, moment, float(peak[k]), float(upstroke_peak[k]),
+                                           float(downstroke_peak[k]), float(rms[k]), cbe, notes[k]))
     return found

@@ -38,6 +38,7 @@ import numpy as np
 
 from ...errors import CardError
 from ..mechanism import Mechanism
+from ..sampling import wrapped
 from .geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
@@ -81,7 +82,7 @@ def periodic_table(crank_angle: np.ndarray, values: np.ndarray) -> tuple[np.ndar
     """The (angles, values) table of a curve over one revolution for :func:`periodic_interp`: the
     angles taken modulo 2 pi and sorted, one sample carried over each end (what
     ``numpy.interp(..., period=2 pi)`` builds at every call, made once)."""
-    angle = np.asarray(crank_angle, dtype=float) % (2.0 * np.pi)
+    angle = wrapped(crank_angle)
     order = np.argsort(angle)
     angle, values = angle[order], np.asarray(values, dtype=float)[order]
     return (np.concatenate((angle[-1:] - 2.0 * np.pi, angle, angle[:1] + 2.0 * np.pi)),
@@ -91,7 +92,7 @@ def periodic_table(crank_angle: np.ndarray, values: np.ndarray) -> tuple[np.ndar
 def periodic_interp(crank_angle: np.ndarray, table: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
     """A curve of :func:`periodic_table` at any crank angles (taken modulo 2 pi), by linear
     interpolation: ``numpy.interp(crank_angle, ..., period=2 pi)`` of the curve, to the bit."""
-    return np.interp(np.asarray(crank_angle, dtype=float) % (2.0 * np.pi), *table)
+    return np.interp(wrapped(crank_angle), *table)
 
 
 @dataclass(frozen=True)
@@ -244,7 +245,7 @@ def card_from_angles(crank_angle: np.ndarray, load: np.ndarray) -> Card:
     >>> card.crank_angle.tolist(), card.load.tolist()
     ([0.1, 0.5], [5.0, 15.0])
     """
-    theta = np.asarray(crank_angle, dtype=float) % (2.0 * np.pi)
+    theta = wrapped(crank_angle)
     unique, inverse = np.unique(theta, return_inverse=True)
     sums = np.bincount(inverse, weights=np.asarray(load, dtype=float))
     return Card(crank_angle=unique, load=sums / np.bincount(inverse))

@@ -150,7 +150,7 @@ def check_card_loads(load: np.ndarray, position: np.ndarray, *, stroke: float, c
                      well: WellLimits | None, structure_rating: float | None, source: str,
                      gravity: float = STANDARD_GRAVITY) -> Verdict:
     """Refuse a card this unit and its rods cannot have made, or pass it (with a warning for a
-    parted string); the rule of the module docstring.
+    parted string); the rule of the module docstring (:func:`check_cards_loads` of one card).
 
     Parameters
     ----------
@@ -180,61 +180,93 @@ def check_card_loads(load: np.ndarray, position: np.ndarray, *, stroke: float, c
     CardError
         One line naming the card, the figure, the limit and, where one fits, the unit slip.
     """
-    load = np.asarray(load, dtype=float)
-    peak, low, median, spread = float(load.max()), float(load.min()), float(np.median(load)), float(np.ptp(load))
-    kn = 1e-3
+    (found,) = check_cards_loads(np.asarray(load, dtype=float)[None], position, stroke=stroke,
+                                 crank_speeds=np.array([crank_speed]), well=well, structure_rating=structure_rating,
+                                 sources=[source], gravity=gravity)
+    if isinstance(found, CardError):
+        raise found
+    return found
+
+
+def check_cards_loads(loads: np.ndarray, position: np.ndarray, *, stroke: float, crank_speeds: np.ndarray,
+                      well: WellLimits | None, structure_rating: float | None, sources: list[str],
+                      gravity: float = STANDARD_GRAVITY) -> list[Verdict | CardError]:
+    """:func:`check_card_loads` of K cards of one unit on one crank grid (``loads`` (K, N), their
+    mean crank speeds (K,) and names): each card's verdict or its error, the figures of all
+    the cards one array computation."""
+    loads = np.asarray(loads, dtype=float)
+    peaks, lows, spreads = loads.max(axis=1), loads.min(axis=1), np.ptp(loads, axis=1)
     if well is None:
-        if structure_rating is None:
-            return Verdict()
-        if not RATING_LOW * structure_rating <= spread <= RATING_HIGH * structure_rating:
-            raise CardError(f"{source}: the card's load range {spread * kn:.4g} kN is "
-                            f"{spread / structure_rating:.3g} x the unit's structure rating "
-                            f"{structure_rating * kn:.4g} kN (plausible: {RATING_LOW:g} to {RATING_HIGH:g} x); "
-                            f"check the load column's unit")
-        if peak > PEAK_RATING * structure_rating:
-            raise CardError(f"{source}: the card's peak load {peak * kn:.4g} kN is {peak / structure_rating:.3g} x "
-                            f"the unit's structure rating {structure_rating * kn:.4g} kN (plausible: up to "
-                            f"{PEAK_RATING:g} x); check the load column's unit")
-        return Verdict()
+        return [_rated(float(peak), float(spread), structure_rating, source)
+                for peak, spread, source in zip(peaks, spreads, sources)]
+    medians = np.median(loads, axis=1)
+    slopes = load_transfer_slope(position, loads)
     rods = well.rods
     air = rods.weight_in_air(gravity)
     buoyant = rods.buoyant_weight(well.fluid_density, gravity) if well.hanging_weight is None else well.hanging_weight
-    alpha = stroke * crank_speed**2 / (2.0 * gravity)
-    upper = PEAK_FACTOR * (air + well.max_fluid_load) * (1.0 + 2.0 * alpha)
+    shortest = float(rods.buoyant_weight_per_length(well.fluid_density, gravity)[0]) * SHORTEST_HANGING
+    alphas = stroke * np.asarray(crank_speeds, dtype=float)**2 / (2.0 * gravity)
+    uppers = PEAK_FACTOR * (air + well.max_fluid_load) * (1.0 + 2.0 * alphas)
+    figures = (f"W_r {air * _KN:.4g} kN, W_rf {buoyant * _KN:.4g} kN, F_max {well.max_fluid_load * _KN:.4g} kN")
+    out: list[Verdict | CardError] = []
+    for k, source in enumerate(sources):
+        peak, low, median, spread, upper = (float(x[k]) for x in (peaks, lows, medians, spreads, uppers))
+        problem = ""
+        if peak > upper:
+            problem = (f"peak load {peak * _KN:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
+                       f"{upper * _KN:.4g} kN")
+        elif spread > upper:
+            problem = (f"load range {spread * _KN:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
+                       f"{upper * _KN:.4g} kN")
+        elif low > air:
+            problem = f"minimum load {low * _KN:.4g} kN is above the rods' weight in air W_r: wrong load datum?"
+        elif median < shortest:
+            problem = f"median load {median * _KN:.4g} kN is less than the weight of one rod ({SHORTEST_HANGING:g} m)"
+        elif median < buoyant:
+            depth, off = free_end(loads[k], position, 2.0 * np.pi / float(crank_speeds[k]), rods, well.fluid_density,
+                                  gravity)
+            if off <= PARTED_FLATNESS and depth < PUMP_END * rods.total_length:
+                out.append(Verdict(f"{source}: the loads are those of a parted rod string: the median load "
+                                   f"{median * _KN:.4g} kN is {median / buoyant:.0%} of the rods' buoyant weight "
+                                   f"{buoyant * _KN:.4g} kN and the wave equation finds a free end about {depth:.0f} m "
+                                   f"down the {rods.total_length:.0f} m string", depth))
+                continue
+            if median < MEDIAN_SHARE * buoyant:
+                problem = (f"median load {median * _KN:.4g} kN is below {MEDIAN_SHARE:g} W_rf = "
+                           f"{MEDIAN_SHARE * buoyant * _KN:.4g} kN, and the card is not that of a parted string (at no "
+                           f"depth does the rods' load stay nearer zero than {off:.0%} of the card's range; a break: "
+                           f"{PARTED_FLATNESS:.0%})")
+        if problem:
+            def connected(trial: np.ndarray, upper: float = upper) -> bool:
+                return bool(np.median(trial) >= MEDIAN_SHARE * buoyant and trial.max() <= upper
+                            and np.ptp(trial) <= upper and trial.min() <= air)
 
-    def connected(loads: np.ndarray) -> bool:
-        return bool(np.median(loads) >= MEDIAN_SHARE * buoyant and loads.max() <= upper
-                    and np.ptp(loads) <= upper and loads.min() <= air)
+            out.append(CardError(f"{source}: these rods cannot have made this card: its {problem} ({figures})"
+                                 f"{_slip(loads[k], connected)}"))
+        elif slopes[k] > LOAD_TRANSFER_MARGIN * rods.spring_constant:
+            out.append(CardError(f"{source}: the card's load-transfer slope {slopes[k] * _KN:.4g} kN/m is stiffer than "
+                                 f"{LOAD_TRANSFER_MARGIN:g} x the rods' spring constant "
+                                 f"{rods.spring_constant * _KN:.4g} kN/m: position in the wrong unit or wrong rod string"))
+        else:
+            out.append(Verdict())
+    return out
 
-    figures = (f"W_r {air * kn:.4g} kN, W_rf {buoyant * kn:.4g} kN, F_max {well.max_fluid_load * kn:.4g} kN")
-    problem = ""
-    if peak > upper:
-        problem = (f"peak load {peak * kn:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
-                   f"{upper * kn:.4g} kN")
-    elif spread > upper:
-        problem = (f"load range {spread * kn:.4g} kN is above {PEAK_FACTOR:g} (W_r + F_max)(1 + 2 alpha) = "
-                   f"{upper * kn:.4g} kN")
-    elif low > air:
-        problem = f"minimum load {low * kn:.4g} kN is above the rods' weight in air W_r: wrong load datum?"
-    elif median < float(rods.buoyant_weight_per_length(well.fluid_density, gravity)[0]) * SHORTEST_HANGING:
-        problem = f"median load {median * kn:.4g} kN is less than the weight of one rod ({SHORTEST_HANGING:g} m)"
-    elif median < buoyant:
-        depth, off = free_end(load, position, 2.0 * np.pi / crank_speed, rods, well.fluid_density, gravity)
-        if off <= PARTED_FLATNESS and depth < PUMP_END * rods.total_length:
-            return Verdict(f"{source}: the loads are those of a parted rod string: the median load "
-                           f"{median * kn:.4g} kN is {median / buoyant:.0%} of the rods' buoyant weight "
-                           f"{buoyant * kn:.4g} kN and the wave equation finds a free end about {depth:.0f} m "
-                           f"down the {rods.total_length:.0f} m string", depth)
-        if median < MEDIAN_SHARE * buoyant:
-            problem = (f"median load {median * kn:.4g} kN is below {MEDIAN_SHARE:g} W_rf = "
-                       f"{MEDIAN_SHARE * buoyant * kn:.4g} kN, and the card is not that of a parted string (at no "
-                       f"depth does the rods' load stay nearer zero than {off:.0%} of the card's range; a break: "
-                       f"{PARTED_FLATNESS:.0%})")
-    if not problem:
-        slope = float(load_transfer_slope(position, load)[0])
-        if slope > LOAD_TRANSFER_MARGIN * rods.spring_constant:
-            raise CardError(f"{source}: the card's load-transfer slope {slope * kn:.4g} kN/m is stiffer than "
-                            f"{LOAD_TRANSFER_MARGIN:g} x the rods' spring constant {rods.spring_constant * kn:.4g} kN/m: "
-                            f"position in the wrong unit or wrong rod string")
+
+#: N to kN, for messages.
+_KN = 1e-3
+
+
+def _rated(peak: float, spread: float, structure_rating: float | None, source: str) -> Verdict | CardError:
+    """The verdict on a card's loads without well data: only the gross slips against the structure rating."""
+    if structure_rating is None:
         return Verdict()
-    raise CardError(f"{source}: these rods cannot have made this card: its {problem} ({figures}){_slip(load, connected)}")
+    if not RATING_LOW * structure_rating <= spread <= RATING_HIGH * structure_rating:
+        return CardError(f"{source}: the card's load range {spread * _KN:.4g} kN is "
+                         f"{spread / structure_rating:.3g} x the unit's structure rating "
+                         f"{structure_rating * _KN:.4g} kN (plausible: {RATING_LOW:g} to {RATING_HIGH:g} x); "
+                         f"check the load column's unit")
+    if peak > PEAK_RATING * structure_rating:
+        return CardError(f"{source}: the card's peak load {peak * _KN:.4g} kN is {peak / structure_rating:.3g} x "
+                         f"the unit's structure rating {structure_rating * _KN:.4g} kN (plausible: up to "
+                         f"{PEAK_RATING:g} x); check the load column's unit")
+    return Verdict()

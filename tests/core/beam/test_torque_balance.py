@@ -15,7 +15,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from pumpjack_cli.config import load_unit
-from pumpjack_cli.core.beam.balance import (balance_criteria, equal_peaks_moment, min_peak_moment, min_rms_moment,
+from pumpjack_cli.core.beam.balance import (balance_criteria, equal_peaks_moment, equal_peaks_moments, min_peak_moment,
+                                            min_rms_moment,
                                             recommend_counterbalance)
 from pumpjack_cli.core.beam.counterbalance import (Counterbalance, counterbalance_from_masses,
                                                    counterweight_placement)
@@ -220,11 +221,30 @@ def test_equal_peaks_is_a_root_that_brute_force_confirms():
 def test_the_envelope_of_the_lines_has_the_maximum_of_all_lines(seed, lines):
     """max_i (a_i - M s_i) over the envelope the equal-peaks search keeps equals the maximum over
     every line, at M = 0, at random M and far out (to rounding: a line may lead by an ulp)."""
-    from pumpjack_cli.core.beam.balance import _front
+    from pumpjack_cli.core.beam.balance import _fronts
 
     rng = np.random.default_rng(seed)
     base, sine = rng.normal(0.0, 1e4, lines), np.round(rng.uniform(-1.0, 1.0, lines), int(rng.integers(1, 6)))
-    a, s = _front(base, sine)
+    a, s, size = _fronts(base[None], sine)
+    a, s = a[0, :size[0]], s[0, :size[0]]
     assert np.all(np.diff(s) > 0)
     for moment in (0.0, *rng.uniform(0.0, 1e5, 20), 1e12):
         assert np.max(a - moment * s) == pytest.approx(np.max(base - moment * sine), rel=1e-12, abs=1e-9 * (1 + moment))
+
+
+def test_the_cards_of_one_grid_get_the_moments_they_have_alone():
+    """K cards of one crank grid in one array computation, envelopes of different sizes, cards
+    without a root and with several among them: each card's moment is its own alone, exactly."""
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        n = int(rng.integers(4, 200))
+        theta = np.sort(rng.uniform(0.0, 2 * np.pi, n))
+        up = theta < rng.uniform(2.5, 3.8)
+        if up.all() or not up.any():
+            continue
+        sine = np.sin(theta - rng.uniform(-0.3, 0.3))
+        sine = np.round(sine, 1) if rng.random() < 0.3 else sine
+        bases = rng.normal(0.0, 1.0, (7, n)).cumsum(axis=1) * 1e4 + rng.normal(0.0, 5e4, (7, 1)) * sine
+        together = equal_peaks_moments(bases, sine, up)
+        alone = [equal_peaks_moment(base, sine, up) for base in bases]
+        assert [None if np.isnan(m) else float(m) for m in together] == alone
