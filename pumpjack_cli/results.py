@@ -12,6 +12,7 @@ This module imports nothing heavy: values may be numpy arrays or lists of text.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -19,7 +20,7 @@ from typing import Any
 
 from .errors import PumpjackError
 from .names import TEXT, lookup, suffixed
-from .quantities import output_unit
+from .quantities import OutputUnit, output_unit
 
 #: Quantity of a column of numbers already in SI display units under their suffixed
 #: names (a results store's columns): shown as they are, None where a value is missing.
@@ -160,11 +161,18 @@ def display_name(name: str, quantity: str, system: str) -> str:
 
 def converted_summary(result: Result, system: str) -> dict[str, float | str]:
     """Summary values in the display units of ``system``, keyed by suffixed name (text as it is)."""
-    return {
-        display_name(s.name, s.quantity, system):
-            s.value if isinstance(s.value, str) else float(output_unit(s.quantity, system).convert(float(s.value)))
-        for s in result.summary
-    }
+    found: dict[str, float | str] = {}
+    for s in result.summary:
+        key, unit = _shown(s.name, system)
+        found[key] = s.value if isinstance(s.value, str) or unit is None else float(unit.convert(float(s.value)))
+    return found
+
+
+@functools.cache
+def _shown(name: str, system: str) -> tuple[str, OutputUnit | None]:
+    """The suffixed name and the display unit of a summary name in a unit system."""
+    quantity = lookup(name)[0]
+    return display_name(name, quantity, system), output_unit(quantity, system) if quantity != TEXT else None
 
 
 def check_finite(result: Result) -> None:

@@ -80,7 +80,8 @@ class Reading(PlacedCard):
         from crank angle 0 on the fine grid of :func:`_card_motion` (made once for every grid a
         card is run on)."""
         speed = periodic_table(self.crank_angle, self.crank_speed)
-        fine = periodic_interp(_FINE, speed)
+        fine = periodic_interp(_FINE[:-1], speed)
+        fine = np.append(fine, fine[0])      # 2 pi is crank angle 0
         return speed, periodic_table(self.crank_angle, self.crank_acceleration), fine, _elapsed(_FINE, fine)
 
 

@@ -110,15 +110,16 @@ def downhole(unit: UnitConfig, card: CardSource, spm: float | None, crank_motion
 
 def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: str, method: str | None,
               damping: float | None, samples: int = DEFAULT_SAMPLES, service_factor: float = 1.0,
-              deviation: Deviation = Deviation(), production: Production = Production()
+              deviation: Deviation = Deviation(), production: Production = Production(), tables: bool = True
               ) -> list[tuple[Result | PumpjackError, tuple[str, ...]]]:
     """Pump card, pump-card figures, the pump's condition, rod stresses and the well's production
     of each of K surface cards (:class:`~.card_runs.CardSource`) of one unit, with the warnings
     of each; a card that cannot be analysed gets its error. In a vertical well the cards'
-    dampings, pump cards, pump-card figures and conditions are each one array computation
-    (every card as alone); in a deviated well (``deviation``'s survey or the unit's) each card
-    is marched with the drag and gravity along the hole (:mod:`.deviated`), method None choosing.
-    Problems of the unit or the options are raised for all."""
+    dampings, pump cards, pump-card figures, works, rod loads and conditions are each one array
+    computation (every card as alone); in a deviated well (``deviation``'s survey or the unit's)
+    each card is marched with the drag and gravity along the hole (:mod:`.deviated`), method
+    None choosing. ``tables`` False: the summaries alone, without columns or plots (a batch
+    stores summaries). Problems of the unit or the options are raised for all."""
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     method = method_for(unit, method)
     if method not in downhole_methods():
@@ -137,17 +138,22 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
         if isinstance(pump, PumpjackError):
             found[k] = pump
     good = sorted(k for k in pumps if not isinstance(pumps[k], PumpjackError))
-    if good:
-        position = np.array([pumps[k][1].pump_position for k in good])
-        load = np.array([pumps[k][1].pump_load for k in good])
-        figures = summarise_pump_card(position, load)
-        conditions = diagnose(position, load, reference_fluid_load(unit))
-        for i, k in enumerate(good):
-            with collected_warnings() as noted:
-                found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, path, method,
-                                            figures.card(i), conditions.card(i), service_factor, deviation,
-                                            production)
-            said[k] += noted
+    if not good:
+        return [(result, tuple(notes)) for result, notes in zip(found, said)]
+    position = np.array([pumps[k][1].pump_position for k in good])
+    load = np.array([pumps[k][1].pump_load for k in good])
+    figures = summarise_pump_card(position, load)
+    conditions = diagnose(position, load, reference_fluid_load(unit))
+    works = card_work(np.array([surfaces[k][1].position for k in good]), np.array([surfaces[k][1].load for k in good]))
+    pump_works = card_work(position, load)
+    loads = taper_loads(string, np.array([pumps[k][1].joint_load for k in good]))
+    marks = dead_position_marks(linkage)
+    for i, k in enumerate(good):
+        with collected_warnings() as noted:
+            found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, path, method, figures.card(i),
+                                        conditions.card(i), (float(works[i]), float(pump_works[i]), loads.card(i)),
+                                        service_factor, deviation, production, marks if tables else None)
+        said[k] += noted
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
 
@@ -204,17 +210,16 @@ def _deviated_pump(unit: UnitConfig, string, path, card, surface, damping: float
 
 
 def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, path, method: str,
-                     figures: PumpCardSummary, condition, service_factor: float, deviation: Deviation,
-                     production: Production) -> Result:
+                     figures: PumpCardSummary, condition, works: tuple, service_factor: float, deviation: Deviation,
+                     production: Production, marks: tuple | None) -> Result:
     """The result of one card from its pump card (``found``: nu, the pump card, the deviated
-    march or None), the well's deviated path (None in a vertical well), its figures and its
-    condition."""
+    march or None), the well's deviated path (None in a vertical well), its figures, its
+    condition, and its works (surface and pump card [J]) and rod loads; with the dead
+    positions' ``marks`` its columns and plots, without them (None) the summary alone."""
     well = unit.require_well()
     reading, surface = reading_surface
     nu, pump, deviated = found
-    loads = taper_loads(string, pump.joint_load)
-    surface_work = float(card_work(surface.position, surface.load))
-    pump_work = float(card_work(pump.pump_position, pump.pump_load))
+    surface_work, pump_work, loads = works
     summary = [
         Scalar("strokes_per_minute", 2.0 * np.pi / surface.period),
         Scalar("damping_factor", nu),
@@ -241,34 +246,39 @@ def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, pat
     summary += well_summary(unit, figures, pump, surface_work / surface.period, surface.period, production,
                             intake_known=found_pressures is not None)
     summary += taper_summary(string, loads, service_factor)
-    columns = (
-        Column("time", surface.time),
-        Column("crank_angle", surface.crank_angle),
-        Column("position", surface.position),
-        Column("rod_load", surface.load),
-        Column("pump_position", pump.pump_position),
-        Column("pump_load", pump.pump_load),
-    )
-    curves = (Curve("surface card", "position", "rod_load"), Curve("pump card", "pump_position", "pump_load"))
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
+    columns: tuple[Column, ...] = ()
+    panels: tuple[Panel, ...] = ()
+    if marks is not None:
+        columns = (
+            Column("time", surface.time),
+            Column("crank_angle", surface.crank_angle),
+            Column("position", surface.position),
+            Column("rod_load", surface.load),
+            Column("pump_position", pump.pump_position),
+            Column("pump_load", pump.pump_load),
+        )
+    curves = (Curve("surface card", "position", "rod_load"), Curve("pump card", "pump_position", "pump_load"))
     if surveyed(unit):
         extra, more_columns, more_curves = deviated_rows(unit, string, surface, nu, deviated)
         summary += extra
-        columns += more_columns
+        columns += more_columns if marks is not None else ()
         curves += more_curves
         title += f", survey {Path(well.survey).name}" + (f", friction {deviated.friction_coefficient:g}"
                                                          if deviated is not None else "")
+    if marks is None:
+        return Result(title, tuple(summary), ())
     f_o = float(condition.features.reference_load[0])   # the reference load lines of [Rowlan2008] on both cards
     lines = (("W_rf", pump.buoyant_weight), ("W_rf + F_o", pump.buoyant_weight + f_o), ("F_o (pump card)", f_o),
              ("", 0.0))
-    panels: tuple[Panel, ...] = (Panel("load", (), curves=curves, x_label="position", levels=lines),
-                                 goodman_panel(string, loads, service_factor))
+    panels = (Panel("load", (), curves=curves, x_label="position", levels=lines),
+              goodman_panel(string, loads, service_factor))
     if deviation.profile:
         profile = deviated.profile if deviated is not None else deviated_pump_card(
             string, well.path(), surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
             damping_factor=nu, friction_coefficient=0.0).profile
         columns, panels = profile_result(unit, profile)
-    return Result(title, tuple(summary), columns, panels, dead_position_marks(unit.geometry.mechanism()))
+    return Result(title, tuple(summary), columns, panels, marks)
 
 
 def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[list[Scalar], tuple, tuple]:

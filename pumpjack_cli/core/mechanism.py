@@ -222,6 +222,11 @@ class Mechanism(Protocol):
         """Polished-rod position above the bottom of the stroke [m] at crank angles [rad], arrays."""
         ...
 
+    def rod_motion(self, crank_angle: Any) -> tuple[Any, Any]:
+        """The polished-rod position [m] and torque factor [m] alone, as :meth:`motion` gives them,
+        at crank angles [rad] (for a caller that needs no more: the time fit's iterates)."""
+        ...
+
     def torque_factor(self, crank_angle: Any) -> Any:
         """TF = ds/dtheta [m] at crank angles [rad], arrays ([API11E])."""
         ...

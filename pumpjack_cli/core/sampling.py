@@ -74,6 +74,21 @@ def wrapped(angle) -> np.ndarray:
     return angle % (2.0 * np.pi)
 
 
+def ahead(values: np.ndarray) -> np.ndarray:
+    """Each sample's successor around a cycle, along the last axis: ``numpy.roll(values, -1, axis=-1)``
+    without its cost.
+
+    >>> ahead(np.arange(4)).tolist(), behind(np.arange(4)).tolist()
+    ([1, 2, 3, 0], [3, 0, 1, 2])
+    """
+    return np.concatenate((values[..., 1:], values[..., :1]), axis=-1)
+
+
+def behind(values: np.ndarray) -> np.ndarray:
+    """Each sample's predecessor around a cycle, along the last axis: ``numpy.roll(values, 1, axis=-1)``."""
+    return np.concatenate((values[..., -1:], values[..., :-1]), axis=-1)
+
+
 def extremes(theta: np.ndarray, values: np.ndarray) -> tuple[Extreme, Extreme]:
     """Maximum and minimum of a periodic curve sampled on a uniform crank-angle grid.
 

@@ -210,7 +210,7 @@ def _analysed(analysis: str, unit, cards: list[_PlacedOnce], job: Job, options: 
     if analysis == "torque":
         return torques(unit, cards, job.spm, None, "auto", options.method, options.balance)
     return downholes(unit, cards, job.spm, "auto", None, options.damping,  # Everitt-Jennings with drag if deviated
-                     production=Production(runtime=job.runtime))
+                     production=Production(runtime=job.runtime), tables=False)
 
 
 def _summary(analysis: str, job: Job, card: _PlacedOnce, options: Options) -> dict:

@@ -38,7 +38,7 @@ import numpy as np
 
 from ...errors import CardError
 from ..mechanism import Mechanism
-from ..sampling import wrapped
+from ..sampling import ahead, behind, wrapped
 from .geometry import Linkage  # noqa: F401 (the docstrings' examples build one)
 
 #: Crank positions per stroke branch used to invert position -> crank angle.
@@ -168,13 +168,13 @@ def upstroke_points(position: np.ndarray) -> np.ndarray:
     >>> upstroke_points(np.array([[0.0, 1.0, 2.0, 1.0], [2.0, 1.0, 0.0, 1.0]])).tolist()
     [[False, True, False, False], [False, False, False, True]]
     """
-    return (np.roll(position, -1, axis=-1) - np.roll(position, 1, axis=-1)) > 0
+    position = np.asarray(position)
+    return (ahead(position) - behind(position)) > 0
 
 
 def _rod(linkage: Mechanism, crank_angle: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Polished-rod position s [m] and the torque factor ds/dtheta [m/rad]."""
-    m = linkage.motion(crank_angle)
-    return m.rod_position, m.torque_factor
+    return linkage.rod_motion(crank_angle)
 
 
 @lru_cache(maxsize=16)
@@ -285,7 +285,7 @@ def loop_work(position: np.ndarray, load: np.ndarray) -> float:
     """
     s = np.asarray(position, dtype=float)
     f = np.asarray(load, dtype=float)
-    return float(np.sum(0.5 * (f + np.roll(f, -1)) * (np.roll(s, -1) - s)))
+    return float(np.sum(0.5 * (f + ahead(f)) * (ahead(s) - s)))
 
 
 def largest_gap(crank_angle: np.ndarray) -> float:

@@ -133,7 +133,12 @@ class ClassThreeLinkage:
 
     def rod_position(self, crank_angle: Any) -> Any:
         """Polished-rod position above the bottom of the stroke [m]."""
-        return self.motion(crank_angle).rod_position
+        return self.rod_motion(crank_angle)[0]
+
+    def rod_motion(self, crank_angle: Any) -> tuple[Any, Any]:
+        """The mirror's polished-rod position and torque factor reflected: s = S - s_I, TF negated."""
+        position, torque_factor = self._mirror.rod_motion(crank_angle)
+        return self.stroke - position, -torque_factor
 
     def torque_factor(self, crank_angle: Any) -> Any:
         """TF = ds/dtheta [m] ([API11E])."""

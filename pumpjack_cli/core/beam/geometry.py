@@ -169,16 +169,20 @@ class Linkage:
         angles, the time fit's iterates) are asked for once and are not kept."""
         from .linkage import motion
 
-        theta = crank_angle
-        grid = getattr(getattr(theta, "flags", None), "writeable", True) is False
-        if grid and getattr(theta, "size", 0) >= CACHED_GRID and getattr(theta, "dtype", None) == float:
-            return _cached_motion(self, theta.tobytes())
+        if _shared(crank_angle):
+            return _cached_motion(self, crank_angle.tobytes())
         return motion(self, crank_angle)
 
     def rod_position(self, crank_angle: Any):
         """Polished-rod position above the bottom of the stroke, s = A (psi - psi_bottom) [m],
         at crank angles [rad] ([SK8Rotation2013] eq. 6 integrated: the horsehead arc)."""
-        return self.motion(crank_angle).rod_position
+        return self.motion(crank_angle).rod_position if _shared(crank_angle) else self.rod_motion(crank_angle)[0]
+
+    def rod_motion(self, crank_angle: Any):
+        """The polished-rod position [m] and torque factor [m] alone (:func:`.linkage.rod_motion`)."""
+        from .linkage import rod_motion
+
+        return rod_motion(self, crank_angle)
 
     def torque_factor(self, crank_angle: Any):
         """TF = ds/dtheta = A psi' [m] at crank angles [rad] ([API11E]; [KretzerSWPSC])."""
@@ -229,6 +233,12 @@ class Linkage:
 
 #: Shared grids of at least this many crank angles have their motion cached (:meth:`Linkage.motion`).
 CACHED_GRID = 360
+
+
+def _shared(theta: Any) -> bool:
+    """Whether crank angles are a shared grid whose motion is kept (:meth:`Linkage.motion`)."""
+    return (getattr(getattr(theta, "flags", None), "writeable", True) is False
+            and getattr(theta, "size", 0) >= CACHED_GRID and getattr(theta, "dtype", None) == float)
 
 
 @functools.lru_cache(maxsize=64)

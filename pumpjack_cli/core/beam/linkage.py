@@ -15,7 +15,7 @@ from ..mechanism import ChordSliderCrank, JointRates, Motion
 from .geometry import CLOCKWISE, COUNTERCLOCKWISE, DeadPositions, Linkage, assembly_angle, check_assembly, dead_positions
 
 __all__ = ["CLOCKWISE", "COUNTERCLOCKWISE", "DeadPositions", "Linkage", "Motion", "check_assembly", "crank_pin",
-           "chord_slider_crank", "dead_positions", "motion", "joint_rates"]
+           "chord_slider_crank", "dead_positions", "motion", "rod_motion", "joint_rates"]
 
 
 def crank_pin(linkage: Linkage, crank_angle: np.ndarray) -> np.ndarray:
@@ -146,6 +146,30 @@ def motion(linkage: Linkage, crank_angle: np.ndarray) -> Motion:
         pitman_rate=(w[0] * w_1[1] - w[1] * w_1[0]) / p2,
         pitman_rate2=(w[0] * w_2[1] - w[1] * w_2[0]) / p2,
     )
+
+
+def rod_motion(linkage: Linkage, crank_angle: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The polished rod's position s [m] and torque factor TF = A psi' [m] alone, as :func:`motion`
+    computes them (the same operations, to the bit) without the rest of the motion.
+
+    >>> sk8 = Linkage(3.5, 2.5, 1.01, 3.0, 2.195, 3.0)
+    >>> theta = np.linspace(0.0, 6.0, 7)
+    >>> s, tf = rod_motion(sk8, theta)
+    >>> m = motion(sk8, theta)
+    >>> bool(np.array_equal(s, m.rod_position) and np.array_equal(tf, m.torque_factor))
+    True
+    """
+    theta = np.asarray(crank_angle, dtype=float)
+    check_assembly(linkage)
+    o, r, c = linkage.crank_shaft, linkage.crank_radius, linkage.rear_arm
+    ax, ay = o[0] + linkage.rotation * r * np.sin(theta), o[1] + r * np.cos(theta)
+    psi = assembly_angle(ax, ay, linkage.pitman, c, np)
+    cos_psi, sin_psi = np.cos(psi), np.sin(psi)
+    wx, wy = -c * cos_psi - ax, -c * sin_psi - ay
+    rate = (wx * (r * (linkage.rotation * np.cos(theta))) + wy * (r * -np.sin(theta))) / \
+        (wx * (c * sin_psi) + wy * (c * -cos_psi))
+    front = linkage.front_arm
+    return front * (psi - linkage.dead_positions().beam_angle_bottom), front * rate
 
 
 def joint_rates(linkage: Linkage, m: Motion) -> JointRates:

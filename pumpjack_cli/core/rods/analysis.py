@@ -248,6 +248,10 @@ class TaperLoads:
     bottom_max_stress: np.ndarray
     bottom_min_stress: np.ndarray
 
+    def card(self, index: int) -> TaperLoads:
+        """The loads of card ``index`` of K cards' (K, S)."""
+        return TaperLoads(*(getattr(self, name)[index] for name in self.__dataclass_fields__))
+
 
 def taper_loads(string: RodString, joint_load) -> TaperLoads:
     """Per taper, the extreme tensions at its top and bottom and the stresses.

@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import DownholeError
+from ..sampling import ahead, behind
 from .analysis import as_cards
 from .string import RodString
 
@@ -242,7 +243,7 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     closing, midway_up, opening = (_first_crossing(x, y, upstroke, level, True) for level in TRANSFER_LEVELS)
     released, fillage, drained = (_first_crossing(x, y, downstroke, level, False) for level in TRANSFER_LEVELS[::-1])
     pickup, unloading = opening - closing, released - drained
-    speed = np.abs(np.roll(x, -1, axis=1) - np.roll(x, 1, axis=1)) * samples / 4.0   # / mean speed 2 S / T
+    speed = np.abs(ahead(x) - behind(x)) * samples / 4.0   # / mean speed 2 S / T
     slow = (speed >= SLOW[0]) & (speed <= SLOW[1])
     with np.errstate(invalid="ignore", divide="ignore"):
         sharpness = unloading / (1.0 - drained)

@@ -310,7 +310,13 @@ def _brent_root(excess, largest: float, count: int) -> tuple[np.ndarray, np.ndar
 def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
                fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
     """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)
-    (the cards checked once by the caller, :func:`_many`)."""
+    (the cards checked once by the caller, :func:`_many`); Gibbs' transfer as :func:`_solve` makes
+    it, the pump's end alone transformed back."""
+    if method == "gibbs":
+        static = string.static_tension(fluid_density, gravity)
+        w, f = _march_function(method)(string, period, position, load - static[0],
+                                       np.asarray(string.damping_coefficient(nu))[..., None], bottom_only=True)
+        return w, f + static[-1]
     card = _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method,
                   harmonics=None, gravity=gravity, upward=False)
     return card.pump_position, card.pump_load

@@ -38,12 +38,15 @@ def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffne
     cosh, sinh = 0.5 * (grows + decays), 0.5 * (grows - decays)
     small = np.abs(z) < 1e-3
     with np.errstate(invalid="ignore", divide="ignore"):
-        sinhc = np.where(small, 1.0 + z * z / 6.0 + z**4 / 120.0, sinh / np.where(small, 1.0, z))
+        sinhc = sinh / np.where(small, 1.0, z)
+    if np.any(small):
+        near = z[small]
+        sinhc[small] = 1.0 + near * near / 6.0 + near**4 / 120.0
     return cosh, length * sinhc / stiffness, stiffness * z * sinh / length
 
 
 def march(string: RodString, period: float | np.ndarray, position: np.ndarray, load: np.ndarray, damping: float | np.ndarray,
-          harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+          harmonics: int | None = None, bottom_only: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """Displacement and dynamic tension at every section end from those at the top.
 
     Parameters
@@ -64,10 +67,14 @@ def march(string: RodString, period: float | np.ndarray, position: np.ndarray, l
         Highest harmonic kept; default (N - 1) // 2, every harmonic the grid resolves
         (the Nyquist term of an even N is dropped: its sine part is not sampled).
 
+    bottom_only : bool
+        Only the bottom of the last section transformed back (what a search on the pump card needs).
+
     Returns
     -------
     position, load : numpy.ndarray
-        Shape (..., S + 1, N): index 0 the top, index S the bottom of the last section.
+        Shape (..., S + 1, N): index 0 the top, index S the bottom of the last section; with
+        ``bottom_only``, shape (..., N), the bottom alone.
 
     References
     ----------
@@ -87,5 +94,7 @@ def march(string: RodString, period: float | np.ndarray, position: np.ndarray, l
         w, f = cosh * w - compliance * f, cosh * f - rigidity * w
         ends_w.append(w)
         ends_f.append(f)
+    if bottom_only:
+        return np.fft.irfft(w, n=samples, axis=-1), np.fft.irfft(f, n=samples, axis=-1)
     return (np.fft.irfft(np.stack(ends_w, axis=-2), n=samples, axis=-1),
             np.fft.irfft(np.stack(ends_f, axis=-2), n=samples, axis=-1))
