@@ -315,16 +315,24 @@ def _angles(params: np.ndarray, tc: np.ndarray) -> tuple[np.ndarray, np.ndarray,
     sum_j c_j z_j, sum_j j c_j z_j and sum_j j^2 c_j z_j, one product of matrices a card.
     """
     phi = params[:, 1:2] * tc
-    j = np.arange(1, (params.shape[1] - 2) // 2 + 1)
-    powers = np.cumprod(np.repeat(np.exp(1j * phi)[:, :, None], j.size, axis=2), axis=2)
-    weighted = (params[:, 2::2] - 1j * params[:, 3::2])[:, :, None] * np.stack([np.ones(j.size), j, j * j], axis=1)
-    sums = powers @ weighted
-    theta = params[:, 0:1] + phi + sums[:, :, 0].real
-    ratio = 1.0 - sums[:, :, 1].imag
-    curvature = -sums[:, :, 2].real
+    count = (params.shape[1] - 2) // 2
     columns = np.empty(tc.shape + (params.shape[1],))
-    columns[:, :, 0], columns[:, :, 1] = 1.0, tc * ratio
-    columns[:, :, 2::2], columns[:, :, 3::2] = powers.real, powers.imag
+    columns[:, :, 0] = 1.0
+    if not count:
+        columns[:, :, 1] = tc
+        return params[:, 0:1] + phi, columns, np.ones(tc.shape), np.zeros(tc.shape)
+    powers = np.empty((count,) + tc.shape, dtype=complex)
+    powers[0] = np.exp(1j * phi)
+    for power in range(1, count):
+        np.multiply(powers[power - 1], powers[0], out=powers[power])
+    j = np.arange(1, count + 1)
+    weighted = (params[:, 2::2] - 1j * params[:, 3::2])[:, None, :] * np.stack([np.ones(count), j, j * j])
+    sums = weighted @ powers.transpose(1, 0, 2)
+    theta = params[:, 0:1] + phi + sums[:, 0].real
+    ratio = 1.0 - sums[:, 1].imag
+    curvature = -sums[:, 2].real
+    columns[:, :, 1] = tc * ratio
+    columns[:, :, 2::2], columns[:, :, 3::2] = powers.real.transpose(1, 2, 0), powers.imag.transpose(1, 2, 0)
     return theta, columns, ratio, curvature
 
 
