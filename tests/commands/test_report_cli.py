@@ -1,12 +1,11 @@
 """`pumpjack report` as a new user runs it, and `pumpjack batch report`.
 
 The unit is written here as a production engineer writes one from its API letters: the
-C-114D-133-54 of [Guo2007] Table 12.1 (A 72, C 64, I 64, P 74.5, H 116, G 41 in, R = 24 in,
-Cs = 330 lb), its measured counterbalance effect, and the well of its sample card (C-228D-213-86,
-the unit the issue names, has no letters in a source this project could read). One command
-must give every item of the page, and every number on the page must be the number the
-single commands print with ``-f json`` (its ``data-value``, exactly; its text, that value
-rounded for reading).
+C-228D-213-86 of [UnitDatabase2018] (A 111, C 96.05, I 96, K 151.34, P 114 in, R = 37 in,
+B = 450 lb), with the counterbalance effect a crew measured, and the well of its sample card.
+One command must give every item of the page, and every number on the page must be the
+number the single commands print with ``-f json`` (its ``data-value``, exactly; its text,
+that value rounded for reading).
 """
 
 from __future__ import annotations
@@ -24,31 +23,31 @@ from pumpjack_cli.render.display import display_number
 
 from helpers import sample_card
 
-CARD = sample_card("c-114d-133-54")
+CARD = sample_card("c-228d-213-86")
 UNIT = """\
-name = "C-114D-133-54 well 7"
-designation = "C-114D-133-54"
+name = "C-228D-213-86 well 7"
+designation = "C-228D-213-86"
 
-[geometry]      # [Guo2007] Table 12.1, longest crank hole
-A = "72 in"
-C = "64 in"
-I = "64 in"
-P = "74.5 in"
-H = "116 in"
-G = "41 in"
-R = "24 in"
+[geometry]      # [UnitDatabase2018], longest of the four crank holes
+A = "111 in"
+C = "96.05 in"
+I = "96 in"
+K = "151.34 in"
+P = "114 in"
+R = "37 in"
 rotation = "clockwise"
 
 [counterbalance]
-structural_unbalance = "330 lbf"
-counterbalance_effect = "7500 lbf"     # as measured, cranks horizontal
+structural_unbalance = "450 lbf"
+counterbalance_effect = "12577 lbf"    # as measured, cranks horizontal
 
 [well]
-pump_depth = "4000 ft"
+pump_depth = "5000 ft"
 plunger_diameter = "1.5 in"
-rod_string = [{ diameter = "0.75 in", fraction = "100 %", grade = "D" }]
-fluid_density = "900 kg/m3"
-pump_submergence = "300 ft"
+rod_string = [{ diameter = "0.875 in", fraction = "40 %", grade = "D" },
+              { diameter = "0.75 in", fraction = "60 %", grade = "D" }]
+fluid_density = "950 kg/m3"
+pump_submergence = "500 ft"
 """
 OPTIONS = ("--units", "field", "--electricity-price", "0.12", "--drive-efficiency", "0.9")
 
@@ -103,7 +102,7 @@ def well(tmp_path_factory, run_json):
     import io
 
     folder = tmp_path_factory.mktemp("report")
-    unit = folder / "c-114d-well-7.toml"
+    unit = folder / "c-228d-well-7.toml"
     unit.write_text(UNIT, encoding="utf-8")
     page = folder / "well.html"
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()) as err:

@@ -237,16 +237,16 @@ def test_the_listing_stroke_is_the_models_stroke():
 
 @pytest.fixture
 def holes(tmp_path):
-    """Three holes of C-228D-213-86 and one of SK6-2,1-2500, both with C-80D-133-48's letters (names
+    """Three holes of C-320D-256-120 and one of SK6-2,1-2500, both with C-80D-133-48's letters (names
     are what is tested here, not those units' geometry; neither is a bundled unit's name)."""
-    rows = [ROW.format(hole=h, radius=r, stroke="").replace("C-80D-133-48", "C-228D-213-86")
+    rows = [ROW.format(hole=h, radius=r, stroke="").replace("C-80D-133-48", "C-320D-256-120")
             for h, r in ((1, 24), (2, 20), (3, 16))]
     return read_catalogue(field(tmp_path, *rows, '"SK6-2,1-2500",1,cw,64,64,64,74.5,116,41,16,,,'))
 
 
 @pytest.mark.parametrize(("spec", "name"), [
-    ("C-228D-213-86/2", "C-228D-213-86/2"), ("c-228d-213-86/3", "C-228D-213-86/3"),
-    (" C-228D-213-86/01 ", "C-228D-213-86/1"),
+    ("C-320D-256-120/2", "C-320D-256-120/2"), ("c-320d-256-120/3", "C-320D-256-120/3"),
+    (" C-320D-256-120/01 ", "C-320D-256-120/1"),
     ("sk6-2.1-2500/1", "SK6-2,1-2500/1"), ("SK6-2,1-2500", "SK6-2,1-2500/1"), ("sk8-3,5-4000", None),
 ])
 def test_a_catalogue_unit_is_named_by_designation_and_hole(holes, spec, name):
@@ -258,18 +258,18 @@ def test_a_catalogue_unit_is_named_by_designation_and_hole(holes, spec, name):
 
 def test_a_bundled_name_and_a_file_come_before_the_catalogue(holes, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    (tmp_path / "C-228D-213-86").mkdir()
-    (tmp_path / "C-228D-213-86" / "2").write_text("", encoding="utf-8")
-    assert unit_source("C-228D-213-86/2", holes) == Path("C-228D-213-86/2")
-    assert unit_source("C-228D-213-86/3", holes).name == "C-228D-213-86/3"
+    (tmp_path / "C-320D-256-120").mkdir()
+    (tmp_path / "C-320D-256-120" / "2").write_text("", encoding="utf-8")
+    assert unit_source("C-320D-256-120/2", holes) == Path("C-320D-256-120/2")
+    assert unit_source("C-320D-256-120/3", holes).name == "C-320D-256-120/3"
 
 
 @pytest.mark.parametrize(("spec", "message"), [
-    ("C-228D-213-86", "unit 'C-228D-213-86': {file} has crank holes 1, 2, 3 of C-228D-213-86; name one as "
-                      "C-228D-213-86/HOLE"),
-    ("C-228D-213-86/4", "unit 'C-228D-213-86/4': {file} has crank holes 1, 2, 3 of C-228D-213-86, not 4"),
-    ("C-228D-213-68/1", "unknown unit 'C-228D-213-68/1': not a file, a bundled unit or a unit of {file}; close: "
-                        "C-228D-213-86/1, "),
+    ("C-320D-256-120", "unit 'C-320D-256-120': {file} has crank holes 1, 2, 3 of C-320D-256-120; name one as "
+                      "C-320D-256-120/HOLE"),
+    ("C-320D-256-120/4", "unit 'C-320D-256-120/4': {file} has crank holes 1, 2, 3 of C-320D-256-120, not 4"),
+    ("C-320D-256-102/1", "unknown unit 'C-320D-256-102/1': not a file, a bundled unit or a unit of {file}; close: "
+                        "C-320D-256-120/1, "),
     ("nothing-like-it", "unknown unit 'nothing-like-it': not a file, a bundled unit or a unit of {file}; "
                         "`pumpjack units --catalogue {file}` lists its units"),
 ])
