@@ -15,8 +15,14 @@ import sys
 from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 
-import numpy as np
-import pytest
+# One BLAS thread per process, set before numpy is first imported (here, or by the xdist workers
+# that inherit it): the suite already runs a test on every core, and one test's arrays are small,
+# so OpenBLAS's own threads would only contend for the cores (the console script does the same,
+# pumpjack_cli/__main__.py).
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
 
 from helpers import (LB_PER_FT, PSI, REPO_ROOT, RP11L_TABLE_4_1, SK8, SK8_API_YAML, SK8_CARD, SK8_FLUID_DENSITY,
                      SK8_PUMP_DEPTH, SK8_TOML, sample_card)

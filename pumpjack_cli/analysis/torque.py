@@ -134,6 +134,7 @@ def torques(unit: UnitConfig, cards: list, spm: float | None, steps: int | None,
     keys = sorted(readings)
     analysed = card_torques(unit, [readings[k][0].card for k in keys], [readings[k][1] for k in keys], method,
                             criterion, energy) if keys else []
+    marks = dead_position_marks(mechanism)
     for k, (result, noted) in zip(keys, analysed):
         said[k] += noted
         if isinstance(result, PumpjackError):
@@ -142,8 +143,7 @@ def torques(unit: UnitConfig, cards: list, spm: float | None, steps: int | None,
         runs = readings[k][1]
         title = (f"{unit.name}: gearbox torque ({method} method), card {cards[k].name}, {runs[0].crank_motion} crank "
                  f"motion, balance {criterion}")
-        found[k] = Result(title, result.card_summary + result.summary, result.columns, result.panels,
-                          dead_position_marks(mechanism))
+        found[k] = Result(title, result.card_summary + result.summary, result.columns, result.panels, marks)
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
 
