@@ -77,7 +77,9 @@ def decode_text(data: bytes | str, source: str, error: type[PumpjackError]) -> s
         except UnicodeDecodeError as exc:
             raise error(f"{source}: line {_line_of(data, exc.start)}: byte 0x{data[exc.start]:02x} is not UTF-8; "
                         f"save the file as UTF-8 text (for example from cp1251 or Latin-1)") from None
-    text = data.removeprefix("\ufeff").replace("\r\n", "\n").replace("\r", "\n")
+    text = data.removeprefix("\ufeff")
+    if "\r" in text:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
     nul = text.find("\0")
     if nul >= 0:
         raise error(f"{source}: line {text.count(chr(10), 0, nul) + 1}: a NUL character: binary data, not text")
@@ -108,6 +110,19 @@ def input_kind(path: Path | str) -> str | None:
     return _INPUTS.get((info.st_dev, info.st_ino))
 
 
+def _read_up_to(fd: int, size: int) -> bytes:
+    """At most ``size`` bytes from the file descriptor ``fd``, fewer only at the end of the file
+    (without a file object, whose set-up costs as many system calls again as the read)."""
+    chunks = []
+    while size > 0:
+        chunk = os.read(fd, size)
+        if not chunk:
+            break
+        chunks.append(chunk)
+        size -= len(chunk)
+    return b"".join(chunks)
+
+
 def _read_file(path: Path | str, limit: int, what: str, source: str, error: type[PumpjackError]) -> bytes:
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
@@ -123,9 +138,8 @@ def _read_file(path: Path | str, limit: int, what: str, source: str, error: type
         if info.st_size > limit:
             raise error(f"{source}: is {info.st_size:,} bytes; a {what} is at most {limit:,} bytes")
         note_input(info, what)
-        with open(fd, "rb", closefd=False) as file:
-            data = file.read(info.st_size + 1)  # not read(limit + 1): that allocates the limit, 10 MB for a card
-            return data if len(data) <= info.st_size else data + file.read(limit + 1 - len(data))
+        data = _read_up_to(fd, info.st_size + 1)  # not limit + 1: that allocates the limit, 10 MB for a card
+        return data if len(data) <= info.st_size else data + _read_up_to(fd, limit + 1 - len(data))
     except OSError as exc:
         raise error(f"{source}: cannot read: {describe_os_error(exc)}") from None
     finally:

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from pathlib import Path
+from pathlib import Path, PurePath
 from typing import IO
 
 from ...errors import CardError
@@ -58,10 +58,18 @@ DEFAULT_FORMAT = "delimited"
 
 
 def _format_of(file: CardFile, path: Path | str) -> str:
-    """The format of a card file: by content, by the name's ending, else the default."""
-    suffix = Path(str(path)).suffix.lower()
-    return next((name for name, reader in READERS.items() if reader.recognises(file)),
-                next((name for name, reader in READERS.items() if suffix in reader.extensions), DEFAULT_FORMAT))
+    """The format of a card file: by content, by the name's ending, else the default.
+
+    The last reader's content is not looked at when the name's ending (or the default) chooses
+    that reader anyway: a delimited card named .csv is not searched for its header twice.
+    """
+    *specific, last = READERS
+    for name in specific:
+        if READERS[name].recognises(file):
+            return name
+    suffix = (path if isinstance(path, PurePath) else Path(str(path))).suffix.lower()
+    fallback = next((name for name, reader in READERS.items() if suffix in reader.extensions), DEFAULT_FORMAT)
+    return last if last == fallback or READERS[last].recognises(file) else fallback
 
 
 def check_options(format: str | None = None, units: str | None = None, points: int | None = None) -> None:

@@ -15,16 +15,19 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
+from collections.abc import Callable
 from datetime import datetime
+from functools import lru_cache, wraps
 from itertools import compress, repeat
+from typing import TypeVar
 
 import numpy as np
 
 from ...errors import CardError
 from ...quantities import UNIT_SPELLINGS
 from .raw import (DEFAULT_UNITS, DELIMITERS, KINDS, LAYOUT_TEXT, LAYOUTS, MAX_POINTS, MIN_POINTS,
-                  STATED_STROKE_TOLERANCE, UNITS, CardFile, Column, RawCard, assemble, in_si, is_content, show,
-                  stated_spm, unit_of, written_card)
+                  STATED_STROKE_TOLERANCE, UNITS, CardFile, Column, RawCard, assemble, content_lines_of, in_si,
+                  is_content, show, stated_spm, unit_of, written_card)
 
 #: File name endings read as delimited text without looking at the content.
 EXTENSIONS = (".csv", ".tsv", ".txt")
@@ -57,13 +60,27 @@ _UNIT_SYSTEMS = {"si": "si", "metric": "si", "field": "field", "oilfield": "fiel
 #: A time of day (the value of a preamble's Time line; a header's first column may be "time").
 _CLOCK = re.compile(r"^\d{1,2}:\d{2}(?::\d{2}(?:\.\d+)?)?$")
 _LENGTH = re.compile(r"^([0-9]*\.?[0-9]+(?:[eE][+-]?[0-9]+)?)\s*(\S*)$")
+#: What a line of up to _KEPT_LINE characters means as a preamble entry or a header is kept for
+#: the _KEPT lines seen last (:func:`_kept`).
+_KEPT, _KEPT_LINE = 256, 1000
+_Meaning = TypeVar("_Meaning")
+
+
+def _kept(meaning: Callable[..., _Meaning]) -> Callable[..., _Meaning]:
+    """``meaning(line, *options)``, worked out once for a short line: a fleet's card files come
+    from a few exports, so their headers and preamble keys repeat. A refusal is not kept."""
+    known = lru_cache(maxsize=_KEPT)(meaning)
+
+    @wraps(meaning)
+    def meaning_of(line: str, *options) -> _Meaning:
+        return (known if len(line) <= _KEPT_LINE else meaning)(line, *options)
+    return meaning_of
 
 
 def recognises(file: CardFile) -> bool:
     """True when the first line after the preamble that is not a comment or blank holds a
     comma, semicolon or tab."""
-    header = next((line for line in file.content_lines() if _preamble_entry(line) is None), "")
-    return any(d in header for d in DELIMITERS)
+    return file.is_text and any(d in _preamble_lines(file.text)[2] for d in DELIMITERS)
 
 
 def _split_unit(cell: str) -> tuple[str, str | None]:
@@ -80,13 +97,14 @@ def _name_key(name: str) -> str:
     return re.sub(r"[\s.\-]+", "_", name.strip().replace("#", " no ")).strip("_")
 
 
-def _column(cell: str, default_units: str | None, prefix: str, column: int,
+def _column(cell: str, default_units: str | None, column: int,
             kind: str | None = None) -> tuple[str, str, float] | None:
     """Kind, unit label and factor to SI of header cell number ``column`` (from 1).
 
     Without ``kind`` the cell is named by the reader's rules (None for an index or
     unnamed column); with it (a mapped column) only its unit is looked for, in brackets,
-    after a comma or as a suffix that is a unit of its dimension.
+    after a comma or as a suffix that is a unit of its dimension. A refusal's message
+    follows the header's place (:func:`_layout`).
     """
     name, unit = _split_unit(cell)
     key = _name_key(name)
@@ -100,21 +118,42 @@ def _column(cell: str, default_units: str | None, prefix: str, column: int,
     elif key.lower() in _INDEX_NAMES or not key:
         return None
     else:
-        raise CardError(f"{prefix}: unknown column {show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
-    return (kind, *unit_of(unit, kind, default_units, f"{prefix}: column {column} {show(cell.strip())}"))
+        raise CardError(f"unknown column {show(cell.strip())} (column {column}); {_KNOWN_TEXT}")
+    return (kind, *unit_of(unit, kind, default_units, f"column {column} {show(cell.strip())}"))
 
 
-def _header(cells: list[str], line: int, source: str, default_units: str | None,
+@_kept
+def _layout(header: str, default_units: str | None, mapping: tuple[tuple[str, str], ...] | None
+            ) -> tuple[str, int, tuple[tuple[str, tuple[int, str, float]], ...]]:
+    """The delimiter of a header line, its number of cells and its used columns as (kind, (column
+    index, unit label, factor to SI)) pairs; ``mapping`` holds ``--card-columns``' (kind, header)
+    pairs. A refusal's message is what follows the header's place, "card.csv: line 4: ", which
+    the reader puts before it."""
+    delimiter = next((d for d in DELIMITERS if d in header), None)
+    if delimiter is None:
+        hint = f" (a preamble line? its keys are {_PREAMBLE_TEXT})" if ":" in header else ""
+        raise CardError(f"no comma, semicolon or tab in the header {show(header.strip())}{hint}; "
+                        f"a card has named columns, e.g. position_in,load_lbf")
+    if header.count(delimiter) >= MAX_COLUMNS:
+        raise CardError(f"{header.count(delimiter) + 1} columns; a card file has at most {MAX_COLUMNS}")
+    cells = header.split(delimiter)
+    if all(_is_float(cell.replace(",", ".")) for cell in cells):
+        raise CardError("numbers where the header should be; the first line names the columns, "
+                        "e.g. position_in,load_lbf")
+    used = _header(cells, default_units, None if mapping is None else dict(mapping))
+    return delimiter, len(cells), tuple(used.items())
+
+
+def _header(cells: list[str], default_units: str | None,
             mapping: dict[str, str] | None) -> dict[str, tuple[int, str, float]]:
     """Used columns: kind -> (column index, unit label, factor to SI)."""
     found: dict[str, list[tuple[int, str, float]]] = {}
-    prefix = f"{source}: line {line}"
     written = None if mapping is not None else written_card([cell.strip().strip('"').strip() for cell in cells])
     if written is not None:
         return written
     if mapping is None:
         for j, cell in enumerate(cells):
-            named = _column(cell, default_units, prefix, j + 1)
+            named = _column(cell, default_units, j + 1)
             if named is not None:
                 found.setdefault(named[0], []).append((j, *named[1:]))
     else:
@@ -123,12 +162,12 @@ def _header(cells: list[str], line: int, source: str, default_units: str | None,
             matches = [j for j, cell in enumerate(folded) if cell == header.casefold()]
             if len(matches) != 1:
                 where = "no column" if not matches else f"{len(matches)} columns ({', '.join(str(j + 1) for j in matches)})"
-                raise CardError(f"{prefix}: --card-columns {kind}={header!r}: {where} of that name; "
+                raise CardError(f"--card-columns {kind}={header!r}: {where} of that name; "
                                 f"the header has {', '.join(show(c.strip()) for c in cells[:12])}")
-            found[kind] = [(matches[0], *_column(cells[matches[0]], default_units, prefix, matches[0] + 1, kind)[1:])]
+            found[kind] = [(matches[0], *_column(cells[matches[0]], default_units, matches[0] + 1, kind)[1:])]
     kinds = [kind for kind, where in found.items() for _ in where]
     if len(set(kinds)) != len(kinds) or set(kinds) not in LAYOUTS:
-        raise CardError(f"{prefix}: columns {', '.join(kinds) or 'none'}; {LAYOUT_TEXT}")
+        raise CardError(f"columns {', '.join(kinds) or 'none'}; {LAYOUT_TEXT}")
     return {kind: where[0] for kind, where in found.items()}
 
 
@@ -150,6 +189,7 @@ def _is_float(cell: str) -> bool:
     return True
 
 
+@_kept
 def _preamble_entry(line: str) -> tuple[str, str, str | None, str] | None:
     """(canonical key, key as written, unit written with the key, value) of a preamble line
     (``key,value``, ``key;value``, ``key<tab>value`` or ``key: value`` with a key of
@@ -260,59 +300,100 @@ def read(file: CardFile) -> RawCard:
     text, source = file.text, file.source
     if text.count("\n") >= MAX_LINES:
         raise CardError(f"{source}: more than {MAX_LINES} lines; a card file has at most {MAX_LINES}")
-    lines = file.lines
-    kept = _content(lines, text)
-    entries = []
-    for i in kept:
-        entry = _preamble_entry(lines[i])
-        if entry is None:
-            break
-        entries.append((i + 1, entry))
-    kept = kept[len(entries):]
+    entries, at, header, start = _preamble_lines(text)
     metadata, stated_lines, default_units = _preamble(entries, source, file.units)
-    if not kept:
+    if at is None:
         raise CardError(f"{source}: empty card")
-    header_line = kept[0] + 1
-    header = lines[kept[0]]
-    delimiter = next((d for d in DELIMITERS if d in header), None)
-    if delimiter is None:
-        hint = f" (a preamble line? its keys are {_PREAMBLE_TEXT})" if ":" in header else ""
-        raise CardError(f"{source}: line {header_line}: no comma, semicolon or tab in the header {show(header.strip())}"
-                        f"{hint}; a card has named columns, e.g. position_in,load_lbf")
-    if header.count(delimiter) >= MAX_COLUMNS:
-        raise CardError(f"{source}: line {header_line}: {header.count(delimiter) + 1} columns; "
-                        f"a card file has at most {MAX_COLUMNS}")
-    cells = header.split(delimiter)
-    if all(_is_float(cell.replace(",", ".")) for cell in cells):
-        raise CardError(f"{source}: line {header_line}: numbers where the header should be; "
-                        f"the first line names the columns, e.g. position_in,load_lbf")
-    used = _header(cells, header_line, source, default_units, file.columns)
-    rows = [lines[i] for i in kept[1:]]
-    numbers = np.array(kept[1:], dtype=int) + 1
+    try:
+        delimiter, width, layout = _layout(header, default_units,
+                                           None if file.columns is None else tuple(file.columns.items()))
+    except CardError as error:
+        raise CardError(f"{source}: line {at + 1}: {error}") from None
+    used = dict(layout)
+    rows, table = _table(text[start:], delimiter, width) if len(used) == width else ([], None)
+    if table is None:
+        numbers, columns = _cells(file.lines, text, at, delimiter, width, used, source)
+    else:
+        numbers = np.arange(at + 2, at + 2 + len(rows), dtype=int)
+    values = {}
+    for kind, (j, unit, factor) in used.items():
+        if table is None:
+            cells = columns[kind]
+            found, written = _numbers(cells, kind, numbers, source), cells.__getitem__
+        else:
+            found, written = table[:, j], lambda i: rows[i].split(delimiter)[j]
+        values[kind] = Column(in_si(found, kind, unit, factor, lambda i: f"{source}: line {numbers[i]}",
+                                    lambda i: written(i).strip()[:40]), unit, factor)
+    if numbers.size < MIN_POINTS:
+        raise CardError(f"{source}: {numbers.size} points; a card needs at least {MIN_POINTS}")
+    _check_stroke(metadata, stated_lines, values, source)
+    return assemble(source, values, numbers, metadata=metadata, metadata_lines=stated_lines)
+
+
+def _preamble_lines(text: str) -> tuple[list[tuple[int, tuple[str, str, str | None, str]]], int | None, str, int]:
+    """The preamble's entries (each with its line number); the header, the first line that is
+    neither blank, a comment (:func:`.raw.is_content`) nor a preamble entry: its index (None when
+    there is none) and text; and where the line after it starts in ``text``. Only the lines down
+    to the header are looked at."""
+    entries = []
+    for i, line, start in content_lines_of(text):
+        entry = _preamble_entry(line)
+        if entry is None:
+            return entries, i, line, start
+        entries.append((i + 1, entry))
+    return entries, None, "", len(text) + 1
+
+
+def _table(block: str, delimiter: str, width: int) -> tuple[list[str], np.ndarray | None]:
+    """The lines of ``block`` (the text under a header of ``width`` cells, all of them used) down
+    to the last that is not empty, and their numbers, a (lines, ``width``) array, when every one
+    of them is a row of ``width`` numbers, as in most card files; else no numbers, and the rows
+    are left to :func:`_cells`.
+
+    The numbers are read in one call of numpy's text reader (:func:`numpy.loadtxt`), which passes
+    each cell, stripped of whitespace, to the function behind ``float``
+    (``PyOS_string_to_double``): each number is the double ``float`` reads. It reads less than
+    ``float`` (no underscores, no digits but ASCII ones) and refuses a row of another width and a
+    cell that is not a number (an empty, a blank, a quoted cell, a comment's first). It would skip
+    an empty line, so rows with one are not given to it. Any of these leaves the rows to
+    :func:`_cells`, which refuses what it must, naming the line and the column.
+    """
+    block = block.rstrip("\n")
+    rows = block.split("\n") if block else []
+    if not rows or len(rows) > MAX_POINTS or "" in rows:
+        return rows, None
+    try:
+        table = np.loadtxt(rows, delimiter=delimiter, comments=None, dtype=float, ndmin=2)
+    except ValueError:
+        return rows, None
+    return rows, table if table.shape == (len(rows), width) else None
+
+
+def _cells(lines: list[str], text: str, at: int, delimiter: str, width: int,
+           used: dict[str, tuple[int, str, float]], source: str) -> tuple[np.ndarray, dict[str, list[str]]]:
+    """The line number of every row under the header at line index ``at`` (the lines that are
+    neither blank nor comments), and the cells of each used column, without quotes and with
+    decimal points; rows of another width than the header's, or too many, are refused."""
+    kept = _content(lines, text)
+    kept = kept[bisect_right(kept, at):]
+    rows = [lines[i] for i in kept]
+    numbers = np.array(kept, dtype=int) + 1
     if len(rows) > MAX_POINTS:
         raise CardError(f"{source}: {len(rows)} points; a card has at most {MAX_POINTS}")
     counts = list(map(str.count, rows, repeat(delimiter)))
-    if counts.count(len(cells) - 1) != len(rows):
+    if counts.count(width - 1) != len(rows):
         widths = np.array(counts, dtype=int) + 1
-        i = int(np.argmax(widths != len(cells)))
+        i = int(np.argmax(widths != width))
         hint = ("; a decimal comma or thousands separator in a comma-separated file?"
-                if delimiter == "," and widths[i] > len(cells) else "")
-        raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {len(cells)}{hint}")
+                if delimiter == "," and widths[i] > width else "")
+        raise CardError(f"{source}: line {numbers[i]}: {widths[i]} values, the header has {width}{hint}")
     flat = delimiter.join(rows).split(delimiter) if rows else []
+    columns = {kind: flat[j::width] for kind, (j, _, _) in used.items()}
     if '"' in text:
-        flat = [cell.strip().strip('"') for cell in flat]
-    columns = {kind: flat[j::len(cells)] for kind, (j, _, _) in used.items()}
+        columns = {kind: [cell.strip().strip('"') for cell in cells] for kind, cells in columns.items()}
     if delimiter != ",":
         columns = _decimal_commas(columns, used, numbers, source, _DELIMITER_NAMES[delimiter])
-    values = {}
-    for kind, (_, unit, factor) in used.items():
-        cells = columns[kind]
-        values[kind] = Column(in_si(_numbers(cells, kind, numbers, source), kind, unit, factor,
-                                    lambda i: f"{source}: line {numbers[i]}", lambda i: cells[i].strip()[:40]), unit, factor)
-    if len(rows) < MIN_POINTS:
-        raise CardError(f"{source}: {len(rows)} points; a card needs at least {MIN_POINTS}")
-    _check_stroke(metadata, stated_lines, values, source)
-    return assemble(source, values, numbers, metadata=metadata, metadata_lines=stated_lines)
+    return numbers, columns
 
 
 def _content(lines: list[str], text: str) -> list[int]:

@@ -47,6 +47,9 @@ DEFAULT_UNITS = {
 }
 LAYOUTS = ({"crank_angle", "load"}, {"position", "load"}, {"time", "position", "load"})
 LAYOUT_TEXT = "a card has crank_angle and load, position and load, or time, position and load"
+#: Lines of a card file's text looked at one by one for its first content lines (its format, a
+#: delimited card's preamble and header come within them), before the rest is split at once.
+HEAD_LINES = 32
 #: Column delimiters of delimited text, in the order a header is searched for them.
 DELIMITERS = ("\t", ";", ",")
 MIN_POINTS = 8
@@ -155,8 +158,29 @@ class CardFile:
         return self.text.split("\n") if self.is_text else []
 
     def content_lines(self) -> Iterator[str]:
-        """The lines that are neither blank nor ``#`` comments, lazily (none for binary content)."""
-        return (line for line in self.lines if is_content(line))
+        """The lines that are neither blank nor ``#`` comments, lazily (none for binary content):
+        the text is not split for the first of them."""
+        return (line for _, line, _ in content_lines_of(self.text)) if self.is_text else iter(())
+
+
+def content_lines_of(text: str) -> Iterator[tuple[int, str, int]]:
+    """The lines of ``text`` that are neither blank nor comments (:func:`is_content`), lazily, each
+    with its index among the lines (``text.split("\\n")``) and where the line after it starts:
+    the first :data:`HEAD_LINES` lines are found one by one, the rest split off at once when the
+    lines are looked at beyond them."""
+    start = 0
+    for i in range(HEAD_LINES):
+        end = text.find("\n", start)
+        line = text[start:end if end >= 0 else len(text)]
+        start += len(line) + 1
+        if is_content(line):
+            yield i, line, start
+        if end < 0:
+            return
+    for i, line in enumerate(text[start:].split("\n"), HEAD_LINES):
+        start += len(line) + 1
+        if is_content(line):
+            yield i, line, start
 
 
 def is_content(line: str) -> bool:
@@ -233,12 +257,16 @@ def in_si(numbers: np.ndarray, kind: str, unit: str, factor: float, where: Calla
           written: Callable[[int], str]) -> np.ndarray:
     """A column's numbers (as written, in ``unit``) in SI, if every one is finite and within its
     kind's :data:`LIMITS`; else one line at the first culprit, ``where(i)`` naming the file and
-    its place ("card.csv: line 7") and ``written(i)`` the value as the file writes it."""
+    its place ("card.csv: line 7") and ``written(i)`` the value as the file writes it. A column
+    within its kind's limits is finite too (NaN compares false), so one comparison passes a good
+    column of a limited kind."""
+    values = numbers * factor
+    if (np.abs(values) <= LIMITS[kind][0]).all() if kind in LIMITS else np.isfinite(numbers).all():
+        return values
     bad = ~np.isfinite(numbers)
     if bad.any():
         i = int(np.argmax(bad))
         raise CardError(f"{where(i)}: {kind} is {written(i)}, not a finite number")
-    values = numbers * factor
     if kind in LIMITS:
         limit, shown = LIMITS[kind]
         beyond = np.abs(values) > limit
@@ -293,7 +321,9 @@ def stated_spm(value: object, where: str) -> float:
 
 def _time_order(time: np.ndarray, lines: np.ndarray, column: Column, source: str) -> bool:
     """True if the rows are in reverse time order; refuse repeated or unordered time stamps."""
-    steps = np.diff(time)
+    steps = time[1:] - time[:-1]
+    if steps.size and steps.min() > 0:
+        return False
     if np.any(steps == 0):
         i = int(np.argmax(steps == 0)) + 1
         raise CardError(f"{source}: line {lines[i]}: time {time[i] / column.factor:.6g} {column.unit} repeats "

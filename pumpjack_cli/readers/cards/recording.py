@@ -68,11 +68,36 @@ def tops(position: np.ndarray, hysteresis: float) -> list[int]:
     return found
 
 
+def turns_twice(position: np.ndarray, hysteresis: float) -> bool:
+    """Whether ``position`` falls by ``hysteresis`` (> 0), then rises by as much, then falls by as
+    much again, each turn after the last: :func:`tops` confirms a top on such a fall and the next
+    only after such a rise, so a card without these turns has fewer than two tops and is known
+    to be one card without the walk sample by sample. Each turn is taken where it is first
+    complete, against the running extreme since the last.
+
+    >>> turns_twice(np.array([0.0, 1.0, 0.2, 0.0, 0.9, 1.0, 0.1, 0.4]), 0.5)
+    True
+    >>> turns_twice(np.array([0.0, 1.0, 0.2, 0.0, 0.3]), 0.5)
+    False
+    """
+    at = 0
+    for falls in (True, False, True):
+        rest = position[at:]
+        done = (np.maximum.accumulate(rest) - rest if falls else rest - np.minimum.accumulate(rest)) >= hysteresis
+        turn = int(done.argmax())
+        if not done[turn]:
+            return False
+        at += turn
+    return True
+
+
 def split(raw: RawCard) -> RawCard:
     """A card with time stamps as it is when its positions pass fewer than two tops, else the
     strokes of the recording (the module's rules)."""
     position = raw.position
-    span = float(np.ptp(position))
+    span = float(position.max() - position.min())
+    if span > 0 and not turns_twice(position, HYSTERESIS * span):
+        return raw
     found = tops(position, HYSTERESIS * span)
     if len(found) < 2:
         return raw
