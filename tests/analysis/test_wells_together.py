@@ -46,7 +46,11 @@ def _cards(tmp_path, unit: str, count: int = 12) -> list[CardSource]:
 
 
 @pytest.mark.parametrize("unit_name", UNITS)
-def test_torque_of_many_cards_equals_each_card_alone(tmp_path, unit_name):
+def test_torque_of_many_cards_equals_each_card_alone(tmp_path, monkeypatch, unit_name):
+    """12 cards in blocks of 5 (the block's arrays are the cards', whatever the block)."""
+    import pumpjack_cli.analysis.torque as torque_module
+
+    monkeypatch.setattr(torque_module, "BLOCK", 5)
     unit = load_unit(unit_name)
     cards = _cards(tmp_path, unit_name)
     together = torques(unit, cards, None, 8, "auto", "api", "equal-peaks")
