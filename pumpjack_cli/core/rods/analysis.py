@@ -74,35 +74,40 @@ def card_work(position, load) -> np.ndarray:
     True
     """
     position, load = as_cards(position, load)
-    samples = position.shape[-1]
-    p = np.fft.rfft(position, axis=-1)[..., 1:]
-    f = np.fft.rfft(load, axis=-1)[..., 1:]
-    n = np.arange(1, p.shape[-1] + 1)
-    return -4.0 * np.pi / samples**2 * np.sum(n * np.imag(np.conj(f) * p), axis=-1)
+    return series_work(np.fft.rfft(position, axis=-1), np.fft.rfft(load, axis=-1), position.shape[-1])
 
 
-def _from_bottom(position: np.ndarray, load: np.ndarray):
-    """Cards rolled to start at the minimum position, and the index of the top."""
-    samples = position.shape[-1]
-    start = np.argmin(position, axis=-1)
-    order = (start[:, None] + np.arange(samples)) % samples
-    top = (np.argmax(position, axis=-1) - start) % samples
-    return (np.take_along_axis(position, order, axis=-1), np.take_along_axis(load, order, axis=-1), top)
+def series_work(position: np.ndarray, load: np.ndarray, samples: int) -> np.ndarray:
+    """:func:`card_work` of cards of ``samples`` samples given by their Fourier coefficients
+    (``numpy.fft.rfft``, n = 0, 1, ..., as many as kept: the harmonics left out add no work),
+    W = -(4 pi / N^2) sum_{n >= 1} n Im(conj(F_n) P_n) [J] per card; for a pump card that Gibbs'
+    transfer gives as a series (:func:`.gibbs.transfer`) without its samples.
+    """
+    n = np.arange(1, position.shape[-1])
+    return -4.0 * np.pi / samples**2 * np.sum(n * np.imag(np.conj(load[..., 1:]) * position[..., 1:]), axis=-1)
+
+
+def rolled(values: np.ndarray, start: np.ndarray) -> np.ndarray:
+    """Each row of ``values`` (K, N) rolled to begin at its sample ``start`` (K,): a window of the row
+    written twice, without the modulo of every index."""
+    samples = values.shape[-1]
+    twice = np.concatenate([values, values], axis=-1)
+    return np.lib.stride_tricks.sliding_window_view(twice, samples, axis=-1)[np.arange(len(values)), start]
 
 
 def _band_median(p, f, stroke_mask, low, stroke, band, what):
+    """The median load of each card over the samples of ``stroke_mask`` between the ``band``'s shares
+    of the stroke (a load level of :class:`PumpCardSummary`); an empty band is an error."""
     lower, upper = low + band[0] * stroke, low + band[1] * stroke
     inside = stroke_mask & (p >= lower[:, None]) & (p <= upper[:, None])
-    empty = ~inside.any(axis=-1)
-    if empty.any():
-        index = int(np.flatnonzero(empty)[0])
+    count = inside.sum(axis=-1)
+    if not count.all():
+        index = int(np.flatnonzero(count == 0)[0])
         raise DownholeError(f"pump card {index + 1}: no sample on the {what} between {band[0]:.0%} and "
                             f"{band[1]:.0%} of the stroke; sample the card more finely")
     values = np.sort(np.where(inside, f, np.nan), axis=-1)  # NaN last: the band's values first
-    count = inside.sum(axis=-1)
-    lower_middle = np.take_along_axis(values, ((count - 1) // 2)[:, None], axis=-1)[:, 0]
-    upper_middle = np.take_along_axis(values, (count // 2)[:, None], axis=-1)[:, 0]
-    return 0.5 * (lower_middle + upper_middle)
+    rows = np.arange(len(values))
+    return 0.5 * (values[rows, (count - 1) // 2] + values[rows, count // 2])
 
 
 @dataclass(frozen=True)
@@ -160,21 +165,27 @@ def summarise_pump_card(pump_position, pump_load) -> PumpCardSummary:
     """
     position, load = as_cards(pump_position, pump_load, "pump card")
     single = position.ndim == 1
-    p, f, top = _from_bottom(np.atleast_2d(position), np.atleast_2d(load))
-    low, stroke = p[:, 0], np.ptp(p, axis=-1)
+    p, f = np.atleast_2d(position), np.atleast_2d(load)
+    rows = np.arange(len(p))
+    bottom, top = np.argmin(p, axis=-1), np.argmax(p, axis=-1)
+    low = p[rows, bottom]
+    stroke = p[rows, top] - low
     if not (stroke > 0).all():
         index = int(np.flatnonzero(~(stroke > 0))[0])
         raise DownholeError(f"pump card {index + 1} has no plunger stroke")
-    sample = np.arange(p.shape[-1])
-    upstroke = sample[None, :] <= top[:, None]
+    # the stroke from the bottom, in time order around the cycle, without rolling the cards: the
+    # upstroke from the bottom to the top sample (across the record's end where the top comes first)
+    sample = np.arange(p.shape[-1])[None, :]
+    later, until_top = sample >= bottom[:, None], sample <= top[:, None]
+    upstroke = np.where((bottom <= top)[:, None], later & until_top, later | until_top)
     up = _band_median(p, f, upstroke, low, stroke, UPSTROKE_BAND, "upstroke")
     down = _band_median(p, f, ~upstroke, low, stroke, DOWNSTROKE_BAND, "downstroke")
     middle = 0.5 * (up + down)
     below = (f < middle[:, None]) & ~upstroke
     unloaded = below.any(axis=-1)
-    first = np.argmax(below, axis=-1)
-    rows = np.arange(len(p))
-    before = np.maximum(first - 1, 0)
+    after_bottom = below & later
+    first = np.where(after_bottom.any(axis=-1), np.argmax(after_bottom, axis=-1), np.argmax(below, axis=-1))
+    before = (first - 1) % p.shape[-1]        # never the bottom itself: it is on the upstroke
     f0, f1 = f[rows, before], f[rows, first]
     with np.errstate(invalid="ignore", divide="ignore"):
         weight = np.where(f0 > f1, (f0 - middle) / (f0 - f1), 0.0)

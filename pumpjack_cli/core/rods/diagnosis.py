@@ -43,7 +43,7 @@ import numpy as np
 
 from ...errors import DownholeError
 from ..sampling import ahead, behind
-from .analysis import as_cards
+from .analysis import as_cards, rolled, series_work
 from .string import RodString
 
 #: The labels, in the order of :attr:`Diagnosis.scores`.
@@ -93,13 +93,6 @@ def ramp(value, rule: str) -> np.ndarray:
     return np.nan_to_num(share, nan=0.0)
 
 
-def _circular_window(values: np.ndarray, window: int) -> np.ndarray:
-    """Views (K, N, window) of every sample's circular neighbourhood."""
-    half = window // 2
-    padded = np.concatenate([values[:, values.shape[1] - half:], values, values[:, :half]], axis=1)
-    return np.lib.stride_tricks.sliding_window_view(padded, window, axis=1)
-
-
 def _first_crossing(x: np.ndarray, y: np.ndarray, mask: np.ndarray, level: float, rising: bool) -> np.ndarray:
     """x where y first reaches ``level`` among the samples of ``mask`` (in time order), interpolated
     from the sample before when it is in the mask too; NaN where it never does."""
@@ -115,19 +108,23 @@ def _first_crossing(x: np.ndarray, y: np.ndarray, mask: np.ndarray, level: float
     return np.where(found, x[rows, j] + weight * (x[rows, i] - x[rows, j]), np.nan)
 
 
-def _running_median(values: np.ndarray, part: np.ndarray, window: int) -> np.ndarray:
-    """The running median over ``window`` (odd) samples of the samples of ``part`` (a contiguous
-    run of each row, the upstroke or the downstroke), the part's end values standing for the
-    samples beyond its ends; other samples are left as they are."""
+def _running_median(values: np.ndarray, top: np.ndarray, window: int) -> np.ndarray:
+    """The running median over ``window`` (odd) samples within the upstroke (samples 0 to ``top`` of
+    each row) and within the downstroke (the rest), never across the turn: each part's end values
+    stand for the samples beyond its ends. Both parts in one selection: each row laid out as its
+    upstroke and its downstroke, each padded with its end values, the median of every window of
+    that layout taken, and each sample's read off its own part."""
     samples = values.shape[1]
-    index = np.arange(samples)[None, :]
-    first = np.argmax(part, axis=1)[:, None]
-    last = (samples - 1 - np.argmax(part[:, ::-1], axis=1))[:, None]
-    clamped = np.take_along_axis(values, np.clip(index, first, last), axis=1)
     half = window // 2
-    padded = np.pad(clamped, ((0, 0), (half, half)), mode="edge")
-    view = np.lib.stride_tricks.sliding_window_view(padded, window, axis=1)
-    return np.where(part, np.partition(view, half, axis=-1)[..., half], values)
+    top = top[:, None]
+    laid = np.arange(samples + 4 * half)[None, :]          # the upstroke padded, then the downstroke padded
+    source = np.where(laid <= top + 2 * half, np.clip(laid - half, 0, top),
+                      np.clip(laid - 3 * half, top + 1, samples - 1))
+    rows = np.arange(len(values))[:, None]
+    windows = np.lib.stride_tricks.sliding_window_view(values[rows, source], window, axis=1)
+    medians = np.partition(windows, half, axis=-1)[..., half]
+    index = np.arange(samples)[None, :]
+    return medians[rows, np.where(index <= top, index, index + 2 * half)]
 
 
 def _masked_median(values: np.ndarray, mask: np.ndarray) -> np.ndarray:
@@ -217,21 +214,20 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     if not (np.isfinite(reference).all() and (reference > 0).all()):
         raise DownholeError(f"the reference fluid load must be positive and finite, got {reference_load}")
     start = np.argmin(position, axis=1)
-    order = (start[:, None] + np.arange(samples)) % samples
-    p, f = np.take_along_axis(position, order, 1), np.take_along_axis(load, order, 1)
+    p, f = rolled(position, start), rolled(load, start)
     low, stroke = p[:, 0], np.ptp(p, axis=1)
     if not (stroke > 0).all():
         raise DownholeError(f"pump card {int(np.flatnonzero(~(stroke > 0))[0]) + 1} has no plunger stroke")
     x = (p - low[:, None]) / stroke[:, None]
-    upstroke = np.arange(samples)[None, :] <= np.argmax(p, axis=1)[:, None]
+    top = np.argmax(p, axis=1)
+    upstroke = np.arange(samples)[None, :] <= top[:, None]
     downstroke = ~upstroke
     # a running median over 1/40 of the stroke's samples, within the upstroke and within the
     # downstroke (never across the turn), takes out noise and the ringing of a sharp load change
     # (no feature below needs a finer resolution); spikes use a 3-point mean
     window = max(3, (samples // 40) | 1)
-    with np.errstate(invalid="ignore"):
-        smooth = _running_median(_running_median(f, upstroke, window), downstroke, window)
-    light = _circular_window(f, 3).mean(axis=-1)
+    smooth = _running_median(f, top, window)
+    light = (behind(f) + f + ahead(f)) / 3.0
 
     def band(mask, limits):
         return _masked_median(smooth, mask & (x >= limits[0]) & (x <= limits[1]))
@@ -247,8 +243,7 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     slow = (speed >= SLOW[0]) & (speed <= SLOW[1])
     with np.errstate(invalid="ignore", divide="ignore"):
         sharpness = unloading / (1.0 - drained)
-    work = -4.0 * np.pi / samples**2 * np.sum(np.arange(1, samples // 2 + 1) * np.imag(
-        np.conj(np.fft.rfft(f, axis=1)[:, 1:samples // 2 + 1]) * np.fft.rfft(p, axis=1)[:, 1:samples // 2 + 1]), axis=1)
+    work = series_work(np.fft.rfft(p, axis=1), np.fft.rfft(f, axis=1), samples)
     return CardFeatures(
         upstroke_load=up, downstroke_load=down, fluid_load=fluid, reference_load=np.array(reference),
         fluid_load_ratio=fluid / reference, mean_load_ratio=f.mean(axis=1) / reference,

@@ -27,7 +27,7 @@ import numpy as np
 from ...errors import DownholeError
 from ..constants import STANDARD_GRAVITY
 from . import everitt_jennings, gibbs
-from .analysis import as_cards, card_work, summarise_pump_card
+from .analysis import as_cards, card_work, series_work, summarise_pump_card
 from .string import RodString
 
 #: Default Gibbs damping factor nu (dimensionless): nu / 2 = 2.5 % of critical damping of
@@ -307,19 +307,34 @@ def _brent_root(excess, largest: float, count: int) -> tuple[np.ndarray, np.ndar
     return np.array([root]), np.array([undamped]), np.array([damped])
 
 
-def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, nu: np.ndarray, *,
-               fluid_density: float, method: str, gravity: float) -> tuple[np.ndarray, np.ndarray]:
-    """Pump position and load, shape (K, N), of K surface cards of periods (K,) at damping factors (K,)
-    (the cards checked once by the caller, :func:`_many`); Gibbs' transfer as :func:`_solve` makes
-    it, the pump's end alone transformed back."""
-    if method == "gibbs":
-        static = string.static_tension(fluid_density, gravity)
-        w, f = _march_function(method)(string, period, position, load - static[0],
-                                       np.asarray(string.damping_coefficient(nu))[..., None], bottom_only=True)
-        return w, f + static[-1]
-    card = _solve(string, period, position, load, fluid_density=fluid_density, damping_factor=nu, method=method,
-                  harmonics=None, gravity=gravity, upward=False)
-    return card.pump_position, card.pump_load
+def _pump_ends(string: RodString, period: np.ndarray, position: np.ndarray, load: np.ndarray, *,
+               fluid_density: float, method: str, gravity: float):
+    """A search's transfer of K surface cards (K, N) of periods (K,) (checked once by the caller,
+    :func:`_many`): (nu, rows) -> the pump position and load, shape (K', N), and the pump card's work
+    per cycle [J], shape (K',), of the cards ``rows`` (increasing indices, as :func:`decreasing_roots`
+    gives them) at their damping factors nu (K',). Gibbs: the cards' Fourier series taken once for all
+    the calls, the pump's end alone transformed back, its work from its series
+    (:func:`.analysis.series_work`), the pump card as :func:`_solve` makes it. Another method: its
+    pump card by :func:`_solve`, the work by :func:`.analysis.card_work`."""
+    if method != "gibbs":
+        def solved(nu: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+            card = _solve(string, period[rows], position[rows], load[rows], fluid_density=fluid_density,
+                          damping_factor=nu, method=method, harmonics=None, gravity=gravity, upward=False)
+            return card.pump_position, card.pump_load, card_work(card.pump_position, card.pump_load)
+
+        return solved
+    static = string.static_tension(fluid_density, gravity)
+    omega, w, f = gibbs.series(period, position, load - static[0])
+    samples = position.shape[-1]
+
+    def transferred(nu: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        damping = np.asarray(string.damping_coefficient(nu))[:, None]
+        chosen = slice(None) if len(rows) == len(omega) else rows      # all the cards: no copies
+        bottom_w, bottom_f = gibbs.transfer(string, omega[chosen], w[chosen], f[chosen], damping, bottom_only=True)
+        return (np.fft.irfft(bottom_w, n=samples, axis=-1), np.fft.irfft(bottom_f, n=samples, axis=-1) + static[-1],
+                series_work(bottom_w, bottom_f, samples))
+
+    return transferred
 
 
 def _many(period, position, load, what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -358,10 +373,11 @@ def damping_for_pump_work(string: RodString, period: float, position, load, pump
     if len(position) != 1:
         raise DownholeError("damping_for_pump_work takes one card of shape (N,)")
 
+    transferred = _pump_ends(string, periods, position, load, fluid_density=fluid_density, method=method,
+                             gravity=gravity)
+
     def excess(nu: np.ndarray, rows: np.ndarray) -> np.ndarray:
-        p, f = _pump_ends(string, periods[rows], position[rows], load[rows], nu, fluid_density=fluid_density,
-                          method=method, gravity=gravity)
-        return card_work(p, f) - pump_work
+        return transferred(nu, rows)[2] - pump_work
 
     roots, undamped, damped = decreasing_roots(excess, largest, 1)
     if np.isnan(roots[0]):
@@ -415,18 +431,21 @@ def dampings_from_fluid_load(string: RodString, period, position, load, fluid_lo
     fluid = np.broadcast_to(np.asarray(fluid_load, dtype=float), (count,))
     problems = [""] * count
 
-    def pump_ends(nu: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        if solve is not None:
+    if solve is None:
+        pump_ends = _pump_ends(string, periods, position, load, fluid_density=fluid_density, method=method,
+                               gravity=gravity)
+    else:
+        def pump_ends(nu: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             card = solve(float(nu[0]))
-            return np.atleast_2d(card.pump_position), np.atleast_2d(card.pump_load)
-        return _pump_ends(string, periods[rows], position[rows], load[rows], nu, fluid_density=fluid_density,
-                          method=method, gravity=gravity)
+            p, f = np.atleast_2d(card.pump_position), np.atleast_2d(card.pump_load)
+            return p, f, card_work(p, f)
 
     def excess(nu: np.ndarray, rows: np.ndarray) -> np.ndarray:
-        p, f = pump_ends(nu, rows)
+        p, f, work = pump_ends(nu, rows)
         out = np.full(len(rows), np.nan)
         live = np.array([not problems[r] for r in rows], dtype=bool)
-        p, f = p[live], f[live]
+        if not live.all():
+            p, f, work = p[live], f[live], work[live]
         try:
             net = summarise_pump_card(p, f).net_stroke
         except DownholeError:       # a card without a stroke or a load level: each card alone, for its message
@@ -436,7 +455,7 @@ def dampings_from_fluid_load(string: RodString, period, position, load, fluid_lo
                     net[i] = summarise_pump_card(p[i], f[i]).net_stroke
                 except DownholeError as exc:
                     problems[r] = str(exc)
-        out[live] = card_work(p, f) - fluid[rows[live]] * net
+        out[live] = work - fluid[rows[live]] * net
         return np.where(np.isnan(out), 0.0, out)    # a card with a problem stops at once
 
     roots, undamped, damped = (decreasing_roots if solve is None else _brent_root)(excess, largest, count)

@@ -15,7 +15,9 @@ beta^2 = (-omega^2 + i omega c) / a^2, so over a section of length l
 matter). Displacement and force are continuous at each joint, so the sections chain as
 a product of these matrices [GibbsNeely1966]. The surface card enters as the Fourier
 series of its position and dynamic load; the result is exact for the periodic steady
-state of the trigonometric interpolant of the samples.
+state of the trigonometric interpolant of the samples. A search over the damping (the
+energy balance of :mod:`.downhole`) takes the series once (:func:`series`) and chains the
+matrices at each damping (:func:`transfer`).
 """
 
 from __future__ import annotations
@@ -25,28 +27,84 @@ import numpy as np
 from .string import RodString
 
 
-def _section_matrix(omega: np.ndarray, length: float, wave_speed: float, stiffness: float,
-                    damping: float | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic, the
-    hyperbolic functions from one complex exponential (Re z >= 0 here, so e^-z does not
-    overflow; sinh z / z near z = 0, where the difference of exponentials cancels, from its
-    series 1 + z^2/6 + z^4/120, whose next term is below 1e-16 for |z| < 1e-3)."""
-    beta = np.sqrt((-(omega**2) + 1j * omega * damping).astype(complex)) / wave_speed
-    z = beta * length
-    grows = np.exp(z)
-    decays = 1.0 / grows
-    cosh, sinh = 0.5 * (grows + decays), 0.5 * (grows - decays)
-    small = np.abs(z) < 1e-3
-    with np.errstate(invalid="ignore", divide="ignore"):
-        sinhc = sinh / np.where(small, 1.0, z)
-    if np.any(small):
-        near = z[small]
-        sinhc[small] = 1.0 + near * near / 6.0 + near**4 / 120.0
-    return cosh, length * sinhc / stiffness, stiffness * z * sinh / length
+def _propagation(omega: np.ndarray, damping: float | np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """s = a beta = sqrt(-omega^2 + i omega c) per harmonic, the same in every section (beta = s / a_i),
+    1 / s (0 where s = 0) and the mask of s = 0: once per damping for all the sections, from real
+    square roots without cancellation, |s|^2 = omega sqrt(omega^2 + c^2), Im s = sqrt((|s|^2 + omega^2) / 2),
+    Re s = omega c / (2 Im s) (the principal root, Re s >= 0 for c >= 0)."""
+    squared = omega * omega
+    modulus = omega * np.sqrt(squared + damping * damping)
+    imaginary = np.sqrt(0.5 * (modulus + squared))
+    moving = modulus > 0.0
+    root = np.zeros(modulus.shape, dtype=complex)
+    np.divide(omega * damping, 2.0 * imaginary, out=root.real, where=moving)
+    root.imag = imaginary
+    inverse = np.zeros(modulus.shape, dtype=complex)
+    np.divide(root.real, modulus, out=inverse.real, where=moving)
+    np.divide(-imaginary, modulus, out=inverse.imag, where=moving)
+    return root, inverse, ~moving
+
+
+def _section_matrix(propagation: tuple[np.ndarray, np.ndarray, np.ndarray], length: float, wave_speed: float,
+                    stiffness: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """cosh(beta l), sinh(beta l)/(E A beta) and E A beta sinh(beta l) per harmonic from
+    :func:`_propagation`'s s: z = beta l = s l / a = x + i y, cosh z = cosh x cos y + i sinh x sin y,
+    sinh z = sinh x cos y + i cosh x sin y, and sinh z / (E A beta) = (a / E A) sinh z / s. cos y and
+    sin y come from the tangent of the half angle, t = tan(y / 2), cos y = (1 - t^2) / (1 + t^2),
+    sin y = 2 t / (1 + t^2): numpy vectorises tan, while its float64 sin and cos cost about ten times
+    as much. No difference of exponentials cancels, so this holds to rounding however small z is;
+    at s = 0 (the mean, n = 0) sinh z / (E A beta) is its limit, the static compliance l / (E A)."""
+    root, inverse, resting = propagation
+    travel = length / wave_speed
+    x = root.real * travel
+    half = np.tan(root.imag * (0.5 * travel))
+    squared = half * half
+    scale = 1.0 / (1.0 + squared)
+    cosh_x, sinh_x, cos_y, sin_y = np.cosh(x), np.sinh(x), (1.0 - squared) * scale, 2.0 * half * scale
+    cosh, sinh = np.empty(root.shape, dtype=complex), np.empty(root.shape, dtype=complex)
+    np.multiply(cosh_x, cos_y, out=cosh.real)
+    np.multiply(sinh_x, sin_y, out=cosh.imag)
+    np.multiply(sinh_x, cos_y, out=sinh.real)
+    np.multiply(cosh_x, sin_y, out=sinh.imag)
+    compliance = sinh * inverse * (wave_speed / stiffness)
+    np.copyto(compliance, length / stiffness, where=resting)
+    return cosh, compliance, sinh * root * (stiffness / wave_speed)
+
+
+def series(period: float | np.ndarray, position: np.ndarray, load: np.ndarray,
+           harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """omega_n = 2 pi n / T [rad/s] and the Fourier coefficients (``numpy.fft.rfft``, n = 0 to the
+    highest harmonic kept) of the cards' position and load at the top, what :func:`transfer` takes;
+    parameters as :func:`march`."""
+    samples = position.shape[-1]
+    highest = (samples - 1) // 2 if harmonics is None else min(int(harmonics), (samples - 1) // 2)
+    omega = 2.0 * np.pi * np.arange(highest + 1) / np.asarray(period, dtype=float)[..., None]
+    return omega, np.fft.rfft(position, axis=-1)[..., : highest + 1], np.fft.rfft(load, axis=-1)[..., : highest + 1]
+
+
+def transfer(string: RodString, omega: np.ndarray, position: np.ndarray, load: np.ndarray,
+             damping: float | np.ndarray, bottom_only: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The Fourier coefficients of the displacement and dynamic tension at every section end, shape
+    (..., S + 1, H) with index 0 the top, from those at the top (:func:`series`): the section
+    matrices chained down the string [Gibbs1963], [GibbsNeely1966]; ``damping`` as :func:`march`.
+    With ``bottom_only``, shape (..., H), the bottom of the last section alone (what a search on the
+    pump card needs)."""
+    shape = np.broadcast_shapes(position.shape, load.shape, np.shape(damping))
+    w, f = np.broadcast_to(position, shape), np.broadcast_to(load, shape)
+    ends_w, ends_f = [w], [f]
+    propagation = _propagation(omega, damping)
+    for length, speed, ea in zip(string.length, string.wave_speed, string.youngs_modulus * string.area):
+        cosh, compliance, rigidity = _section_matrix(propagation, length, speed, ea)
+        w, f = cosh * w - compliance * f, cosh * f - rigidity * w
+        ends_w.append(w)
+        ends_f.append(f)
+    if bottom_only:
+        return w, f
+    return np.stack(ends_w, axis=-2), np.stack(ends_f, axis=-2)
 
 
 def march(string: RodString, period: float | np.ndarray, position: np.ndarray, load: np.ndarray, damping: float | np.ndarray,
-          harmonics: int | None = None, bottom_only: bool = False) -> tuple[np.ndarray, np.ndarray]:
+          harmonics: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Displacement and dynamic tension at every section end from those at the top.
 
     Parameters
@@ -67,34 +125,15 @@ def march(string: RodString, period: float | np.ndarray, position: np.ndarray, l
         Highest harmonic kept; default (N - 1) // 2, every harmonic the grid resolves
         (the Nyquist term of an even N is dropped: its sine part is not sampled).
 
-    bottom_only : bool
-        Only the bottom of the last section transformed back (what a search on the pump card needs).
-
     Returns
     -------
     position, load : numpy.ndarray
-        Shape (..., S + 1, N): index 0 the top, index S the bottom of the last section; with
-        ``bottom_only``, shape (..., N), the bottom alone.
+        Shape (..., S + 1, N): index 0 the top, index S the bottom of the last section.
 
     References
     ----------
     [Gibbs1963], [GibbsNeely1966].
     """
     samples = position.shape[-1]
-    highest = (samples - 1) // 2 if harmonics is None else min(int(harmonics), (samples - 1) // 2)
-    omega = 2.0 * np.pi * np.arange(highest + 1) / np.asarray(period, dtype=float)[..., None]
-    w = np.fft.rfft(position, axis=-1)[..., : highest + 1]
-    f = np.fft.rfft(load, axis=-1)[..., : highest + 1]
-    shape = np.broadcast_shapes(w.shape, f.shape, np.shape(damping))
-    w, f = np.broadcast_to(w, shape), np.broadcast_to(f, shape)
-    ends_w, ends_f = [w], [f]
-    stiffness = string.youngs_modulus * string.area
-    for length, speed, ea in zip(string.length, string.wave_speed, stiffness):
-        cosh, compliance, rigidity = _section_matrix(omega, length, speed, ea, damping)
-        w, f = cosh * w - compliance * f, cosh * f - rigidity * w
-        ends_w.append(w)
-        ends_f.append(f)
-    if bottom_only:
-        return np.fft.irfft(w, n=samples, axis=-1), np.fft.irfft(f, n=samples, axis=-1)
-    return (np.fft.irfft(np.stack(ends_w, axis=-2), n=samples, axis=-1),
-            np.fft.irfft(np.stack(ends_f, axis=-2), n=samples, axis=-1))
+    w, f = transfer(string, *series(period, position, load, harmonics), damping)
+    return np.fft.irfft(w, n=samples, axis=-1), np.fft.irfft(f, n=samples, axis=-1)

@@ -14,8 +14,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pumpjack_cli.core.rods.diagnosis import (CONDITIONS, card_features, classify, condition_scores, diagnose,
-                                              hanging_depth, sequence_conditions)
+from pumpjack_cli.core.rods.diagnosis import (CONDITIONS, _running_median, card_features, classify, condition_scores,
+                                              diagnose, hanging_depth, sequence_conditions)
 from pumpjack_cli.core.rods.string import RodString
 from pumpjack_cli.errors import DownholeError
 
@@ -117,6 +117,22 @@ def test_the_answer_does_not_depend_on_where_the_record_starts_or_on_the_unit(co
                      "slow_upstroke_load", "slow_downstroke_load", "bottom_spike", "top_spike"):
             assert np.allclose(getattr(moved, name), getattr(base, name), equal_nan=True), name
     assert diagnose(np.roll(Z, 57), np.roll(CARDS[condition], 57), F_O).label[0] == condition
+
+
+@pytest.mark.parametrize("window", [3, 5, 9])
+def test_the_running_median_stays_within_the_upstroke_and_within_the_downstroke(window):
+    # against the median of each sample's window, its indices held to the sample's own part (the
+    # upstroke up to the top, the downstroke after it), computed sample by sample
+    samples = 40
+    values = np.random.default_rng(window).standard_normal((4, samples))
+    top = np.array([0, 7, 25, samples - 1])
+    found = _running_median(values, top, window)
+    half = window // 2
+    for k in range(len(values)):
+        for i in range(samples):
+            first, last = (0, top[k]) if i <= top[k] else (top[k] + 1, samples - 1)
+            around = np.clip(np.arange(i - half, i + half + 1), first, last)
+            assert found[k, i] == np.median(values[k, around]), (k, i)
 
 
 def test_the_valve_points_and_fillage_of_a_pounding_pump_are_where_the_load_crosses():

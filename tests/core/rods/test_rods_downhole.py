@@ -13,6 +13,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from pumpjack_cli.core.rods import gibbs
 from pumpjack_cli.core.rods.analysis import card_work
 from pumpjack_cli.core.rods.downhole import (
     DEFAULT_DAMPING_FACTOR,
@@ -226,6 +227,23 @@ def test_uniform_rod_standing_wave_closed_form(method, tolerance, damping):
     assert card.pump_position == pytest.approx(np.real(amplitude / np.cosh(beta * length) * phase),
                                                abs=tolerance * amplitude)
     assert np.abs(card.pump_load).max() < tolerance * load_range
+
+
+@pytest.mark.parametrize("damping", [0.0, 1e-7, 0.3, 12.0])
+def test_section_matrix_is_the_transfer_matrix_of_the_wave_equation(damping):
+    # cosh(b l), sinh(b l) / (E A b) and E A b sinh(b l), b = sqrt(-w^2 + i w c) / a, from numpy's
+    # complex functions: to rounding from the mean (the static compliance l / (E A)) and 0.16 mHz
+    # (|b l| ~ 2e-4) to the highest harmonic of a fast card (|b l| ~ 100)
+    rod = steel_rod(0.022)
+    length, ea = 800.0, rod.youngs_modulus * rod.area
+    speed = np.sqrt(ea / rod.mass_per_length)
+    omega = np.array([0.0, 1e-3, 0.5, 2.0, 40.0, 600.0])
+    cosh, compliance, rigidity = gibbs._section_matrix(gibbs._propagation(omega, damping), length, speed, ea)
+    z = np.sqrt((-omega**2 + 1j * omega * damping).astype(complex)) / speed * length
+    sinhc = np.where(z == 0, 1.0, np.sinh(z) / np.where(z == 0, 1.0, z))
+    assert cosh == pytest.approx(np.cosh(z), rel=1e-13, abs=1e-13)
+    assert compliance == pytest.approx(length * sinhc / ea, rel=1e-13)
+    assert rigidity == pytest.approx(ea * z * np.sinh(z) / length, rel=1e-13, abs=1e-13 * ea / length)
 
 
 def test_method_registry_and_unknown_method():
