@@ -143,7 +143,8 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
                 inner[0] = outer + took
         return run
 
-    per_card.analyse_chunk([(0, asdict(jobs[0]))], settings)        # imports and unit loading out of the timing
+    first = {job.unit: index for index, job in reversed(list(enumerate(jobs)))}
+    per_card.analyse_chunk([(i, asdict(jobs[i])) for i in first.values()], settings)   # imports, units, caches
     patched = []
     for module, name, phase in PHASES:
         owner = importlib.import_module(module)
