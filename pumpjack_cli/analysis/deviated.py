@@ -50,10 +50,10 @@ def with_survey(unit: UnitConfig, survey: Path | None = None, friction: float | 
     """The unit with its ``[well]``'s survey file, friction coefficient and guide limit replaced by the
     options (None keeps the file's), validated by the well's schema (a value out of range is
     refused naming its option: :func:`.predict.with_overrides`)."""
-    from .predict import WellOverrides, with_overrides
-
     if survey is None and friction is None and guide_limit is None:
         return unit
+    from .predict import WellOverrides, with_overrides   # its import takes scipy: only when there is an option
+
     return with_overrides(unit, WellOverrides(survey=None if survey is None else str(Path(survey).absolute()),
                                               friction_coefficient=friction, guide_limit=guide_limit))
 
