@@ -206,7 +206,8 @@ def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, op
 
     with executor(scheduler, workers, len(indices)) as (execute, slots):
         size = chunk_size(len(indices), slots)
-        chunks = ([(i, asdict(jobs[i])) for i in indices[k:k + size]] for k in range(0, len(indices), size))
+        # a job's fields are plain values: its fields' dict is the plain data (asdict's deep copies cost more)
+        chunks = ([(i, dict(vars(jobs[i]))) for i in indices[k:k + size]] for k in range(0, len(indices), size))
         store = Store(store_path, write=True)
         try:
             execute(chunks, asdict(options), store_chunk)
