@@ -274,14 +274,12 @@ def dynamics_forces() -> list[str]:
 
 
 def batch_tasks() -> list[str]:
-    """The tasks a field is cut into (``analysis.batch.run.chunk_size``: a rule, not a command's output)."""
-    import math
-
-    from pumpjack_cli.analysis.batch.run import chunk_size
+    """The tasks a field is cut into (``analysis.batch.run.task_sizes``: a rule, not a command's output)."""
+    from pumpjack_cli.analysis.batch.run import chunk_size, task_sizes
 
     fields = ((40, 2), (1000, 2), (10_000, 2), (100_000, 2), (100_000, 64))
-    return [f"| {n(cards)} cards | {workers} | {chunk_size(cards, workers)} | "
-            f"{math.ceil(cards / chunk_size(cards, workers))} |" for cards, workers in fields]
+    return [f"| {n(cards)} cards | {workers} | {chunk_size(cards, workers)} | {len(task_sizes(cards, workers))} | "
+            f"{task_sizes(cards, workers)[-1]} |" for cards, workers in fields]
 
 
 #: Declared tables: (document, header line) -> the rows' builder.
@@ -303,7 +301,7 @@ TABLES: dict[tuple[str, str], Callable[[], list[str]]] = {
     ("dynamics.md", "| rtol | start ω1 [1/s] | ω1 at 90° [1/s] | energy per cycle [J] | periodicity error |"):
         dynamics_rtol,
     ("dynamics.md", "| force | formula | source | SK8 well |"): dynamics_forces,
-    ("batch.md", "| field | workers | cards per task | tasks |"): batch_tasks,
+    ("batch.md", "| field | workers | cards per task | tasks | the last task |"): batch_tasks,
 }
 
 #: Tables whose numbers are not results of a command, by (document, header line): why.

@@ -8,6 +8,7 @@ workers are stopped, and every card stored so far is complete (the same command 
 
 from __future__ import annotations
 
+import itertools
 import math
 import time
 from collections import Counter
@@ -67,6 +68,30 @@ def chunk_size(cards: int, workers: int) -> int:
     (256, 125, 5, 1)
     """
     return max(1, min(MAX_CHUNK, math.ceil(cards / (TASKS_PER_WORKER * max(1, workers)))))
+
+
+#: The smallest task of a run's tail (fewer cards only when fewer are left).
+TAIL_TASK = 32
+
+
+def task_sizes(cards: int, workers: int) -> list[int]:
+    """The tasks ``cards`` cards are cut into on ``workers`` workers: :func:`chunk_size` cards each,
+    until fewer than two such tasks per worker are left; from there each task takes half of a
+    worker's share of what is left, ceil(left / (2 workers)) (at least :data:`TAIL_TASK` cards, at
+    most the chunk size), so that the workers run out of work together instead of one waiting on
+    the other's last long task.
+
+    >>> task_sizes(1000, 2)
+    [125, 125, 125, 125, 125, 94, 71, 53, 40, 32, 32, 32, 21]
+    >>> task_sizes(40, 2) == [5] * 8, sum(task_sizes(10_000, 2)), len(task_sizes(10_000, 2))
+    (True, 10000, 47)
+    """
+    size, sizes, left = chunk_size(cards, workers), [], cards
+    while left > 0:
+        step = min(left, size, max(min(size, TAIL_TASK), math.ceil(left / (2 * max(1, workers)))))
+        sizes.append(step)
+        left -= step
+    return sizes
 
 
 def _check(options: Options) -> None:
@@ -179,7 +204,7 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
 
 def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, options: Options, workers: int,
              scheduler: str | None, progress, stored: Counter) -> None:
-    """The pending cards through the executor, in tasks of :func:`chunk_size` cards, into the
+    """The pending cards through the executor, in tasks of :func:`task_sizes` cards, into the
     store (opened for writing once the executor is ready), the cards of each finished task in
     one transaction; ``stored`` counts the results stored by status, and those another run
     stored first as ``another``."""
@@ -205,9 +230,9 @@ def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, op
             progress(finished, len(pending))
 
     with executor(scheduler, workers, len(indices)) as (execute, slots):
-        size = chunk_size(len(indices), slots)
+        bounds = itertools.accumulate(task_sizes(len(indices), slots), initial=0)
         # a job's fields are plain values: its fields' dict is the plain data (asdict's deep copies cost more)
-        chunks = ([(i, dict(vars(jobs[i]))) for i in indices[k:k + size]] for k in range(0, len(indices), size))
+        chunks = ([(i, dict(vars(jobs[i]))) for i in indices[start:stop]] for start, stop in itertools.pairwise(bounds))
         store = Store(store_path, write=True)
         try:
             execute(chunks, asdict(options), store_chunk)
