@@ -210,7 +210,7 @@ def significant(values, digits: int = SIGNIFICANT_DIGITS):
         value = float(values)
         if value == 0.0 or not math.isfinite(value):
             return value
-        return float(f"{value:.{digits}g}")
+        return float("%.*g" % (digits, value))
     import numpy as np   # an array: numpy is already loaded
 
     x = np.asarray(values, dtype=float)

@@ -48,7 +48,7 @@ class Column:
             object.__setattr__(self, "description", description)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Scalar:
     """One summary value: an output name of the catalogue (:mod:`pumpjack_cli.names`, which
     gives its quantity kind and description) and its value, a number (SI) or a text (a label)."""
@@ -160,26 +160,52 @@ def display_name(name: str, quantity: str, system: str) -> str:
 
 
 def converted_summary(result: Result, system: str) -> dict[str, float | str]:
-    """Summary values in the display units of ``system``, keyed by suffixed name (text as it is)."""
+    """Summary values in the display units of ``system``, keyed by suffixed name (text as it is).
+
+    A number shown in the unit it is computed in (scale 1, no rounding: most of a summary in SI)
+    is the value + 0.0, as :meth:`~.quantities.OutputUnit.convert` makes it, without the call."""
+    shown = _shown(system)
     found: dict[str, float | str] = {}
     for s in result.summary:
-        key, unit = _shown(s.name, system)
-        found[key] = s.value if isinstance(s.value, str) or unit is None else float(unit.convert(float(s.value)))
+        key, unit, as_computed = shown[s.name]
+        value = s.value
+        if isinstance(value, str) or unit is None:
+            found[key] = value
+        elif as_computed:
+            found[key] = float(value) + 0.0
+        else:
+            found[key] = float(unit.convert(float(value)))
     return found
 
 
+class _Shown(dict):
+    """The suffixed name, the display unit (None for text) and whether it is the unit the value is
+    computed in, of each summary name in one unit system: found when a name is first met."""
+
+    def __init__(self, system: str) -> None:
+        super().__init__()
+        self.system = system
+
+    def __missing__(self, name: str) -> tuple[str, OutputUnit | None, bool]:
+        quantity = lookup(name)[0]
+        unit = output_unit(quantity, self.system) if quantity != TEXT else None
+        found = self[name] = (display_name(name, quantity, self.system), unit,
+                              unit is not None and unit.scale == 1.0 and unit.decimals is None)
+        return found
+
+
 @functools.cache
-def _shown(name: str, system: str) -> tuple[str, OutputUnit | None]:
-    """The suffixed name and the display unit of a summary name in a unit system."""
-    quantity = lookup(name)[0]
-    return display_name(name, quantity, system), output_unit(quantity, system) if quantity != TEXT else None
+def _shown(system: str) -> _Shown:
+    """The summary names' display of a unit system (:class:`_Shown`), one table per system."""
+    return _Shown(system)
 
 
 def check_finite(result: Result) -> None:
     """Refuse to output NaN or infinity: name the value, or the column and the first bad row."""
     for s in result.summary:
-        if not isinstance(s.value, str) and not math.isfinite(s.value):
-            raise PumpjackError(f"result {s.name} is not finite ({s.value}); the computation failed")
+        value = s.value
+        if not (isinstance(value, str) or math.isfinite(value)):
+            raise PumpjackError(f"result {s.name} is not finite ({value}); the computation failed")
     for c in result.columns:
         if c.quantity == TEXT:
             continue

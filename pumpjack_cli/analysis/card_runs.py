@@ -466,22 +466,26 @@ def time_cards(unit: UnitConfig, mechanism: Mechanism, sources: list, spm: float
         card_motion = reading.time is not None and (crank_motion == "card" or (crank_motion == "auto" and spm is None))
         if card_motion and spm is None:       # the time integration's table, without the rest of a run
             *_, elapsed = reading.motion_tables
-            when, period = np.interp(grid, _FINE, elapsed), float(elapsed[-1])
-        else:
-            (run,) = reading_runs(unit, reading, spm, (grid.size,), crank_motion)
-            when, period = run.time, run.period
-        time = np.arange(samples) * (period / samples)
-        return reading, np.interp(time, np.append(when, period), np.append(grid, 2.0 * np.pi)), period
+            return reading, np.interp(grid, _FINE, elapsed), float(elapsed[-1])
+        (run,) = reading_runs(unit, reading, spm, (grid.size,), crank_motion)
+        return reading, run.time, run.period
 
     found, errors, said = each_card(sources, timed)
     keys = sorted(found)
     if not keys:
         return {}, errors, said
-    thetas = np.array([found[k][1] for k in keys])
+    periods = [found[k][2] for k in keys]
+    times = np.arange(samples) * (np.array(periods) / samples)[:, None]
+    # each card's crank angles at its times, the inverse of its time at the grid's angles (and of
+    # its period at 2 pi), that table's rows written in one array for every card
+    when, angles = np.empty(grid.size + 1), np.append(grid, 2.0 * np.pi)
+    thetas = np.empty((len(keys), samples))
+    for theta, time, k, period in zip(thetas, times, keys, periods):
+        when[:-1], when[-1] = found[k][1], period
+        theta[:] = np.interp(time, when, angles)
     positions = mechanism.rod_position(thetas.ravel()).reshape(thetas.shape)
     cards = {}
-    for k, theta, position in zip(keys, thetas, positions):
-        reading, _, period = found[k]
-        cards[k] = reading, TimeCard(np.arange(samples) * (period / samples), theta, position,
-                                     card_load(reading.card, theta), period)
+    for k, time, theta, position, period in zip(keys, times, thetas, positions, periods):
+        reading = found[k][0]
+        cards[k] = reading, TimeCard(time, theta, position, card_load(reading.card, theta), period)
     return cards, errors, said

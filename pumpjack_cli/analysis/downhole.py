@@ -21,6 +21,7 @@ import numpy as np
 from ..core.beam.counterbalance import rp11l_counterbalance_effect
 from ..core.rods.analysis import (
     PumpCardSummary,
+    TaperLoads,
     card_work,
     displacement_rate,
     intake_pressure,
@@ -45,7 +46,7 @@ from .card_runs import CardSource, alone, time_cards
 from .deviated import (Deviation, deviated_path, friction_coefficient, method_for, profile_result, survey_summary,
                        surveyed, with_survey)
 from .inputs import dead_position_marks
-from .rods import goodman_panel, taper_summary
+from .rods import TaperRows, goodman_panel
 
 if TYPE_CHECKING:  # the schema is loaded by the caller; annotations only
     from ..config.beam_unit import UnitConfig
@@ -119,7 +120,8 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     computation (every card as alone); in a deviated well (``deviation``'s survey or the unit's)
     each card is marched with the drag and gravity along the hole (:mod:`.deviated`), method
     None choosing. ``tables`` False: the summaries alone, without columns or plots (a batch
-    stores summaries). Problems of the unit or the options are raised for all."""
+    stores summaries). The summaries too are made once for the unit and as arrays for the cards
+    (:class:`CardSummaries`). Problems of the unit or the options are raised for all."""
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     method = method_for(unit, method)
     if method not in downhole_methods():
@@ -147,12 +149,13 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     works = card_work(np.array([surfaces[k][1].position for k in good]), np.array([surfaces[k][1].load for k in good]))
     pump_works = card_work(position, load)
     loads = taper_loads(string, np.array([pumps[k][1].joint_load for k in good]))
+    rows = CardSummaries(unit, string, [surfaces[k] for k in good], [pumps[k] for k in good], load, figures, conditions,
+                         (works, pump_works), loads, service_factor, production, path)
     marks = dead_position_marks(linkage)
     for i, k in enumerate(good):
         with collected_warnings() as noted:
-            found[k] = _downhole_result(unit, cards[k], surfaces[k], pumps[k], string, path, method, figures.card(i),
-                                        conditions.card(i), (float(works[i]), float(pump_works[i]), loads.card(i)),
-                                        service_factor, deviation, production, marks if tables else None)
+            found[k] = _downhole_result(unit, cards[k], surfaces[k][1], pumps[k], string, method, rows, i, deviation,
+                                        marks if tables else None)
         said[k] += noted
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
@@ -209,70 +212,40 @@ def _deviated_pump(unit: UnitConfig, string, path, card, surface, damping: float
     return nu, deviated.card, deviated
 
 
-def _downhole_result(unit: UnitConfig, card, reading_surface, found, string, path, method: str,
-                     figures: PumpCardSummary, condition, works: tuple, service_factor: float, deviation: Deviation,
-                     production: Production, marks: tuple | None) -> Result:
-    """The result of one card from its pump card (``found``: nu, the pump card, the deviated
-    march or None), the well's deviated path (None in a vertical well), its figures, its
-    condition, and its works (surface and pump card [J]) and rod loads; with the dead
-    positions' ``marks`` its columns and plots, without them (None) the summary alone."""
+def _downhole_result(unit: UnitConfig, card, surface, found, string, method: str, rows: CardSummaries, index: int,
+                     deviation: Deviation, marks: tuple | None) -> Result:
+    """The result of card ``index`` of ``rows`` from its time card ``surface`` and its pump card
+    (``found``: nu, the pump card, the deviated march or None); with the dead positions' ``marks``
+    its columns and plots, without them (None) the summary alone."""
     well = unit.require_well()
-    reading, surface = reading_surface
     nu, pump, deviated = found
-    surface_work, pump_work, loads = works
-    summary = [
-        Scalar("strokes_per_minute", 2.0 * np.pi / surface.period),
-        Scalar("damping_factor", nu),
-        Scalar("max_rod_load", float(reading.card.load.max())),
-        Scalar("min_rod_load", float(reading.card.load.min())),
-        Scalar("buoyant_rod_weight", pump.buoyant_weight if path is None else string.buoyant_weight(well.fluid_density)),
-        Scalar("gross_pump_stroke", float(figures.gross_stroke)),
-        Scalar("net_pump_stroke", float(figures.net_stroke)),
-        Scalar("pump_fillage", float(figures.fillage)),
-        Scalar("fluid_load", float(figures.fluid_load)),
-        Scalar("rp11l_counterbalance_effect", rp11l_counterbalance_effect(pump.buoyant_weight, float(figures.fluid_load))),
-        Scalar("max_pump_load", float(figures.peak_load)),
-        Scalar("min_pump_load", float(figures.minimum_load)),
-        Scalar("surface_card_work", surface_work),
-        Scalar("pump_card_work", pump_work),
-        Scalar("pump_displacement", float(displacement_rate(figures.net_stroke, surface.period,
-                                                                         well.plunger_diameter))),
-    ]
-    found_pressures = unit.pump_pressures()
-    if found_pressures is not None:
-        summary.append(Scalar("pump_intake_pressure", float(intake_pressure(figures.fluid_load, well.plunger_diameter,
-                                                                            found_pressures[0]))))
-    summary += condition_summary(unit, surface, condition, string)
-    summary += well_summary(unit, figures, pump, surface_work / surface.period, surface.period, production,
-                            intake_known=found_pressures is not None)
-    summary += taper_summary(string, loads, service_factor)
+    summary = rows.card(index, surface)
     title = f"{unit.name}: pump card ({method}, damping {nu:.3g}), card {card.name}"
-    columns: tuple[Column, ...] = ()
-    panels: tuple[Panel, ...] = ()
-    if marks is not None:
-        columns = (
-            Column("time", surface.time),
-            Column("crank_angle", surface.crank_angle),
-            Column("position", surface.position),
-            Column("rod_load", surface.load),
-            Column("pump_position", pump.pump_position),
-            Column("pump_load", pump.pump_load),
-        )
-    curves = (Curve("surface card", "position", "rod_load"), Curve("pump card", "pump_position", "pump_load"))
+    more_columns: tuple[Column, ...] = ()
+    more_curves: tuple[Curve, ...] = ()
     if surveyed(unit):
         extra, more_columns, more_curves = deviated_rows(unit, string, surface, nu, deviated)
         summary += extra
-        columns += more_columns if marks is not None else ()
-        curves += more_curves
         title += f", survey {Path(well.survey).name}" + (f", friction {deviated.friction_coefficient:g}"
                                                          if deviated is not None else "")
     if marks is None:
         return Result(title, tuple(summary), ())
-    f_o = float(condition.features.reference_load[0])   # the reference load lines of [Rowlan2008] on both cards
+    columns = (
+        Column("time", surface.time),
+        Column("crank_angle", surface.crank_angle),
+        Column("position", surface.position),
+        Column("rod_load", surface.load),
+        Column("pump_position", pump.pump_position),
+        Column("pump_load", pump.pump_load),
+        *more_columns,
+    )
+    curves = (Curve("surface card", "position", "rod_load"), Curve("pump card", "pump_position", "pump_load"),
+              *more_curves)
+    f_o = rows.conditions.reference[index]   # the reference load lines of [Rowlan2008] on both cards
     lines = (("W_rf", pump.buoyant_weight), ("W_rf + F_o", pump.buoyant_weight + f_o), ("F_o (pump card)", f_o),
              ("", 0.0))
-    panels = (Panel("load", (), curves=curves, x_label="position", levels=lines),
-              goodman_panel(string, loads, service_factor))
+    panels: tuple[Panel, ...] = (Panel("load", (), curves=curves, x_label="position", levels=lines),
+                                 goodman_panel(string, rows.loads.card(index), rows.service_factor))
     if deviation.profile:
         profile = deviated.profile if deviated is not None else deviated_pump_card(
             string, well.path(), surface.period, surface.position, surface.load, fluid_density=well.fluid_density,
@@ -299,6 +272,59 @@ def deviated_rows(unit: UnitConfig, string, surface, nu: float, found) -> tuple[
     return rows, columns, (curve,)
 
 
+class CardSummaries:
+    """The summary rows of K cards of one unit, each card's as :func:`downhole` reports it alone:
+    what is the same for every card (the well's pressures, plunger area and pump depth, the
+    string's grades) found once, each figure of the K cards one array computation, and a card's
+    rows (:meth:`card`) made of plain floats.
+
+    ``readings`` are the cards' (reading, time card), ``pumps`` their (nu, pump card, deviated
+    march or None), ``pump_load`` the pump cards' loads (K, N), ``figures``, ``conditions``
+    and ``loads`` the K cards' pump-card figures, diagnosis and taper loads, ``works`` the
+    surface and pump cards' works (K,) [J]; ``path`` the deviated well's path, or None."""
+
+    def __init__(self, unit: UnitConfig, string, readings: list, pumps: list, pump_load: np.ndarray,
+                 figures: PumpCardSummary, conditions, works: tuple[np.ndarray, np.ndarray], loads: TaperLoads,
+                 service_factor: float, production: Production, path) -> None:
+        well = unit.require_well()
+        periods = np.array([surface.period for _, surface in readings])
+        raw = [reading.card.load for reading, _ in readings]     # each card's loads as read: its extremes
+        raw_loads, starts = np.concatenate(raw), np.cumsum([0] + [load.size for load in raw[:-1]])
+        weights = [pump.buoyant_weight for _, pump, _ in pumps]
+        fluid = figures.fluid_load.tolist()
+        found_pressures = unit.pump_pressures()
+        columns = [(2.0 * np.pi / periods).tolist(), [nu for nu, _, _ in pumps],
+                   np.maximum.reduceat(raw_loads, starts).tolist(), np.minimum.reduceat(raw_loads, starts).tolist(),
+                   weights if path is None else [string.buoyant_weight(well.fluid_density)] * len(pumps),
+                   figures.gross_stroke.tolist(), figures.net_stroke.tolist(), figures.fillage.tolist(), fluid,
+                   [rp11l_counterbalance_effect(weight, load) for weight, load in zip(weights, fluid)],
+                   figures.peak_load.tolist(), figures.minimum_load.tolist(), works[0].tolist(), works[1].tolist(),
+                   displacement_rate(figures.net_stroke, periods, well.plunger_diameter).tolist()]
+        if found_pressures is not None:
+            columns.append(intake_pressure(figures.fluid_load, well.plunger_diameter, found_pressures[0]).tolist())
+        self._names = PUMP_CARD_NAMES + (("pump_intake_pressure",) if found_pressures is not None else ())
+        self._values = list(zip(*columns))
+        self.conditions = ConditionRows(unit, conditions, string)
+        self._well = WellRows(unit, figures, pump_load, works[0] / periods, periods, production,
+                              intake_known=found_pressures is not None)
+        self._tapers = TaperRows(string, loads, service_factor)
+        self.loads, self.service_factor = loads, service_factor     # a card's Goodman diagram
+
+    def card(self, index: int, surface) -> list[Scalar]:
+        """The summary of card ``index`` (``surface`` its time card): the pump card's figures, the
+        pump's condition, the well's production and the rods' stresses, with their warnings."""
+        rows = list(map(Scalar, self._names, self._values[index]))
+        rows += self.conditions.card(index, surface)
+        rows += self._well.card(index)
+        rows += self._tapers.card(index)
+        return rows
+
+
+#: The summary names of a card's speed, damping, loads, pump-card figures and works, in the order
+#: a result gives them (the pump's intake pressure after them when the well gives its pressures).
+PUMP_CARD_NAMES = ("strokes_per_minute", "damping_factor", "max_rod_load", "min_rod_load", "buoyant_rod_weight",
+                   "gross_pump_stroke", "net_pump_stroke", "pump_fillage", "fluid_load", "rp11l_counterbalance_effect",
+                   "max_pump_load", "min_pump_load", "surface_card_work", "pump_card_work", "pump_displacement")
 #: The features of the pump card a label rests on, by their output names ([Rowlan2008], docs/diagnosis.md).
 CARD_EVIDENCE = ("travelling_valve_closing", "standing_valve_opening", "standing_valve_closing",
                  "travelling_valve_opening", "pickup_travel", "unloading_travel", "slow_upstroke_load",
@@ -323,73 +349,109 @@ def reference_fluid_load(unit: UnitConfig) -> float:
             - well.casing_head_pressure) * plunger_area(well.plunger_diameter)
 
 
-def condition_summary(unit: UnitConfig, surface, found, string) -> list[Scalar]:
-    """The pump's condition ([Rowlan2008], docs/diagnosis.md) of one card's diagnosis (``found``,
-    :func:`~pumpjack_cli.core.rods.diagnosis.diagnose` of its pump card): the label, its confidence,
-    the second-best label, and the evidence; a parted string's break depth from the wave
-    equation's free end on the surface card (:func:`~pumpjack_cli.core.rods.plausibility.free_end`),
-    else from the hanging weight."""
-    well = unit.require_well()
-    ft = found.features
-    label = str(found.label[0])
-    rows = [Scalar("pump_condition", label),
-            Scalar("pump_condition_confidence", float(found.confidence[0])),
-            Scalar("pump_condition_second", str(found.second[0])),
-            Scalar("reference_fluid_load", float(ft.reference_load[0]))]
-    for name in CARD_EVIDENCE:
-        value = float(getattr(ft, name)[0])
-        if math.isfinite(value):      # a point the card never reaches is left out, not printed as NaN
-            rows.append(Scalar(name, value))
-    rows.append(Scalar("card_area_ratio", float(ft.area_ratio[0])))
-    if label == "rod_part":
-        depth, off = free_end(surface.load, surface.position, surface.period, string, well.fluid_density)
-        if not off <= PARTED_FLATNESS:
-            depth = float(hanging_depth(string, float(np.mean(surface.load)), well.fluid_density))
-        rows.append(Scalar("rod_break_depth", depth))
-    return rows
+class ConditionRows:
+    """The pump's condition ([Rowlan2008], docs/diagnosis.md) of K cards from their diagnosis
+    (``found``, :func:`~pumpjack_cli.core.rods.diagnosis.diagnose` of their pump cards), taken
+    out of its arrays once: a card's rows (:meth:`card`) are the label, its confidence, the
+    second-best label and the evidence."""
 
+    def __init__(self, unit: UnitConfig, found, string) -> None:
+        self._well, self._string = unit.require_well(), string
+        ft = found.features
+        self._label, self._second = found.label.tolist(), found.second.tolist()
+        self._confidence = found.confidence.tolist()
+        self.reference = ft.reference_load.tolist()     # F_o of each card [N], also its pump card's reference line
+        self._evidence = np.stack([getattr(ft, name) for name in CARD_EVIDENCE], axis=-1).tolist()
+        self._area_ratio = ft.area_ratio.tolist()
 
-def well_summary(unit: UnitConfig, figures, pump, polished_rod_power: float, period: float, production: Production,
-                 intake_known: bool) -> list[Scalar]:
-    """Intake pressure, fluid level, production and energy per day from the pump card ([Rowlan2009PIP],
-    [Wang2019]); a rate or an energy only with a runtime."""
-    well = unit.require_well()
-    area = plunger_area(well.plunger_diameter)
-    depth = well.pump_vertical_depth()
-    outlet = discharge_pressure(depth, well.fluid_density, well.tubing_head_pressure)
-    intake = float(intake_pressure_from_load(float(figures.fluid_load), area, outlet))
-    rows = [Scalar("discharge_pressure", outlet)]
-    if not intake_known:
-        rows.append(Scalar("pump_intake_pressure", intake))
-    above = float(fluid_above_pump(intake, well.casing_head_pressure, well.fluid_density))
-    if not 0.0 <= above <= depth:
-        warn(f"unit {unit.name}: the card's fluid load {float(figures.fluid_load) / 1e3:.4g} kN puts the fluid level "
-             f"{'below the pump' if above < 0 else 'above the surface'} (intake pressure {intake / 1e6:.4g} MPa, "
-             f"casing-head pressure {well.casing_head_pressure / 1e6:.4g} MPa): the level is clipped")
-        above = min(max(above, 0.0), depth)
-    rows += [Scalar("pump_submergence", above), Scalar("fluid_level_depth", depth - above)]
-    if production.runtime is None:
+    def card(self, index: int, surface) -> list[Scalar]:
+        """The condition of card ``index``; a parted string's break depth from the wave equation's
+        free end on its surface card ``surface`` (:func:`~pumpjack_cli.core.rods.plausibility.free_end`),
+        else from the hanging weight. A point the card never reaches is left out, not given as NaN."""
+        label = str(self._label[index])
+        rows = [Scalar("pump_condition", label),
+                Scalar("pump_condition_confidence", self._confidence[index]),
+                Scalar("pump_condition_second", str(self._second[index])),
+                Scalar("reference_fluid_load", self.reference[index])]
+        rows += [Scalar(name, value) for name, value in zip(CARD_EVIDENCE, self._evidence[index])
+                 if math.isfinite(value)]
+        rows.append(Scalar("card_area_ratio", self._area_ratio[index]))
+        if label == "rod_part":
+            fluid_density = self._well.fluid_density
+            depth, off = free_end(surface.load, surface.position, surface.period, self._string, fluid_density)
+            if not off <= PARTED_FLATNESS:
+                depth = float(hanging_depth(self._string, float(np.mean(surface.load)), fluid_density))
+            rows.append(Scalar("rod_break_depth", depth))
         return rows
-    rows.append(Scalar("runtime", production.runtime))
-    slip: float | None = None
-    if production.pump_efficiency is not None:
-        rows.append(Scalar("pump_efficiency", production.pump_efficiency))
-    elif None in (well.plunger_clearance, well.plunger_length, well.fluid_kinematic_viscosity):
-        warn(f"unit {unit.name}: no slippage deducted from the inferred production: give --pump-efficiency, or the "
-             f"well's plunger_clearance, plunger_length and fluid_kinematic_viscosity")
-    else:
-        slip = float(slippage_rate(well.plunger_diameter, well.plunger_clearance, well.plunger_length,
-                                   well.fluid_kinematic_viscosity * well.fluid_density,
-                                   max(float(figures.fluid_load), 0.0) / area))
-    middle = 0.5 * (float(figures.upstroke_load) + float(figures.downstroke_load))
-    loaded = float(np.mean(np.asarray(pump.pump_load) > middle))
-    if slip is not None:
-        rows.append(Scalar("pump_slippage", slip * loaded * production.runtime))
-    rows.append(Scalar("inferred_production", float(inferred_production(
-        float(figures.net_stroke), area, period, production.runtime,
-        pump_efficiency=production.pump_efficiency or 1.0, slippage=slip or 0.0, loaded_share=loaded))))
-    energy = float(energy_per_day(max(polished_rod_power, 0.0), production.system_efficiency, production.runtime))
-    rows += [Scalar("system_efficiency", production.system_efficiency), Scalar("energy_per_day", energy)]
-    if production.electricity_price is not None:
-        rows.append(Scalar("electricity_cost", energy * production.electricity_price))
-    return rows
+
+
+class WellRows:
+    """Intake pressure, fluid level, production and energy per day of K cards from their pump
+    cards ([Rowlan2009PIP], [Wang2019]), a rate or an energy only with a runtime: the well's
+    plunger area, pump depth and discharge pressure found once, each figure of the K cards one
+    array computation (``figures`` of :func:`summarise_pump_card`, the pump cards' loads
+    ``pump_load`` (K, N), the polished-rod powers ``power`` [W] and the periods [s], (K,)); a
+    card's rows (:meth:`card`) with its warnings."""
+
+    def __init__(self, unit: UnitConfig, figures: PumpCardSummary, pump_load: np.ndarray, power: np.ndarray,
+                 period: np.ndarray, production: Production, intake_known: bool) -> None:
+        well = self._well = unit.require_well()
+        self._unit, self._production, self._intake_known = unit.name, production, intake_known
+        area = plunger_area(well.plunger_diameter)
+        self._depth = well.pump_vertical_depth()
+        self._outlet = discharge_pressure(self._depth, well.fluid_density, well.tubing_head_pressure)
+        intake = intake_pressure_from_load(figures.fluid_load, area, self._outlet)
+        self._fluid, self._intake = figures.fluid_load.tolist(), intake.tolist()
+        self._above = fluid_above_pump(intake, well.casing_head_pressure, well.fluid_density).tolist()
+        if production.runtime is None:
+            return
+        slip = None
+        if production.pump_efficiency is None and None not in (well.plunger_clearance, well.plunger_length,
+                                                               well.fluid_kinematic_viscosity):
+            slip = slippage_rate(well.plunger_diameter, well.plunger_clearance, well.plunger_length,
+                                 well.fluid_kinematic_viscosity * well.fluid_density,
+                                 _not_below_zero(figures.fluid_load) / area)
+        middle = 0.5 * (figures.upstroke_load + figures.downstroke_load)
+        loaded = np.mean(pump_load > middle[:, None], axis=-1)
+        self._slip = None if slip is None else (slip * loaded * production.runtime).tolist()
+        self._production_rate = inferred_production(
+            figures.net_stroke, area, period, production.runtime, pump_efficiency=production.pump_efficiency or 1.0,
+            slippage=0.0 if slip is None else slip, loaded_share=loaded).tolist()
+        self._energy = energy_per_day(_not_below_zero(power), production.system_efficiency, production.runtime).tolist()
+
+    def card(self, index: int) -> list[Scalar]:
+        """The rows of card ``index``; a fluid level below the pump or above the surface is clipped, with a warning."""
+        well, production, depth = self._well, self._production, self._depth
+        rows = [Scalar("discharge_pressure", self._outlet)]
+        intake = self._intake[index]
+        if not self._intake_known:
+            rows.append(Scalar("pump_intake_pressure", intake))
+        above = self._above[index]
+        if not 0.0 <= above <= depth:
+            warn(f"unit {self._unit}: the card's fluid load {self._fluid[index] / 1e3:.4g} kN puts the fluid level "
+                 f"{'below the pump' if above < 0 else 'above the surface'} (intake pressure {intake / 1e6:.4g} MPa, "
+                 f"casing-head pressure {well.casing_head_pressure / 1e6:.4g} MPa): the level is clipped")
+            above = min(max(above, 0.0), depth)
+        rows += [Scalar("pump_submergence", above), Scalar("fluid_level_depth", depth - above)]
+        if production.runtime is None:
+            return rows
+        rows.append(Scalar("runtime", production.runtime))
+        if production.pump_efficiency is not None:
+            rows.append(Scalar("pump_efficiency", production.pump_efficiency))
+        elif self._slip is None:
+            warn(f"unit {self._unit}: no slippage deducted from the inferred production: give --pump-efficiency, or "
+                 f"the well's plunger_clearance, plunger_length and fluid_kinematic_viscosity")
+        if self._slip is not None:
+            rows.append(Scalar("pump_slippage", self._slip[index]))
+        rows.append(Scalar("inferred_production", self._production_rate[index]))
+        energy = self._energy[index]
+        rows += [Scalar("system_efficiency", production.system_efficiency), Scalar("energy_per_day", energy)]
+        if production.electricity_price is not None:
+            rows.append(Scalar("electricity_cost", energy * production.electricity_price))
+        return rows
+
+
+def _not_below_zero(values: np.ndarray) -> np.ndarray:
+    """max(x, 0.0) of each value as Python's ``max`` gives it: a negative zero kept (``numpy.maximum``
+    makes it +0.0), so that every card's figure is the one it has alone."""
+    return np.where(values < 0.0, 0.0, values)

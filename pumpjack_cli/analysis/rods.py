@@ -5,6 +5,7 @@ The rod string itself is built by the unit's config (:meth:`~pumpjack_cli.config
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -15,20 +16,41 @@ from ..results import Curve, Panel, Scalar
 
 
 def taper_summary(string, loads, service_factor: float) -> list[Scalar]:
-    """Per taper (top first): extreme stresses at its ends and its Goodman loading ([API11BR])."""
-    found = []
-    graded = not np.isnan(string.tensile_strength).any()
-    if not graded:
-        warn("a rod section has no grade or tensile_strength: the Goodman loading is left out")
-    goodman = goodman_loading(string, loads, service_factor) if graded else np.full(len(string.length), np.nan)
-    for i in range(1, len(string.length) + 1):
-        for end in ("top", "bottom"):
-            for label in ("max", "min"):
-                found.append(Scalar(f"taper_{i}_{end}_{label}_stress",
-                                    float(getattr(loads, f"{end}_{label}_stress")[i - 1])))
-        if math.isfinite(float(goodman[i - 1])):
-            found.append(Scalar(f"taper_{i}_goodman_loading", float(goodman[i - 1])))
-    return found
+    """Per taper (top first): extreme stresses at its ends and its Goodman loading ([API11BR]) of
+    one card's loads (:class:`TaperRows` of one card)."""
+    return TaperRows(string, loads, service_factor).card(0)
+
+
+class TaperRows:
+    """Per taper (top first) of K cards' loads (shape (K, S), or (S,) for one card): the extreme
+    stresses at its ends and its Goodman loading ([API11BR]), the loadings of all the cards one
+    array computation; a card's rows (:meth:`card`) made of plain floats, one list a card."""
+
+    def __init__(self, string, loads, service_factor: float) -> None:
+        tapers = len(string.length)
+        self._graded = not np.isnan(string.tensile_strength).any()
+        columns = [loads.top_max_stress, loads.top_min_stress, loads.bottom_max_stress, loads.bottom_min_stress]
+        if self._graded:
+            columns.append(goodman_loading(string, loads, service_factor))
+        self._values = np.stack(columns, axis=-1).reshape(-1, tapers * len(columns)).tolist()
+        self._names = _taper_names(tapers, self._graded)
+
+    def card(self, index: int) -> list[Scalar]:
+        """The rows of card ``index``: each taper's stresses at its top and bottom (max, min) and its
+        Goodman loading where it is finite; without a grade for every taper, no loading and a warning."""
+        if not self._graded:
+            warn("a rod section has no grade or tensile_strength: the Goodman loading is left out")
+        return [Scalar(name, value) for (name, loading), value in zip(self._names, self._values[index])
+                if not loading or math.isfinite(value)]
+
+
+@functools.cache
+def _taper_names(tapers: int, graded: bool) -> tuple[tuple[str, bool], ...]:
+    """The summary names of each taper's stresses (top max, top min, bottom max, bottom min) and, if
+    ``graded``, of its Goodman loading, each with whether it is the loading."""
+    ends = [f"{end}_{label}_stress" for end in ("top", "bottom") for label in ("max", "min")]
+    return tuple((f"taper_{i}_{name}", name == "goodman_loading") for i in range(1, tapers + 1)
+                 for name in ends + ["goodman_loading"] * graded)
 
 
 def goodman_panel(string, loads, service_factor: float) -> Panel:

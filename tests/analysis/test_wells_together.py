@@ -15,7 +15,7 @@ import math
 import pytest
 
 from pumpjack_cli.analysis.card_runs import CardSource
-from pumpjack_cli.analysis.downhole import downholes
+from pumpjack_cli.analysis.downhole import Production, downholes
 from pumpjack_cli.analysis.torque import torques
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.errors import PumpjackError
@@ -69,6 +69,45 @@ def test_downhole_of_many_cards_equals_each_card_alone(tmp_path, unit_name):
     for k, card in enumerate(cards):
         _same(together[k], downholes(unit, [card], None, "auto", None, None)[0])
     assert all(not isinstance(r, PumpjackError) for r, _ in together)
+
+
+def _without(unit, change):
+    """The unit with its data changed by ``change`` (a function of its unit-file dictionary)."""
+    data = unit.model_dump(by_alias=True)
+    change(data)
+    return type(unit).model_validate(data)
+
+
+def _no_pressures(data):
+    data["well"]["pump_submergence"] = data["well"]["pump_intake_pressure"] = None
+
+
+def _no_grade(data):
+    data["well"]["rod_string"][0]["grade"] = None
+
+
+@pytest.mark.parametrize("production", [
+    Production(runtime=0.75),   # the unit's plunger fit: the slippage
+    Production(runtime=0.5, pump_efficiency=0.85, system_efficiency=0.8, electricity_price=3e-8),
+])
+@pytest.mark.parametrize("change", [None, _no_pressures, _no_grade])
+def test_the_production_and_warnings_of_many_cards_equal_each_card_alone(tmp_path, production, change):
+    """The well's figures (intake pressure, fluid level, slippage, production, energy) and the rods'
+    Goodman loadings, found once for the unit and as arrays for the cards, and each card's
+    warnings (a fluid level clipped, no pressures for the damping, no grade for the Goodman
+    loading), with tables and without."""
+    unit = load_unit("sk8-3.5-4000")
+    unit = unit if change is None else _without(unit, change)
+    cards = _cards(tmp_path, "sk8-3.5-4000", 6)
+    for tables in (False, True):
+        together = downholes(unit, cards, None, "auto", None, None, service_factor=0.9, production=production,
+                             tables=tables)
+        for k, card in enumerate(cards):
+            _same(together[k], downholes(unit, [card], None, "auto", None, None, service_factor=0.9,
+                                         production=production, tables=tables)[0])
+    said = " ".join(" ".join(notes) for _, notes in together)
+    assert ("Goodman loading is left out" in said) == (change is _no_grade)
+    assert ("damping factor 0.05 assumed" in said) == (change is _no_pressures)
 
 
 def test_a_card_that_cannot_be_read_does_not_change_the_others(tmp_path):

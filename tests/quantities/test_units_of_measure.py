@@ -13,10 +13,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from pumpjack_cli.core.constants import STANDARD_GRAVITY
-from pumpjack_cli.quantities import output_unit, parse_quantity
+from pumpjack_cli.quantities import OUTPUT_QUANTITIES, output_unit, parse_quantity, significant
 
 from helpers import FOOT, HORSEPOWER, INCH, KILOGRAM_FORCE, POUND_FORCE, POUND_MASS, RPM
 
@@ -209,3 +210,39 @@ def test_output_units_si_system_is_identity(quantity, suffix):
 ])
 def test_other_spellings_are_the_same_unit(text, dimension, same_as):
     assert parse_quantity(text, dimension) == parse_quantity(same_as, dimension)
+
+
+def test_a_float_keeps_15_significant_digits_as_formatting_rounds_it():
+    """significant of a float is float(f"{x:.15g}"), and the array path gives the same, over the
+    whole range of doubles (random bit patterns), with zeros and the non-finite values kept."""
+    values = np.random.default_rng(11).integers(0, 2**64, size=20000, dtype=np.uint64).view(np.float64)
+    values = np.concatenate([values[np.isfinite(values)], [0.0, -0.0, 5e-324, 1.7976931348623157e308, 7e5 - 1e-10]])
+    found = [significant(float(x)) for x in values]
+    assert found == [float(f"{x:.15g}") for x in values.tolist()]
+    assert found == significant(values).tolist()
+    assert math.copysign(1.0, significant(-0.0)) == -1.0 and math.isnan(significant(math.nan))
+
+
+@pytest.mark.parametrize("system", ["si", "field"])
+def test_a_summary_is_converted_as_each_value_alone(system):
+    """converted_summary (results.py) gives each value what OutputUnit.convert gives it, a value shown in
+    the unit it is computed in as the value + 0.0: every quantity, a negative zero, the ends of the
+    range, a numpy float and an int; text as it is."""
+    from pumpjack_cli.names import catalogue
+    from pumpjack_cli.results import Result, Scalar, converted_summary
+
+    names = {}
+    for name, (quantity, _) in catalogue().items():
+        if "{" not in name:
+            names.setdefault(quantity, name)
+    values = (0.0, -0.0, 1.0, -2.5, 5e-324, 1e200, 123.45678901234567, np.float64(0.1 + 0.2), 3)
+    for quantity, name in names.items():
+        if quantity == "text":
+            assert converted_summary(Result("", (Scalar(name, "full"),), ()), system) == {name: "full"}
+            continue
+        unit = OUTPUT_QUANTITIES[quantity][system]
+        for value in values:
+            ((key, shown),) = converted_summary(Result("", (Scalar(name, value),), ()), system).items()
+            expected = float(unit.convert(float(value)))
+            assert type(shown) is float and key.startswith(name)
+            assert (shown, math.copysign(1.0, shown)) == (expected, math.copysign(1.0, expected)), (name, value)

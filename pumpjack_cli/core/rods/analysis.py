@@ -202,8 +202,9 @@ def plunger_area(plunger_diameter: float) -> float:
     return float(np.pi * plunger_diameter**2 / 4.0)
 
 
-def displacement_rate(stroke, period: float, plunger_diameter: float) -> np.ndarray:
-    """Pump displacement at the card's speed, Q = A_p S / T [m^3/s].
+def displacement_rate(stroke, period, plunger_diameter: float) -> np.ndarray:
+    """Pump displacement at the card's speed, Q = A_p S / T [m^3/s] (strokes and periods of
+    one card or of K).
 
     With the gross stroke this is the theoretical displacement, with the net stroke the
     liquid the plunger displaces (before slippage and shrinkage).
@@ -215,8 +216,10 @@ def displacement_rate(stroke, period: float, plunger_diameter: float) -> np.ndar
     >>> round(float(displacement_rate(2.5, 60 / 10.9, 0.038)) * 86400, 1)   # m^3/day
     44.5
     """
-    if not (np.isfinite(period) and period > 0):
-        raise DownholeError(f"period must be finite and positive, got {period:g} s")
+    periods = np.asarray(period, dtype=float)
+    wrong = ~(np.isfinite(periods) & (periods > 0))
+    if wrong.any():
+        raise DownholeError(f"period must be finite and positive, got {periods[wrong].flat[0]:g} s")
     return plunger_area(plunger_diameter) * _finite("stroke", stroke, "m") / period
 
 

@@ -191,9 +191,18 @@ def test_goodman_needs_a_grade():
     (lambda: displacement_rate(np.nan, 5.0, 0.038), "stroke must be finite"),
     (lambda: intake_pressure(1e4, 0.038, np.nan), "discharge pressure must be finite"),
     (lambda: displacement_rate(1.0, 0.0, 0.038), "period must be finite and positive"),
+    (lambda: displacement_rate(np.ones(3), np.array([5.0, -2.0, np.inf]), 0.038),
+     "period must be finite and positive, got -2 s"),
     (lambda: displacement_rate(1.0, 5.0, -0.038), "plunger diameter must be finite and positive"),
     (lambda: intake_pressure(1e4, np.nan, 1e7), "plunger diameter must be finite and positive"),
 ])
 def test_bad_pump_data(call, message):
     with pytest.raises(DownholeError, match=message):
         call()
+
+
+def test_displacement_rates_of_k_cards_are_each_cards():
+    """Strokes and periods of K cards: each card's Q = A_p S / T as alone, to the bit."""
+    strokes, periods = np.array([2.5, 1.0, 0.0]), np.array([5.5, 7.25, 6.0])
+    rates = displacement_rate(strokes, periods, 0.038)
+    assert rates.tolist() == [float(displacement_rate(s, t, 0.038)) for s, t in zip(strokes, periods)]
