@@ -29,11 +29,11 @@ from typing import Required, TypedDict, TypeVar
 import numpy as np
 
 from ..errors import CardError
-from .beam.card import (Card, RotationFit, card_from_angles, crank_angle_from_position, fit_input_errors, fit_rotation,
-                        fit_rotations, largest_gap, loop_work, time_samples, upstroke_points)
+from .beam.card import (Card, RotationFit, card_from_angles, cards_from_angles, crank_angle_from_position, fit_input_errors,
+                        fit_rotation, fit_rotations, largest_gap, loop_work, time_samples, upstroke_points)
 from .beam.geometry import CLOCKWISE, COUNTERCLOCKWISE
 from .mechanism import Mechanism
-from .sampling import wrapped
+from .sampling import ahead, wrapped
 
 #: Relative stroke mismatch refused, and warned about (the card is scaled to the unit's stroke).
 STROKE_ERROR = 0.05
@@ -170,12 +170,14 @@ def place_card(mechanism: Mechanism, load: np.ndarray, *, crank_angle: np.ndarra
 def place_cards(mechanism: Mechanism, cards: Sequence[CardSamples]) -> list[PlacedCard | CardError]:
     """Put K cards of one unit on its crank-angle axis, each as :func:`place_card` puts it.
 
-    Each card is checked, oriented and scaled on its own, and a card with crank angles or
-    with positions only is placed so; the time cards of as many samples are then fitted
-    together (:func:`~pumpjack_cli.core.beam.card.fit_rotations`, one array computation for
-    the group, a card whose length no other card has alone), and the fit's checks, the rare
-    fit of the other rotation direction and the coverage check are again per card.
-    :func:`place_card` is this function with one card.
+    Each card is checked, oriented and scaled as alone (the plain time cards of as many
+    samples with one array computation for their checks, a card that fails one or draws a
+    warning then on its own), and a card with crank angles or with positions only is placed
+    so; the time cards of as many samples are then fitted together
+    (:func:`~pumpjack_cli.core.beam.card.fit_rotations`, one array computation for the group,
+    a card whose length no other card has alone), and the fit's checks, the rare fit of the
+    other rotation direction and the coverage check are again per card, on the fitted angles
+    of the group sorted at once. :func:`place_card` is this function with one card.
 
     Parameters
     ----------
@@ -197,15 +199,15 @@ def place_cards(mechanism: Mechanism, cards: Sequence[CardSamples]) -> list[Plac
     ----------
     [Takacs2016], [SK8Rotation2013] (see :mod:`pumpjack_cli.core.beam.card`).
     """
-    prepared = [_caught(_prepared, mechanism, card) for card in cards]
+    prepared = _prepared_all(mechanism, cards)
     groups: dict[int, dict[int, _TimeCard]] = {}
     for k, card in enumerate(prepared):
         if isinstance(card, _TimeCard):
             groups.setdefault(card.time.size, {})[k] = card
     fitted: dict[int, PlacedCard | CardError] = {}
     for group in groups.values():
-        for (k, card), fit in zip(group.items(), _fits(mechanism, list(group.values()))):
-            fitted[k] = fit if isinstance(fit, CardError) else _caught(_finished, mechanism, card, fit)
+        time_cards = list(group.values())
+        fitted.update(zip(group, _finished_all(mechanism, time_cards, _fits(mechanism, time_cards))))
     return [fitted[k] if isinstance(card, _TimeCard) else card for k, card in enumerate(prepared)]
 
 
@@ -233,6 +235,57 @@ def _caught(place: Callable[..., _Placed], *args: object) -> _Placed | CardError
         return place(*args)
     except CardError as error:
         return error
+
+
+def _prepared_all(mechanism: Mechanism, cards: Sequence[CardSamples]) -> list[PlacedCard | _TimeCard | CardError]:
+    """Each card as :func:`_prepared` makes it (or the :class:`CardError` it raises): the plain time
+    cards (:func:`_plain`) of as many samples checked together by :func:`_plain_time_cards`, every
+    other card, and a plain one those checks single out, by :func:`_prepared` alone."""
+    prepared: list[PlacedCard | _TimeCard | CardError | None] = [None] * len(cards)
+    plain: dict[int, dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]]] = {}
+    for k, card in enumerate(cards):
+        columns = _plain(card)
+        if columns is None:
+            prepared[k] = _caught(_prepared, mechanism, card)
+        else:
+            plain.setdefault(columns[0].size, {})[k] = columns
+    for group in plain.values():
+        for k, found in zip(group, _plain_time_cards(mechanism, [cards[k] for k in group], list(group.values()))):
+            prepared[k] = _caught(_prepared, mechanism, cards[k]) if found is None else found
+    return [found for found in prepared if found is not None]
+
+
+def _plain(card: CardSamples) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The load, position and time of a time card that has them as 1-D float arrays of one length (at
+    least 3) and has no crank angles; None for any other card."""
+    load, position, time = card["load"], card.get("position"), card.get("time")
+    if card.get("crank_angle") is not None or not isinstance(position, np.ndarray) or not isinstance(time, np.ndarray):
+        return None
+    if not isinstance(load, np.ndarray) or load.ndim != 1 or load.size < 3 or not load.shape == position.shape == time.shape:
+        return None
+    return (load, position, time) if load.dtype == position.dtype == time.dtype == np.float64 else None
+
+
+def _plain_time_cards(mechanism: Mechanism, cards: list[CardSamples],
+                      columns: list[tuple[np.ndarray, np.ndarray, np.ndarray]]) -> list[_TimeCard | None]:
+    """Plain time cards of as many samples (their :func:`_plain` columns) ready for their fit, as
+    :func:`_prepared` makes them, with its checks made for all of them at once (the rod moves both
+    ways, the stroke within :data:`STROKE_WARNING` of the unit's, the loop work not reversed); None
+    for a card that fails one of them or draws a warning, which :func:`_prepared` then takes alone
+    to say so."""
+    load, position = np.stack([load for load, _, _ in columns]), np.stack([position for _, position, _ in columns])
+    steps = np.diff(position, axis=1)
+    bottom = position.min(axis=1)
+    card_stroke = position.max(axis=1) - bottom
+    stroke = mechanism.dead_positions().stroke
+    work = np.sum(0.5 * (load + ahead(load)) * (ahead(position) - position), axis=1)  # loop_work of each row
+    plain = (np.any(steps, axis=1) & ~(steps.min(axis=1) >= 0) & ~(steps.max(axis=1) <= 0)
+             & ~(np.abs(card_stroke / stroke - 1.0) > STROKE_WARNING)
+             & ~(work < -WORK_TOLERANCE * card_stroke * (load.max(axis=1) - load.min(axis=1))))
+    scaled = (position - bottom[:, None]) * np.divide(stroke, card_stroke, out=np.zeros_like(card_stroke), where=plain)[:, None]
+    return [_TimeCard(*columns[k], scaled[k], card.get("source", "the card"), card.get("position_unit", ("m", 1.0)),
+                      tuple(card.get("warnings", ())), card.get("reversed", False)) if plain[k] else None
+            for k, card in enumerate(cards)]
 
 
 def _prepared(mechanism: Mechanism, card: CardSamples) -> PlacedCard | _TimeCard:
@@ -294,15 +347,32 @@ def _fits(mechanism: Mechanism, cards: list[_TimeCard]) -> list[RotationFit | Ca
     return [CardError(error) if error else next(fits) for error in errors]
 
 
-def _finished(mechanism: Mechanism, card: _TimeCard, fit: RotationFit) -> PlacedCard:
-    """A time card placed by its fit, once the fit's checks pass (:func:`_rotation`)."""
-    notes = [*card.notes, *_rotation(mechanism, fit, card.time, card.scaled, card.position_unit, card.source)]
-    theta = fit.crank_angle % (2.0 * math.pi)
-    _check_coverage(theta, card.source, f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
-    stroke = mechanism.dead_positions().stroke
-    return PlacedCard(card_from_angles(theta, card.load), card.source, tuple(notes), card.load, theta, card.position,
-                      card.time, fit.speed, fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke,
-                      card.reversed)
+def _finished_all(mechanism: Mechanism, cards: list[_TimeCard],
+                  fits: list[RotationFit | CardError]) -> list[PlacedCard | CardError]:
+    """Time cards of as many samples placed by their fits, each once the fit's checks pass
+    (:func:`_rotation`) and its samples cover the revolution, or the error that says why not; the
+    fitted angles of all of them wrapped, sorted and made cards at once
+    (:func:`~pumpjack_cli.core.beam.card.cards_from_angles`)."""
+    good = {k: fit for k, fit in enumerate(fits) if isinstance(fit, RotationFit)}
+    done: dict[int, PlacedCard | CardError] = {}
+    if good:
+        theta = np.stack([fit.crank_angle for fit in good.values()]) % (2.0 * math.pi)
+        slowest = np.min(np.stack([fit.crank_speed for fit in good.values()]), axis=1)
+        placed, gaps = cards_from_angles(theta, np.stack([cards[k].load for k in good]))
+        stroke = mechanism.dead_positions().stroke
+    for row, (k, fit) in enumerate(good.items()):
+        card = cards[k]
+        try:
+            notes = [*card.notes, *_rotation(mechanism, fit, float(slowest[row]), card.time, card.scaled,
+                                             card.position_unit, card.source)]
+            _check_gap(float(gaps[row]), theta.shape[1], card.source,
+                       f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
+        except CardError as error:
+            done[k] = error
+            continue
+        done[k] = PlacedCard(placed[row], card.source, tuple(notes), card.load, theta[row], card.position, card.time,
+                             fit.speed, fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke, card.reversed)
+    return [fit if isinstance(fit, CardError) else done[k] for k, fit in enumerate(fits)]
 
 
 #: Lengths a position column is commonly written in [m], for naming a slip.
@@ -325,8 +395,12 @@ def position_slip(ratio: float, written: str) -> str:
 
 
 def _check_coverage(theta: np.ndarray, source: str, what: str) -> None:
-    gap = largest_gap(theta)
-    if gap > max(MAX_GAP, 4.0 * math.pi / theta.size):
+    _check_gap(largest_gap(theta), theta.size, source, what)
+
+
+def _check_gap(gap: float, samples: int, source: str, what: str) -> None:
+    """Refuse a card whose ``samples`` crank angles leave ``gap`` [rad] of the revolution without a sample."""
+    if gap > max(MAX_GAP, 4.0 * math.pi / samples):
         raise CardError(f"{source}: the {what} leave {math.degrees(gap):.0f} deg of the crank's revolution without "
                         f"a sample; a card covers a whole cycle")
 
@@ -341,10 +415,10 @@ def harmonics_for(samples: int) -> int:
     return max(0, min(HARMONICS, (samples // 4 - 2) // 2))
 
 
-def _rotation(mechanism: Mechanism, fit: RotationFit, time: np.ndarray, scaled: np.ndarray,
+def _rotation(mechanism: Mechanism, fit: RotationFit, slowest: float, time: np.ndarray, scaled: np.ndarray,
               position_unit: tuple[str, float], source: str) -> list[str]:
-    """The time fit's checks, and its warnings; the other rotation direction is fitted only when
-    the uniform fit is not near exact."""
+    """The time fit's checks (``slowest`` the least of its crank speeds [rad/s]), and its warnings;
+    the other rotation direction is fitted only when the uniform fit is not near exact."""
     stroke = mechanism.dead_positions().stroke
     relative = fit.rms / stroke
     unit, factor = position_unit
@@ -352,9 +426,9 @@ def _rotation(mechanism: Mechanism, fit: RotationFit, time: np.ndarray, scaled: 
     if relative > FIT_ERROR:
         raise CardError(f"{source}: the time stamps do not fit this unit's motion ({residual}); "
                         f"wrong columns or a card from another unit?")
-    if np.min(fit.crank_speed) <= 0.0:
+    if slowest <= 0.0:
         raise CardError(f"{source}: the crank angles fitted to the time stamps turn backwards at times "
-                        f"(crank speed {np.min(fit.crank_speed):.3g} rad/s); wrong columns or a card from another unit?")
+                        f"(crank speed {slowest:.3g} rad/s); wrong columns or a card from another unit?")
     if fit.uniform_rms > ROTATION_EVIDENCE * stroke:
         other = fit_rotation(mechanism.turned(), time, scaled)
         if other.uniform_rms < 0.5 * fit.uniform_rms:

@@ -177,3 +177,89 @@ def test_the_batched_steps_are_the_least_squares_solutions():
     wide = rng.normal(size=(2, 6, 9))
     for k, step in enumerate(fit._steps(wide)):
         assert np.array_equal(step, np.linalg.lstsq(wide[k, :, :8], -wide[k, :, 8], rcond=None)[0])
+
+
+def test_cards_fit_alike_in_blocks_of_any_size(monkeypatch):
+    """The fit evaluates and factorises the cards still iterating in blocks (fit._BLOCK): in blocks of
+    5, 12 cards come out of fit_rotations to the bit as in one block and as each alone."""
+    mechanism, cards = varied("sk8-3.5-4000", 12, seed=11)
+    time = np.stack([card["time"] for card in cards])
+    position = np.stack([card["position"] for card in cards])
+    position = (position - position.min(axis=1, keepdims=True)) * (
+        mechanism.dead_positions().stroke / np.ptp(position, axis=1, keepdims=True))
+    whole = fit.fit_rotations(mechanism, time, position, 6)
+    monkeypatch.setattr(fit, "_BLOCK", 5)
+    blocks = fit.fit_rotations(mechanism, time, position, 6)
+    alone = [fit.fit_rotations(mechanism, time[k:k + 1], position[k:k + 1], 6)[0] for k in (0, 7)]
+    for a, b in zip(whole, blocks):
+        assert np.array_equal(a.crank_angle, b.crank_angle) and np.array_equal(a.crank_speed, b.crank_speed)
+        assert (a.rms, a.uniform_rms, a.offset, a.scale) == (b.rms, b.uniform_rms, b.offset, b.scale)
+    for k, single in zip((0, 7), alone):
+        assert np.array_equal(single.crank_acceleration, whole[k].crank_acceleration) and single.rms == whole[k].rms
+
+
+def test_a_stage_starts_from_the_last_evaluation_of_the_one_before():
+    """A stage's first evaluation takes k ds/dtheta, s and r from the last of the stage before (its new
+    harmonics at zero leave the crank angles as they were) and gives the Jacobian and sums of squares
+    a fresh evaluation gives."""
+    mechanism, _ = varied("sk8-3.5-4000", 1)
+    rng = np.random.default_rng(12)
+    tc = np.tile(np.linspace(-4.5, 4.5, 180), (3, 1))
+    p = rng.uniform(0.0, mechanism.dead_positions().stroke, tc.shape)
+    for before, after in ((0, 2), (2, 6)):
+        params = np.column_stack([rng.uniform(0.0, 6.0, 3), rng.uniform(0.6, 0.8, 3), rng.normal(0.0, 0.02, (3, 2 * before)),
+                                  rng.normal(0.0, 0.01, 3), rng.uniform(0.98, 1.02, 3)])
+        last, _ = fit._evaluate(mechanism, tc, p, params)
+        wider = np.concatenate([params[:, :-2], np.zeros((3, 2 * (after - before))), params[:, -2:]], axis=1)
+        fresh, fresh_cost = fit._evaluate(mechanism, tc, p, wider)
+        reused, reused_cost = fit._evaluate(mechanism, tc, p, wider, last[[0, -2, -1]])
+        assert relative_difference(reused, fresh) <= 1e-15 and relative_difference(reused_cost, fresh_cost) <= 1e-15
+
+
+def test_time_cards_the_checks_single_out_are_prepared_alone():
+    """place_cards checks the plain time cards of a group at once and hands a card that fails a check
+    or draws a warning to the single path: a stroke 3 % long (a warning), rows reversed against
+    their time stamps, a rod that does not move, one that only rises, a stroke 10 % short, NaN
+    positions, integer columns, time stamps of another length, each among good cards, come back
+    word for word as place_card makes them."""
+    mechanism, cards = varied("sk8-3.5-4000", 12, seed=13)
+    position = cards[0]["position"]
+    cards[1] = {**cards[1], "position": cards[1]["position"] * 1.03}
+    cards[2] = {**cards[2], "position": cards[2]["position"][::-1].copy(), "load": cards[2]["load"][::-1].copy()}
+    cards[3] = {**cards[3], "position": np.full(position.size, 0.5)}
+    cards[4] = {**cards[4], "position": np.linspace(0.0, 1.0, position.size)}
+    cards[5] = {**cards[5], "position": cards[5]["position"] * 0.9}
+    cards[6] = {**cards[6], "position": np.where(np.arange(position.size) == 7, np.nan, cards[6]["position"])}
+    cards[7] = {**cards[7], "position": np.round(cards[7]["position"] * 1000).astype(int),
+                "position_unit": ("mm", 0.001), "load": np.round(cards[7]["load"]).astype(int)}
+    cards[8] = {**cards[8], "time": cards[8]["time"][:-1]}
+    together = place_cards(mechanism, cards)
+    for k, (batch, card) in enumerate(zip(together, cards)):
+        alone = single(mechanism, card)
+        assert type(batch) is type(alone), k
+        if isinstance(alone, CardError):
+            assert str(batch) == str(alone), k
+        else:
+            assert_same_placement(batch, alone)
+    assert "positions scaled to the unit's stroke" in together[1].warnings[0]
+    assert [isinstance(found, CardError) for found in together] == [False, False, True, True, True, True, True,
+                                                                     True, True, False, False, False]
+
+
+def test_cards_from_angles_is_card_from_angles_of_each_row():
+    """Rows with repeated angles, an angle of 2 pi (what a remainder can round to) or NaN go the
+    single way; every row's card and largest gap are card_from_angles' and largest_gap's."""
+    rng = np.random.default_rng(14)
+    theta = rng.uniform(0.0, 2 * np.pi, (6, 40))
+    load = rng.normal(40e3, 5e3, theta.shape)
+    theta[1, 5] = theta[1, 9]
+    theta[2, 3] = 2 * np.pi
+    theta[3, 0] = np.nan
+    load[4, 2] = -0.0
+    cards, gaps = fit.cards_from_angles(theta, load)
+    for row, (card, gap) in enumerate(zip(cards, gaps)):
+        expected = fit.card_from_angles(theta[row], load[row])
+        assert np.array_equal(card.crank_angle, expected.crank_angle, equal_nan=True), row
+        assert np.array_equal(card.load, expected.load, equal_nan=True), row
+        assert np.array_equal(np.signbit(card.load), np.signbit(expected.load)), row
+        assert np.array_equal(gap, fit.largest_gap(theta[row]), equal_nan=True), row

@@ -113,6 +113,16 @@ def test_dead_positions_are_the_ends_of_the_stroke(rotation):
     assert np.all(unit.torque_factor(up) > 0)
 
 
+@pytest.mark.parametrize("rotation", [CLOCKWISE, COUNTERCLOCKWISE])
+def test_rod_motion_is_the_motion_to_the_bit(rotation):
+    """The time fit's position and torque factor (rod_motion) are the motion's, to the bit."""
+    unit = ClassThreeLinkage(**UNIT, rotation=rotation)
+    theta = np.random.default_rng(4).uniform(-20.0, 20.0, 20_000)
+    position, torque_factor = unit.rod_motion(theta)
+    m = unit.motion(theta)
+    assert np.array_equal(position, m.rod_position) and np.array_equal(torque_factor, m.torque_factor)
+
+
 def test_the_mirror_identity_with_the_class_one_unit():
     # same letters: the class III unit has the class I stroke; turning one way, its upstroke
     # takes the crank travel of the class I upstroke turning the same way, and its dead

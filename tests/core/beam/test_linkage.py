@@ -25,8 +25,9 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
-from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage, check_assembly, dead_positions
-from pumpjack_cli.core.beam.linkage import crank_pin, motion
+from pumpjack_cli.core.beam.geometry import (CLOCKWISE, COUNTERCLOCKWISE, Linkage, assembly_angle, check_assembly,
+                                             dead_positions)
+from pumpjack_cli.core.beam.linkage import _beam_angle, crank_pin, motion, rod_motion
 from pumpjack_cli.errors import GeometryError
 
 from helpers import INCH
@@ -307,6 +308,37 @@ def test_motion_and_dead_positions_refuse_unassemblable():
         motion(bad, np.array([0.0]))
     with pytest.raises(GeometryError):
         dead_positions(bad)
+
+
+# --- the fast paths equal the reference formulas to the bit ---------------------------
+
+
+@pytest.mark.parametrize("name", GEOMETRIES)
+def test_beam_angle_is_assembly_angle_to_the_bit(name):
+    """The wrap of _beam_angle by one subtraction gives numpy.mod's result exactly, on both of its
+    branches: points X all around the centre bearing at every distance the cosine rule allows
+    (|P - C| to P + C), so that psi + pi falls below and above 2 pi."""
+    lk = Linkage(**GEOMETRIES[name])
+    rng = np.random.default_rng(5)
+    distance = rng.uniform(abs(lk.pitman - lk.rear_arm), lk.pitman + lk.rear_arm, 200_000)
+    direction = rng.uniform(-np.pi, np.pi, distance.size)
+    x, y = distance * np.cos(direction), distance * np.sin(direction)
+    expected = assembly_angle(x, y, lk.pitman, lk.rear_arm, np)
+    assert np.array_equal(_beam_angle(lk, x, y), expected, equal_nan=True)
+    shifted = np.arctan2(y, x) + np.arccos((lk.pitman**2 - lk.rear_arm**2 - distance**2) / (2 * lk.rear_arm * distance))
+    assert np.any(shifted + np.pi >= 2 * np.pi) and np.any(shifted + np.pi < 2 * np.pi)
+
+
+@pytest.mark.parametrize("rot", ROTATIONS)
+@pytest.mark.parametrize("name", GEOMETRIES)
+def test_rod_motion_is_motion_to_the_bit(name, rot):
+    """rod_motion's rearranged quotient rounds as motion's: position and torque factor equal to the
+    bit at 100 000 crank angles, within and beyond one turn."""
+    lk = Linkage(**GEOMETRIES[name], rotation=ROTATIONS[rot])
+    theta = np.concatenate([np.random.default_rng(6).uniform(-20.0, 20.0, 50_000), np.linspace(0.0, 2 * np.pi, 50_000)])
+    position, torque_factor = rod_motion(lk, theta)
+    m = motion(lk, theta)
+    assert np.array_equal(position, m.rod_position) and np.array_equal(torque_factor, m.torque_factor)
 
 
 # --- mirror symmetry ---------------------------------------------------------------
