@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..core.beam.card import card_from_angles, card_load, periodic_interp, periodic_table
+from ..core.beam.card import card_from_angles, card_load, periodic_interp, periodic_table, periodic_tables
 from ..core.cards import PlacedCard, place_cards
 from ..core.dynamics.periodic import steady_state
 from ..core.mechanism import Mechanism
@@ -78,11 +78,35 @@ class Reading(PlacedCard):
                                      np.ndarray]:
         """The fitted crank speed's and acceleration's periodic tables, and the speed and the time
         from crank angle 0 on the fine grid of :func:`_card_motion` (made once for every grid a
-        card is run on)."""
-        speed = periodic_table(self.crank_angle, self.crank_speed)
-        fine = periodic_interp(_FINE[:-1], speed)
-        fine = np.append(fine, fine[0])      # 2 pi is crank angle 0
-        return speed, periodic_table(self.crank_angle, self.crank_acceleration), fine, _elapsed(_FINE, fine)
+        card is run on; :func:`with_motion_tables` makes those of a unit's cards together)."""
+        (found,) = _motion_tables([self])
+        return found
+
+
+def with_motion_tables(readings: list[Reading]) -> None:
+    """Make the motion tables (:attr:`Reading.motion_tables`) of cards with time stamps together,
+    those of as many samples in one array computation (each card's as alone)."""
+    groups: dict[int, list[Reading]] = {}
+    for reading in readings:
+        if reading.time is not None and "motion_tables" not in vars(reading):
+            groups.setdefault(reading.crank_angle.size, []).append(reading)
+    for group in groups.values():
+        for reading, tables in zip(group, _motion_tables(group)):
+            object.__setattr__(reading, "motion_tables", tables)   # what the cached property would store
+
+
+def _motion_tables(readings: list[Reading]) -> list[tuple]:
+    """:attr:`Reading.motion_tables` of cards of as many samples, one array computation."""
+    angle = np.array([r.crank_angle for r in readings])
+    speed = periodic_tables(angle, np.array([r.crank_speed for r in readings]))
+    acceleration = periodic_tables(angle, np.array([r.crank_acceleration for r in readings]))
+    fine = np.empty((len(readings), FINE_STEPS + 1))
+    for k in range(len(readings)):
+        fine[k, :-1] = np.interp(_FINE[:-1], speed[0][k], speed[1][k])
+    fine[:, -1] = fine[:, 0]      # 2 pi is crank angle 0
+    elapsed = _elapsed(_FINE, fine)
+    return [((speed[0][k], speed[1][k]), (acceleration[0][k], acceleration[1][k]), fine[k], elapsed[k])
+            for k in range(len(readings))]
 
 
 def parse_stroke(text: str | None) -> int | str:
@@ -350,9 +374,11 @@ def uniform_speed(unit: UnitConfig, reading: Reading, spm: float | None) -> floa
 
 def _elapsed(theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
     """Time [s] from crank angle 0 at each of the increasing crank angles ``theta`` [rad] from 0
-    (the last 2 pi: the period), t = integral of dtheta / omega, by the trapezoidal rule."""
+    (the last 2 pi: the period), t = integral of dtheta / omega, by the trapezoidal rule; for
+    the speeds ``omega`` of one card (N,) or of K cards (K, N)."""
     rate = 1.0 / omega
-    return np.concatenate([[0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1]) * np.diff(theta))])
+    steps = np.cumsum(0.5 * (rate[..., 1:] + rate[..., :-1]) * np.diff(theta), axis=-1)
+    return np.concatenate([np.zeros(steps.shape[:-1] + (1,)), steps], axis=-1)
 
 
 def _card_motion(reading: Reading, thetas: list[np.ndarray]) -> list[CardRun]:

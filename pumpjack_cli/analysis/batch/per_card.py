@@ -164,9 +164,10 @@ class _PlacedOnce:
 
     @staticmethod
     def place_together(cards: list[_PlacedOnce], unit, spm) -> None:
-        """Place the cards of one unit in one array computation (:func:`..card_runs.place_all`) and
-        judge their loads so (:func:`..card_runs.judged`)."""
-        from ..card_runs import judged, place_all
+        """Place the cards of one unit in one array computation (:func:`..card_runs.place_all`),
+        judge their loads so (:func:`..card_runs.judged`) and make their motion tables so
+        (:func:`..card_runs.with_motion_tables`)."""
+        from ..card_runs import judged, place_all, with_motion_tables
 
         placed = place_all([c.raw for c in cards], unit.geometry.mechanism())
         good = [k for k, found in enumerate(placed) if not isinstance(found, CardError)]
@@ -174,6 +175,7 @@ class _PlacedOnce:
             cards[k]._reading = found if isinstance(found, CardError) else None
         for k, verdict in zip(good, judged(unit, [placed[k] for k in good], spm) if good else []):
             cards[k]._reading = verdict if isinstance(verdict, CardError) else (placed[k], verdict)
+        with_motion_tables([placed[k] for k in good])
 
     def read(self, unit, spm=None):
         from ..card_runs import noted, place

@@ -87,12 +87,20 @@ class Card:
 def periodic_table(crank_angle: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The (angles, values) table of a curve over one revolution for :func:`periodic_interp`: the
     angles taken modulo 2 pi and sorted, one sample carried over each end (what
-    ``numpy.interp(..., period=2 pi)`` builds at every call, made once)."""
+    ``numpy.interp(..., period=2 pi)`` builds at every call, made once); :func:`periodic_tables`
+    of one curve."""
+    angle, values = periodic_tables(np.asarray(crank_angle, dtype=float)[None], np.asarray(values, dtype=float)[None])
+    return angle[0], values[0]
+
+
+def periodic_tables(crank_angle: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The tables of :func:`periodic_table` of K curves of as many samples, rows of (K, n) arrays:
+    each row's as alone (angles (K, n + 2), values (K, n + 2))."""
     angle = wrapped(crank_angle)
-    order = np.argsort(angle)
-    angle, values = angle[order], np.asarray(values, dtype=float)[order]
-    return (np.concatenate((angle[-1:] - 2.0 * np.pi, angle, angle[:1] + 2.0 * np.pi)),
-            np.concatenate((values[-1:], values, values[:1])))
+    order = np.argsort(angle, axis=-1)
+    angle, values = np.take_along_axis(angle, order, axis=-1), np.take_along_axis(values, order, axis=-1)
+    return (np.concatenate((angle[:, -1:] - 2.0 * np.pi, angle, angle[:, :1] + 2.0 * np.pi), axis=-1),
+            np.concatenate((values[:, -1:], values, values[:, :1]), axis=-1))
 
 
 def periodic_interp(crank_angle: np.ndarray, table: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
