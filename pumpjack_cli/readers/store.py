@@ -21,6 +21,7 @@ beside its name and linked into place, so that it never exists half made.
 from __future__ import annotations
 
 import errno
+import functools
 import os
 import re
 import sqlite3
@@ -49,6 +50,13 @@ _CAUSES = {"SQLITE_FULL": "no space left on device", "SQLITE_BUSY": "locked by a
            "SQLITE_NOTADB": "not an SQLite database"}
 #: Result codes of a file or directory that cannot be opened or written.
 _ACCESS = ("SQLITE_READONLY", "SQLITE_CANTOPEN", "SQLITE_PERM", "SQLITE_AUTH")
+
+
+@functools.lru_cache(maxsize=64)
+def _insert(names: tuple[str, ...]) -> str:
+    """The INSERT of a row of the fixed fields and the summary ``names`` (made once per set of names)."""
+    columns = (*FIXED, *names)
+    return f"INSERT OR IGNORE INTO results ({', '.join(columns)}) VALUES ({', '.join('?' * len(columns))})"
 
 
 class Store:
@@ -250,7 +258,7 @@ class Store:
     def _ensure(self, summary: dict) -> None:
         """Add a column for each new summary name: TEXT for a text value, REAL for a number
         (called under the write lock: a column another run added meanwhile is seen first)."""
-        if all(name in self.types for name in summary):
+        if summary.keys() <= self.types.keys():
             return
         self.types = self._types()
         for name, value in summary.items():
@@ -279,9 +287,7 @@ class Store:
                 for row in rows:
                     summary = row["summary"]
                     self._ensure(summary)
-                    names = list(FIXED) + list(summary)
-                    cursor = self.db.execute(f"INSERT OR IGNORE INTO results ({', '.join(names)}) VALUES "
-                                             f"({', '.join('?' * len(names))})",
+                    cursor = self.db.execute(_insert(tuple(summary)),
                                              [row[name] for name in FIXED] + list(summary.values()))
                     statuses += [row["status"]] * cursor.rowcount
                 stored.append(statuses)

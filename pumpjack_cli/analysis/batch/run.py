@@ -106,15 +106,19 @@ def _check(options: Options) -> None:
 
 def _check_jobs(jobs: list[Job], manifest: Path) -> None:
     """Refuse a row whose counterbalance moment a unit's [counterbalance] would refuse,
-    naming its line and field, before anything runs."""
+    naming its line and field, before anything runs (the schema is imported only for a
+    manifest that gives moments)."""
+    moments = [job for job in jobs if job.counterbalance_moment is not None]
+    if not moments:
+        return
     from pydantic import ValidationError
 
     from ...config.beam_unit import CounterbalanceConfig
     from ...config.files import error_message
 
     checked = set()   # each moment once: a glob row gives thousands of cards the same one
-    for job in jobs:
-        if job.counterbalance_moment is not None and job.counterbalance_moment not in checked:
+    for job in moments:
+        if job.counterbalance_moment not in checked:
             checked.add(job.counterbalance_moment)
             try:
                 CounterbalanceConfig(moment=job.counterbalance_moment)
