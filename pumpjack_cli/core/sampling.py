@@ -128,18 +128,21 @@ def extremes_of(theta: np.ndarray, values: np.ndarray) -> tuple[tuple[np.ndarray
     """:func:`extremes` of K curves at once, ``values`` shape (K, N) on the grid ``theta`` (N,):
     ((maxima, their angles), (minima, their angles)), arrays (K,)."""
     values = np.asarray(values, dtype=float)
+    return _refined(theta, values, 1.0), _refined(theta, values, -1.0)
+
+
+def _refined(theta: np.ndarray, values: np.ndarray, sign: float) -> tuple[np.ndarray, np.ndarray]:
+    """The maxima (``sign`` 1) or minima (-1) of K curves (K, N) refined by the parabola through
+    the extreme sample and its neighbours (:func:`extremes`), and their crank angles."""
     rows = np.arange(values.shape[0])
     size = values.shape[-1]
     h = theta[1] - theta[0]
-    found = []
-    for sign in (1.0, -1.0):
-        i = np.argmax(sign * values, axis=-1)
-        y0, y1, y2 = (values[rows, (i + k) % size] for k in (-1, 0, 1))
-        curvature = y0 - 2.0 * y1 + y2
-        with np.errstate(divide="ignore", invalid="ignore"):
-            shift = np.where(curvature != 0.0, 0.5 * (y0 - y2) / np.where(curvature != 0.0, curvature, 1.0), 0.0)
-        found.append((y1 - 0.25 * (y0 - y2) * shift, (theta[i] + shift * h) % (2.0 * np.pi)))
-    return found[0], found[1]
+    i = np.argmax(sign * values, axis=-1)
+    y0, y1, y2 = (values[rows, (i + k) % size] for k in (-1, 0, 1))
+    curvature = y0 - 2.0 * y1 + y2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        shift = np.where(curvature != 0.0, 0.5 * (y0 - y2) / np.where(curvature != 0.0, curvature, 1.0), 0.0)
+    return y1 - 0.25 * (y0 - y2) * shift, (theta[i] + shift * h) % (2.0 * np.pi)
 
 
 def largest_magnitude(theta: np.ndarray, values: np.ndarray) -> Extreme:
@@ -256,4 +259,4 @@ def peak(theta: np.ndarray, values: np.ndarray) -> Extreme:
 def peaks_of(theta: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """:func:`peak` of K series at once, ``values`` (K, N): the largest magnitudes and their
     crank angles, arrays (K,)."""
-    return extremes_of(theta, np.abs(values))[0]
+    return _refined(theta, np.abs(np.asarray(values, dtype=float)), 1.0)

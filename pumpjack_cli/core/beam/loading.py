@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import TorqueError
-from ..sampling import crank_grid
+from ..sampling import ahead, crank_grid
 from .card import Card, loop_work
 from ..mechanism import Mechanism
 
@@ -64,14 +64,16 @@ def card_works(linkage: Mechanism, cards: list[Card]) -> np.ndarray:
     """:func:`card_work` of K cards of one unit, any lengths, their positions from one
     evaluation of the kinematics [J]."""
     angles = np.concatenate([np.asarray(card.crank_angle, dtype=float) for card in cards])
-    positions = np.split(linkage.rod_position(angles), np.cumsum([len(card.crank_angle) for card in cards])[:-1])
-    found = np.empty(len(cards))
-    for k, (s, card) in enumerate(zip(positions, cards)):
-        w = np.asarray(card.load, dtype=float)
-        if not (np.all(np.isfinite(s)) and np.all(np.isfinite(w))):
-            raise TorqueError("card work: the card is not finite at every point")
-        found[k] = loop_work(s, w)
-    return found
+    loads = np.concatenate([np.asarray(card.load, dtype=float) for card in cards])
+    positions = linkage.rod_position(angles)
+    if not (np.all(np.isfinite(positions)) and np.all(np.isfinite(loads))):
+        raise TorqueError("card work: the card is not finite at every point")
+    lengths = {len(card.crank_angle) for card in cards}
+    if len(lengths) == 1:      # cards of as many points: each row's work as loop_work sums it
+        s, w = positions.reshape(len(cards), -1), loads.reshape(len(cards), -1)
+        return np.sum(0.5 * (w + ahead(w)) * (ahead(s) - s), axis=-1)
+    bounds = np.cumsum([len(card.crank_angle) for card in cards])[:-1]
+    return np.array([loop_work(s, w) for s, w in zip(np.split(positions, bounds), np.split(loads, bounds))])
 
 
 def cyclic_load_factor(net_torque: np.ndarray, weights: np.ndarray | None = None):
