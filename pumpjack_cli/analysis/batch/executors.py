@@ -108,10 +108,22 @@ def on_pool(workers: int, chunks, settings: dict, store_chunk) -> None:
         for process in set(multiprocessing.active_children()) - others:
             process.kill()
         pool.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
+        _unblock(pool)
         if isinstance(exc, BrokenProcessPool):
             raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
         raise
     pool.shutdown(wait=True)
+
+
+def _unblock(pool) -> None:
+    """Let the pool's manager thread end after its workers were killed: a worker killed while it
+    wrote a task's results leaves half a message in the results pipe, which the thread would read
+    for ever (and the interpreter's exit joins that thread). Closing this process's end of the
+    pipe's writing side, the workers' ends being closed by their deaths, ends that read
+    (concurrent.futures keeps the pipe as ``_result_queue``)."""
+    queue = getattr(pool, "_result_queue", None)
+    if queue is not None:
+        queue._writer.close()
 
 
 @contextmanager
