@@ -121,6 +121,7 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
     import importlib
 
     from pumpjack_cli.analysis.batch import per_card
+    from pumpjack_cli.analysis.batch.executors import roomy_allocator
     from pumpjack_cli.analysis.batch.run import chunk_size
     from pumpjack_cli.readers.manifest import read_manifest
     from pumpjack_cli.readers.store import Store
@@ -128,6 +129,7 @@ def split(manifest: Path, cards: int, store: Path) -> dict[str, float]:
     jobs = read_manifest(manifest)[:cards]
     settings = asdict(per_card.Options())
     size = chunk_size(len(jobs), 1)
+    roomy_allocator()       # as in a worker
     spent = dict.fromkeys([phase for _, _, phase in PHASES], 0.0)
     inner = [0.0]      # the time of the phases running inside the one being timed
 

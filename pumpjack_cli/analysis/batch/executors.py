@@ -35,6 +35,12 @@ DASK_FETCH = 2.0
 IN_FLIGHT = 2
 #: What the end of a stopped run tells the user to do.
 RESUME = "the cards stored so far are kept; run the same command again to go on"
+#: glibc's allocator thresholds set in a process that analyses cards [bytes]: an array below
+#: ``M_MMAP_THRESHOLD`` comes from the heap, and freed memory at the heap's top is handed back
+#: to the system past ``M_TRIM_THRESHOLD``. These are the ceilings glibc's own sliding
+#: thresholds reach on a 64-bit system (``DEFAULT_MMAP_THRESHOLD_MAX``, twice it), set at once.
+MMAP_THRESHOLD, TRIM_THRESHOLD = 32 << 20, 64 << 20
+_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3   # mallopt's parameter numbers (malloc.h)
 
 
 def default_workers() -> int:
@@ -46,34 +52,59 @@ def default_workers() -> int:
 
 
 @contextmanager
-def executor(scheduler: str | None, workers: int, cards: int) -> Iterator[tuple[Callable, int]]:
+def executor(scheduler: str | None, pool: LocalPool | None, cards: int) -> Iterator[tuple[Callable, int]]:
     """The function that runs the chunks, and the tasks it runs at once (the workers the
     chunks are cut for): on the Dask cluster of ``scheduler`` (connected now; its threads),
-    on ``workers`` local processes, or in this process (one worker or one card)."""
+    on the local ``pool`` (:func:`local_pool`), or in this process (no pool, or one card)."""
     if scheduler is not None:
         with _dask_client(scheduler) as client:
             yield partial(_on_dask, client, scheduler), max(1, _threads(client, scheduler))
-    elif workers <= 1 or cards <= 1:
+    elif pool is None or cards <= 1:
         yield in_process, 1
     else:
-        yield partial(on_pool, workers), workers
+        yield partial(on_pool, pool), pool.workers
+
+
+def roomy_allocator() -> None:
+    """Let this process's arrays be reused from the heap (:data:`MMAP_THRESHOLD`,
+    :data:`TRIM_THRESHOLD`; nothing where the C library is not glibc). The analysis of a
+    block of cards makes and frees many arrays of 0.1-1 MB (32 cards on the 3600-angle grids);
+    above the mapping threshold each is a fresh mapping of the system's, its pages zeroed on
+    first touch. glibc raises that threshold by itself only as it sees such blocks freed, and
+    not at all in a process started with ``MALLOC_TRIM_THRESHOLD_`` in its environment, as a
+    Dask nanny starts its workers (``distributed.nanny.pre-spawn-environ``): measured on
+    2000 cards in one process, 1.90 ms of CPU a card without this call, 1.75 ms with it, and
+    2.68 ms with the nanny's setting (docs/batch.md). A process keeps at most
+    :data:`TRIM_THRESHOLD` of freed memory."""
+    import ctypes
+
+    try:
+        mallopt = ctypes.CDLL(None).mallopt
+    except (OSError, AttributeError):   # not glibc: its own allocator's thresholds stay
+        return
+    mallopt(_M_MMAP_THRESHOLD, MMAP_THRESHOLD)
+    mallopt(_M_TRIM_THRESHOLD, TRIM_THRESHOLD)
 
 
 def in_process(chunks, settings: dict, store_chunk) -> None:
     """The chunks one after the other in this process."""
+    roomy_allocator()
     for chunk in chunks:
         store_chunk(analyse_chunk(chunk, settings))
 
 
 def _worker_start(parent: int) -> None:
     """A local worker: interrupts are the parent's to handle (a terminal's Ctrl-C reaches
-    the whole process group), and the worker ends when its parent is gone."""
+    the whole process group), the worker ends when its parent is gone, its allocator is made
+    roomy (:func:`roomy_allocator`) and the analyses are imported before the first task."""
     import signal
     import threading
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited through fork
+    roomy_allocator()
     threading.Thread(target=_leave_with, args=(parent,), name="parent-watch", daemon=True).start()
+    from .. import downhole, torque  # noqa: F401 - imported while the parent reads the manifest
 
 
 def _leave_with(parent: int) -> None:
@@ -83,45 +114,79 @@ def _leave_with(parent: int) -> None:
     os._exit(1)
 
 
-def on_pool(workers: int, chunks, settings: dict, store_chunk) -> None:
-    """The chunks on a local pool of ``workers`` forked processes, at most :data:`IN_FLIGHT`
-    chunks per worker in flight, stored as they finish; the workers are killed if the run
-    stops early."""
+class LocalPool:
+    """A local pool of processes (``concurrent.futures``), its number of workers, and whether
+    a run has given it work."""
+
+    def __init__(self, executor, workers: int):
+        self.executor, self.workers, self.used = executor, workers, False
+
+
+@contextmanager
+def local_pool(workers: int) -> Iterator[LocalPool | None]:
+    """A local pool of ``workers`` forked processes (None for one worker), started at once so
+    that the workers import the analyses while this process reads the manifest and the store.
+    Its workers are killed if the run stops early (an error, an interrupt: their tasks'
+    cards are not stored) or gave them no work, and end after their last task otherwise."""
+    if workers <= 1:
+        yield None
+        return
     import multiprocessing
-    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
-    from concurrent.futures.process import BrokenProcessPool
+    from concurrent.futures import ProcessPoolExecutor
 
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else None
     others = set(multiprocessing.active_children())
-    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context(method), initializer=_worker_start,
-                               initargs=(os.getpid(),))
+    pool = LocalPool(ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context(method),
+                                         initializer=_worker_start, initargs=(os.getpid(),)), workers)
+    pool.executor.submit(int)          # the workers are forked for the first task
+    try:
+        yield pool
+    except BaseException:
+        _stop(pool.executor, others)
+        raise
+    if pool.used:
+        pool.executor.shutdown(wait=True)
+    else:
+        _stop(pool.executor, others)
+
+
+def _stop(executor, others: set) -> None:
+    """Kill the pool's workers (the processes other than ``others``) and let it go."""
+    import multiprocessing
+
+    for process in set(multiprocessing.active_children()) - others:
+        process.kill()
+    executor.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
+    _unblock(executor)
+
+
+def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
+    """The chunks on a local pool (:func:`local_pool`), at most :data:`IN_FLIGHT` chunks per
+    worker in flight, stored as they finish."""
+    from concurrent.futures import FIRST_COMPLETED, wait
+    from concurrent.futures.process import BrokenProcessPool
+
+    pool.used = True
+    submit = pool.executor.submit
     try:
         queue = iter(chunks)
-        running = {pool.submit(analyse_chunk, chunk, settings)
-                   for chunk in itertools.islice(queue, IN_FLIGHT * workers)}
+        running = {submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, IN_FLIGHT * pool.workers)}
         while running:
             finished, running = wait(running, return_when=FIRST_COMPLETED)
             for future in finished:
                 store_chunk(future.result())
-                running |= {pool.submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, 1)}
-    except BaseException as exc:
-        for process in set(multiprocessing.active_children()) - others:
-            process.kill()
-        pool.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
-        _unblock(pool)
-        if isinstance(exc, BrokenProcessPool):
-            raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
-        raise
-    pool.shutdown(wait=True)
+                running |= {submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, 1)}
+    except BrokenProcessPool:
+        raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
 
 
-def _unblock(pool) -> None:
+def _unblock(executor) -> None:
     """Let the pool's manager thread end after its workers were killed: a worker killed while it
     wrote a task's results leaves half a message in the results pipe, which the thread would read
     for ever (and the interpreter's exit joins that thread). Closing this process's end of the
     pipe's writing side, the workers' ends being closed by their deaths, ends that read
     (concurrent.futures keeps the pipe as ``_result_queue``)."""
-    queue = getattr(pool, "_result_queue", None)
+    queue = getattr(executor, "_result_queue", None)
     if queue is not None:
         queue._writer.close()
 
@@ -174,7 +239,7 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
     while True:
         try:
             room = IN_FLIGHT * max(1, threads) - len(pending)
-            pending |= {client.submit(analyse_chunk, chunk, settings, pure=False)
+            pending |= {client.submit(dask_chunk, chunk, settings, pure=False)
                         for chunk in itertools.islice(queue, max(0, room))}
             if not pending:
                 return
@@ -199,6 +264,18 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
             idle_since = time.monotonic()
         elif time.monotonic() - idle_since > DASK_LOST:
             raise PumpjackError(f"--scheduler {address}: no worker in the cluster for {DASK_LOST:g} s; {RESUME}")
+
+
+_ROOMY: list[bool] = []
+
+
+def dask_chunk(chunk: list[tuple[int, dict]], settings: dict) -> list[tuple[int, list[dict]]]:
+    """:func:`.per_card.analyse_chunk` as a Dask task: the worker's allocator made roomy
+    (:func:`roomy_allocator`) by its first task."""
+    if not _ROOMY:
+        roomy_allocator()
+        _ROOMY.append(True)
+    return analyse_chunk(chunk, settings)
 
 
 def _cluster_failure(client, address: str, exc: Exception) -> str:

@@ -20,7 +20,7 @@ from ...errors import PumpjackError
 from ...readers.catalogue import Catalogue, read_catalogue
 from ...readers.manifest import Job, read_manifest
 from ...readers.store import Store
-from .executors import RESUME, executor
+from .executors import RESUME, LocalPool, executor, local_pool
 from .keys import card_digest, options_key, unit_digest, with_files
 from .per_card import ANALYSES, Options, card_fields
 
@@ -190,24 +190,25 @@ def run_batch(manifest: Path, store_path: Path, options: Options, workers: int, 
     tasks finish, with the cards done and to do."""
     start = time.perf_counter()
     _check(options)
-    jobs = read_manifest(manifest)
-    _check_jobs(jobs, manifest)
-    catalogue = None if options.catalogue is None else read_catalogue(Path(options.catalogue))
     stored: Counter = Counter()
-    with _signals_stop_the_run():
-        try:
-            pending = _pending(jobs, options, with_files(_stored_keys(store_path)), catalogue)
-            if pending:
-                _analyse(jobs, pending, store_path, options, workers, scheduler, progress, stored)
-        except KeyboardInterrupt as exc:
-            raise PumpjackError(f"interrupted ({exc or 'SIGINT'}) after storing {stored['ok'] + stored['error']} "
-                                f"results; {RESUME}") from None
+    with local_pool(workers if scheduler is None else 1) as pool:
+        jobs = read_manifest(manifest)
+        _check_jobs(jobs, manifest)
+        catalogue = None if options.catalogue is None else read_catalogue(Path(options.catalogue))
+        with _signals_stop_the_run():
+            try:
+                pending = _pending(jobs, options, with_files(_stored_keys(store_path)), catalogue)
+                if pending:
+                    _analyse(jobs, pending, store_path, options, pool, scheduler, progress, stored)
+            except KeyboardInterrupt as exc:
+                raise PumpjackError(f"interrupted ({exc or 'SIGINT'}) after storing {stored['ok'] + stored['error']} "
+                                    f"results; {RESUME}") from None
     return Tally(len(jobs), len(pending), len(jobs) - len(pending), stored["ok"], stored["error"],
                  stored["another"], time.perf_counter() - start)
 
 
-def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, options: Options, workers: int,
-             scheduler: str | None, progress, stored: Counter) -> None:
+def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, options: Options,
+             pool: LocalPool | None, scheduler: str | None, progress, stored: Counter) -> None:
     """The pending cards through the executor, in tasks of :func:`task_sizes` cards, into the
     store (opened for writing once the executor is ready), the cards of each finished task in
     one transaction; ``stored`` counts the results stored by status, and those another run
@@ -233,7 +234,7 @@ def _analyse(jobs: list[Job], pending: dict[int, _Pending], store_path: Path, op
         if progress is not None:
             progress(finished, len(pending))
 
-    with executor(scheduler, workers, len(indices)) as (execute, slots):
+    with executor(scheduler, pool, len(indices)) as (execute, slots):
         bounds = itertools.accumulate(task_sizes(len(indices), slots), initial=0)
         # a job's fields are plain values: its fields' dict is the plain data (asdict's deep copies cost more)
         chunks = ([(i, dict(vars(jobs[i]))) for i in indices[start:stop]] for start, stop in itertools.pairwise(bounds))

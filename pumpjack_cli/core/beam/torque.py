@@ -42,10 +42,10 @@ import numpy as np
 from ...errors import TorqueError
 from .counterbalance import Counterbalance, CounterbalanceModel, counterbalance_from_masses
 from . import kinetostatics
-from .kinetostatics import rational_mechanism
+from .kinetostatics import applied_loads, rational_mechanism, rational_reactions
 from ..mechanism import Mechanism
 from .masses import MassModel
-from .spatial import SpatialLinkage
+from .spatial import SpatialLinkage, SpatialMotion, spatial_motion
 
 #: Net-torque methods: the API 11E torque-factor method and the spatial kinetostatics.
 TORQUE_METHODS = ("api", "exact")
@@ -299,11 +299,32 @@ class ExactTorqueBasis:
 
 def _basis_block(spatial: SpatialLinkage, masses: MassModel, theta: np.ndarray) -> np.ndarray:
     """Balancing torque [N·m] for (W, omega, alpha) = (0, 0, 0), (1 N, 0, 0), (0, 1 1/s, 0),
-    (0, 0, 1 1/s²) at ``theta`` [rad], as four rows (one batched kinetostatic solution)."""
+    (0, 0, 1 1/s²) at ``theta`` [rad], as four rows (one batched kinetostatic solution).
+
+    The motion is solved once, at omega = 1 and alpha = 0: the links' angular velocities are
+    omega k_i(theta) and their accelerations alpha k_i + omega² k_i' (the loop equations'
+    velocity and acceleration systems share their matrix, and alpha enters the latter as omega
+    the former, [Spatial7SK12] eqs. 5-16), so at (0, 1) the accelerations are the velocities at
+    (1, 0) and the velocities are zero, and at rest both are zero."""
     n = theta.size
-    unit = np.repeat(np.eye(4), n, axis=1)
-    _, reactions = rational_mechanism(spatial, masses, np.tile(theta, 4), unit[2], unit[3], unit[1])
-    return reactions.net_torque.reshape(4, n)
+    sm = spatial_motion(spatial, theta, 1.0, 0.0)
+    rest = np.zeros((n, 3))
+    cases = {}
+    for name, value in vars(sm).items():
+        if name in _RATES:
+            cases[name] = np.concatenate([rest, rest, value, rest])
+        elif name in _ACCELERATIONS:
+            cases[name] = np.concatenate([rest, rest, value, getattr(sm, "w" + name[1:])])
+        else:
+            cases[name] = np.concatenate([value] * 4)
+    cases["omega1"], cases["epsilon1"] = np.repeat([0.0, 0.0, 1.0, 0.0], n), np.repeat([0.0, 0.0, 0.0, 1.0], n)
+    motion = SpatialMotion(**cases)
+    loads = applied_loads(spatial, masses, motion, np.repeat([0.0, 1.0, 0.0, 0.0], n))
+    return rational_reactions(spatial, motion, loads).net_torque.reshape(4, n)
+
+
+_RATES = ("w1", "w2", "w3", "w4", "w5")
+_ACCELERATIONS = ("e1", "e2", "e3", "e4", "e5")
 
 
 def exact_torque_basis(spatial: SpatialLinkage, masses: MassModel, crank_angle: np.ndarray) -> ExactTorqueBasis:
