@@ -82,8 +82,9 @@ STOPS = {
 def test_a_stopped_run_ends_with_one_line_and_a_resumable_store(run_cli, tmp_path, pumpjack_script, how):
     """Ctrl-C (SIGINT to the whole process group), SIGTERM to the run, or one of its workers
     killed (as by the kernel when out of memory): one line, exit code 2, every worker gone,
-    whole cards in the store, and the store goes on taking cards."""
-    path, store = _wells(tmp_path, 4, 400), tmp_path / "r.sqlite"
+    whole cards in the store, and the store goes on taking cards. 4000 wells keep the workers
+    busy for seconds at a millisecond a card, so that the run is stopped before it ends."""
+    path, store = _wells(tmp_path, 4, 4000), tmp_path / "r.sqlite"
     process = subprocess.Popen([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     assert wait_for_rows(store, 2, process) >= 2
