@@ -441,13 +441,13 @@ SECTIONS: tuple[Section, ...] = (
           "stroke (tagging up)"),
         E("card_area_ratio", "percent", "pump card work / (reference fluid load × gross pump stroke): the card "
           "against the ideal rectangle"),
-        E("rod_break_depth", "length", "depth along the rods of a parted string's break: the free end the wave "
+        E("rod_break_depth", "depth", "depth along the rods of a parted string's break: the free end the wave "
           "equation finds (`docs/cards.md`), else where the rods above weigh the card's mean load"),
         E("discharge_pressure", "pressure", "pressure above the plunger: tubing-head pressure + fluid gradient × "
           "the pump's true vertical depth", "p_d"),
-        E("pump_submergence", "length", "producing fluid level above the pump from the card's intake pressure and "
+        E("pump_submergence", "depth", "producing fluid level above the pump from the card's intake pressure and "
           "the casing-head pressure, gas-free gradient, (p_i − p_c)/(rho g)", "h"),
-        E("fluid_level_depth", "length", "producing fluid level below the surface, true vertical: pump true vertical "
+        E("fluid_level_depth", "depth", "producing fluid level below the surface, true vertical: pump true vertical "
           "depth − pump_submergence"),
         E("runtime", "percent", "share of the day the unit runs (--runtime, the manifest's runtime)"),
         E("pump_slippage", "flow_rate", "liquid slipping past the plunger, laminar flow through its clearance while "
@@ -493,7 +493,7 @@ SECTIONS: tuple[Section, ...] = (
             "The rods along a surveyed hole: gravity along the hole, the soft-string side load and Coulomb drag "
             "([JohancsikSPE11380]); definitions in `docs/deviated.md`. Depths are measured along the hole from the "
             "wellhead; the profile (`--profile`) has one row per node of the rod string.", (
-        E("pump_true_vertical_depth", "length", "true vertical depth of the pump: the head of the fluid columns",
+        E("pump_true_vertical_depth", "depth", "true vertical depth of the pump: the head of the fluid columns",
           "TVD"),
         E("axial_rod_weight", "force", "buoyant weight of the rods along the hole, ∫ q cos φ ds: the polished rod's "
           "static load of a frictionless string, the pump card's datum", "W"),
@@ -501,7 +501,7 @@ SECTIONS: tuple[Section, ...] = (
         E("friction_work_per_cycle", "energy", "work of the rod-tubing drag per cycle, ∫∫ μ N |u_t| ds dt"),
         E("max_side_load", "force_per_length", "largest side load per length over depth and cycle (soft-string, "
           "from the dynamic effective tension)", "N"),
-        E("max_side_load_depth", "length", "measured depth of the largest side load per length"),
+        E("max_side_load_depth", "depth", "measured depth of the largest side load per length"),
         E("max_side_load_per_rod", "force", "largest side load of one rod between couplings (what one coupling "
           "carries without guides)"),
         E("rod_guide_side_load_limit", "force", "side load one coupling or guide may carry (--guide-limit or "
@@ -514,8 +514,8 @@ SECTIONS: tuple[Section, ...] = (
           "drag (the vertical model's along the hole)"),
         E("pump_position_without_friction", "length", "plunger position of a diagnosis that ignores the drag"),
         E("pump_load_without_friction", "force", "net plunger load of a diagnosis that ignores the drag"),
-        E("measured_depth", "length", "depth along the hole from the wellhead (the rods' length to here)", "MD"),
-        E("true_vertical_depth", "length", "depth below the wellhead", "TVD"),
+        E("measured_depth", "depth", "depth along the hole from the wellhead (the rods' length to here)", "MD"),
+        E("true_vertical_depth", "depth", "depth below the wellhead", "TVD"),
         E("inclination", "angle", "angle of the hole from the vertical", "φ"),
         E("azimuth", "angle", "direction of the hole clockwise from north", "ψ"),
         E("dogleg_severity", "dogleg_severity", "curvature of the hole (minimum curvature between the stations)",

@@ -312,7 +312,7 @@ EXEMPT: dict[tuple[str, str], str] = {
     ("batch.md", "| column | meaning |"): "store format",
     ("batch.md", "| what | result |"): "timings (docs/performance.md)",
     ("batch.md", "| cards | wall time | cards/s | peak RSS, all processes (sum) | batch process | each worker | "
-                 "Dask's profiler |"): "timings and memory measured (benchmarks/bench_dask.py)",
+                 "workers' CPU a card |"): "timings and memory measured (benchmarks/bench_dask.py)",
     ("batch.md", "| what happens | what the run does |"): "behaviour under faults (tests/commands/test_batch_faults.py)",
     ("cards.md", "| format | module | an example | recognised by content | file name endings |"): "formats",
     ("cards.md", "| option | meaning |"): "options",

@@ -187,6 +187,18 @@ def test_field_units_are_the_si_numbers_converted(downhole):
         si["summary"]["pump_displacement_m3_d"], rel=1e-9)
 
 
+def test_the_fluid_level_off_the_card_is_the_wells_in_feet(downhole):
+    """C-228D-213-86's sample card was made (samples/make_cards.py) on a 5000 ft well whose
+    pump is 500 ft below the fluid level: read back off its pump card in field units, the
+    submergence and the fluid level's depth are depths in a well, in feet (not inches as a
+    length on the unit), and the well's within 2 ft: an error of 1.5 lbf (5e-4) in the card's
+    fluid load over the 1.5 in plunger's 0.0123 ft² of 59.3 lb/ft³ liquid."""
+    summary = downhole("c-228d-213-86", "--units", "field")["summary"]
+    assert summary["pump_submergence_ft"] == pytest.approx(500.0, abs=2.0)
+    assert summary["fluid_level_depth_ft"] == pytest.approx(4500.0, abs=2.0)
+    assert summary["pump_submergence_ft"] + summary["fluid_level_depth_ft"] == pytest.approx(5000.0, rel=1e-12)
+
+
 def test_plot_shows_both_cards_and_the_goodman_diagram(run_cli, tmp_path):
     target = tmp_path / "cards.png"
     code, out, err = run_cli("downhole", "c-80d-133-48", "--card", sample_card("c-80d-133-48"), "--damping", "0.1",
