@@ -47,10 +47,12 @@ def test_kill_9_of_the_parent_leaves_whole_cards_and_no_worker(tmp_path, pumpjac
     """SIGKILL in the middle of a run on two workers: the workers end with their parent (not
     adopted by init and left computing); the same command then finishes the rest, every
     card and analysis exactly once. The parent is stopped (SIGSTOP) between the look at its
-    workers and the kill, so that the run cannot end in between; 240 cards (tasks of 30) keep
-    the workers busy for a while even at a few ms a card."""
-    rows = field_cards(tmp_path, 240)
-    path, store = field_manifest(tmp_path, rows), tmp_path / "r.sqlite"
+    workers and the kill, so that the run cannot end in between; 960 wells on 24 card files
+    (tasks of 120) keep the workers busy for a second after the first rows even at a
+    millisecond a card."""
+    rows = field_cards(tmp_path, 24)
+    path = field_manifest(tmp_path, [(f"W-{k:04d}", *rows[k % 24][1:]) for k in range(960)])
+    store = tmp_path / "r.sqlite"
     process = subprocess.Popen([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     assert wait_for_rows(store, 2, process) >= 2
@@ -59,14 +61,14 @@ def test_kill_9_of_the_parent_leaves_whole_cards_and_no_worker(tmp_path, pumpjac
     os.kill(process.pid, signal.SIGKILL)
     process.wait(timeout=60)
     assert len(workers) == 2 and gone(workers)
-    assert 0 < stored_count(store) < 480
+    assert 0 < stored_count(store) < 1920
     _whole_cards(store)
     done = subprocess.run([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
-    counts = sqlite3.connect(store).execute("SELECT card, analysis, COUNT(*) FROM results GROUP BY card, analysis")
-    counts = counts.fetchall()
-    assert len(counts) == 480 and all(n == 1 for _, _, n in counts)
+    counts = sqlite3.connect(store).execute("SELECT well, card, analysis, COUNT(*) FROM results "
+                                            "GROUP BY well, card, analysis").fetchall()
+    assert len(counts) == 1920 and all(n == 1 for *_, n in counts)
 
 
 #: How a run is stopped (a signal to the run, to its process group, or to one of its

@@ -181,14 +181,21 @@ def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
 
 
 def _unblock(executor) -> None:
-    """Let the pool's manager thread end after its workers were killed: a worker killed while it
-    wrote a task's results leaves half a message in the results pipe, which the thread would read
-    for ever (and the interpreter's exit joins that thread). Closing this process's end of the
-    pipe's writing side, the workers' ends being closed by their deaths, ends that read
-    (concurrent.futures keeps the pipe as ``_result_queue``)."""
-    queue = getattr(executor, "_result_queue", None)
-    if queue is not None:
-        queue._writer.close()
+    """Let the pool's threads end after its workers were killed, so that the interpreter's exit,
+    which joins them, does not wait for ever. A worker killed while it wrote a task's results
+    leaves half a message in the results pipe, which the manager thread would read for ever:
+    closing this process's end of the pipe's writing side (the workers' ends closed by their
+    deaths) ends that read. A task being written to the workers' pipe when they died fills it
+    for good: the task queue's feeder thread is not waited for, and this process's end of that
+    pipe's reading side is closed so that its write fails. (concurrent.futures keeps the pipes
+    as ``_result_queue`` and ``_call_queue``.)"""
+    results = getattr(executor, "_result_queue", None)
+    if results is not None:
+        results._writer.close()
+    calls = getattr(executor, "_call_queue", None)
+    if calls is not None:
+        calls.cancel_join_thread()
+        calls._reader.close()
 
 
 @contextmanager
