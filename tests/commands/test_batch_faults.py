@@ -211,3 +211,17 @@ def test_a_dask_cluster_gives_the_local_results_and_its_losses_end_the_run_with_
         for process in processes:
             process.kill()
             process.wait(timeout=60)
+
+
+def test_a_stopped_pool_lets_go_of_the_pipes_its_threads_would_block_on():
+    """The interpreter's exit joins the pool's threads: after its workers are killed, this
+    process's end of the results pipe's writing side and of the task pipe's reading side
+    are closed (concurrent.futures forgets both at its shutdown), so that neither thread
+    can wait for ever on a message a dead worker half wrote or half read."""
+    from pumpjack_cli.analysis.batch import executors
+
+    with pytest.raises(KeyboardInterrupt):
+        with executors.local_pool(2) as pool:
+            results, calls = pool.executor._result_queue, pool.executor._call_queue
+            raise KeyboardInterrupt
+    assert results._writer.closed and calls._reader.closed

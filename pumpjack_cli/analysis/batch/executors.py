@@ -154,10 +154,11 @@ def _stop(executor, others: set) -> None:
     """Kill the pool's workers (the processes other than ``others``) and let it go."""
     import multiprocessing
 
+    pipes = executor._result_queue, executor._call_queue     # shutdown lets go of them
     for process in set(multiprocessing.active_children()) - others:
         process.kill()
     executor.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
-    _unblock(executor)
+    _unblock(*pipes)
 
 
 def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
@@ -180,7 +181,7 @@ def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
         raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
 
 
-def _unblock(executor) -> None:
+def _unblock(results, calls) -> None:
     """Let the pool's threads end after its workers were killed, so that the interpreter's exit,
     which joins them, does not wait for ever. A worker killed while it wrote a task's results
     leaves half a message in the results pipe, which the manager thread would read for ever:
@@ -188,11 +189,9 @@ def _unblock(executor) -> None:
     deaths) ends that read. A task being written to the workers' pipe when they died fills it
     for good: the task queue's feeder thread is not waited for, and this process's end of that
     pipe's reading side is closed so that its write fails. (concurrent.futures keeps the pipes
-    as ``_result_queue`` and ``_call_queue``.)"""
-    results = getattr(executor, "_result_queue", None)
+    as ``_result_queue`` and ``_call_queue``, and forgets them at its shutdown.)"""
     if results is not None:
         results._writer.close()
-    calls = getattr(executor, "_call_queue", None)
     if calls is not None:
         calls.cancel_join_thread()
         calls._reader.close()
