@@ -17,7 +17,7 @@ import os
 import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from functools import partial
+from functools import cache, partial
 
 from ...errors import PumpjackError
 from .per_card import analyse_chunk
@@ -65,6 +65,7 @@ def executor(scheduler: str | None, pool: LocalPool | None, cards: int) -> Itera
         yield partial(on_pool, pool), pool.workers
 
 
+@cache
 def roomy_allocator() -> None:
     """Let this process's arrays be reused from the heap (:data:`MMAP_THRESHOLD`,
     :data:`TRIM_THRESHOLD`; nothing where the C library is not glibc). The analysis of a
@@ -75,7 +76,7 @@ def roomy_allocator() -> None:
     Dask nanny starts its workers (``distributed.nanny.pre-spawn-environ``): measured on
     2000 cards in one process, 1.90 ms of CPU a card without this call, 1.75 ms with it, and
     2.68 ms with the nanny's setting (docs/batch.md). A process keeps at most
-    :data:`TRIM_THRESHOLD` of freed memory."""
+    :data:`TRIM_THRESHOLD` of freed memory. Once a process (a forked worker inherits it)."""
     import ctypes
 
     try:
@@ -272,15 +273,10 @@ def _on_dask(client, address: str, chunks, settings: dict, store_chunk) -> None:
             raise PumpjackError(f"--scheduler {address}: no worker in the cluster for {DASK_LOST:g} s; {RESUME}")
 
 
-_ROOMY: list[bool] = []
-
-
 def dask_chunk(chunk: list[tuple[int, dict]], settings: dict) -> list[tuple[int, list[dict]]]:
-    """:func:`.per_card.analyse_chunk` as a Dask task: the worker's allocator made roomy
-    (:func:`roomy_allocator`) by its first task."""
-    if not _ROOMY:
-        roomy_allocator()
-        _ROOMY.append(True)
+    """:func:`.per_card.analyse_chunk` as a Dask task, the worker's allocator made roomy
+    (:func:`roomy_allocator`) first."""
+    roomy_allocator()
     return analyse_chunk(chunk, settings)
 
 
