@@ -70,7 +70,11 @@ def main() -> None:
         wall = time.perf_counter() - start
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         user, system = after.ru_utime - before.ru_utime, after.ru_stime - before.ru_stime
-        print(done.stdout.strip().splitlines()[-1] if done.stdout.strip() else done.stderr.strip()[-500:])
+        lines = done.stdout.strip().splitlines()
+        for line in lines:
+            if line.startswith(("FAILED", "ERROR")):
+                print(line)
+        print(lines[-1] if lines else done.stderr.strip()[-500:])
         print(f"wall {wall:.1f} s, CPU {user:.1f} s user + {system:.1f} s system = {user + system:.1f} s")
         if split:
             _split(Path(folder), user + system)
