@@ -3,7 +3,7 @@
 The equation of motion and its coefficients are :mod:`.coefficients`. It is
 integrated in the crank angle, d(omega)/dtheta = (M_drive - M_load - M_gravity -
 1/2 omega^2 I')/(I omega), dt/dtheta = 1/omega, over the upstroke and then the
-downstroke ([SK8Rotation2013] eqs. 27 and 29), with scipy's DOP853 at a relative tolerance
+downstroke ([SK8Rotation2013] eqs. 27 and 29), with the DOP853 of :mod:`.dop853` at a relative tolerance
 ``rtol`` and absolute tolerances rtol x the scale of each state. The coefficients I,
 I' and M_load + M_gravity are tabulated exactly on 4096 crank angles per revolution
 and interpolated by cubic splines within each stroke (error ~1e-11 relative, below
@@ -29,6 +29,7 @@ from ..beam.kinematics import RodMotion, rod_motion
 from ..mechanism import DeadPositions
 from ..sampling import Extreme, crank_grid, extremes
 from .coefficients import Machine, coefficients
+from .dop853 import integrate
 
 if TYPE_CHECKING:  # scipy is imported when a solution is computed
     from scipy.interpolate import CubicSpline
@@ -53,7 +54,8 @@ COARSE_RTOL = 1e-6
 #: omega_end - omega_0 ends in a few steps instead of wandering in the integration's noise
 #: (which, integrated to rtol itself, is some 10 rtol on a card's kinks).
 INTEGRATION_SHARE = 1e-2
-#: Tightest integration tolerance asked of DOP853 (scipy's floor is 100 machine epsilons).
+#: Tightest integration tolerance asked of DOP853 (a hundred machine epsilons: below it the
+#: error estimate is rounding noise and the step control stalls).
 INTEGRATION_FLOOR = 1e-13
 #: A coarse solution's motor torque may exceed the pull-out torque by this share before the
 #: load is refused: its torque is off by about rtol / slip (1e-6 / 0.03), far less.
@@ -80,7 +82,8 @@ class _Stroke:
         (scipy's call checks its argument for some 10 µs, and the integration asks for every
         right-hand side); made once per stroke for all the shots."""
         breaks = self.spline.x.tolist()
-        pieces = np.transpose(self.spline.c, (1, 2, 0)).tolist()  # [piece][column][c3, c2, c1, c0]
+        # [piece][column][c3, c2, c1, c0]; a contiguous copy first: tolist walks it in a third of the time
+        pieces = np.ascontiguousarray(np.transpose(self.spline.c, (1, 2, 0))).tolist()
         last = len(pieces) - 1
 
         def at(theta: float) -> tuple[float, float, float]:
@@ -281,58 +284,47 @@ def _cycle_work(strokes: tuple[_Stroke, _Stroke]) -> float:
     return sum(float(s.spline.integrate(s.start, s.start + s.travel)[2]) for s in strokes)
 
 
-class _Stall:
-    """The integration's terminal event: the crank speed falls to the stall floor [1/s]."""
-
-    terminal = True
-
-    def __init__(self, floor: float):
-        self.floor = floor
-
-    def __call__(self, theta: float, y: np.ndarray) -> float:
-        return y[0] - self.floor
-
-
 class _Shooter:
     """Integrates one cycle from the start of the upstroke for a given start speed."""
 
     def __init__(self, machine: Machine, strokes: tuple[_Stroke, _Stroke], rtol: float, scale: float, energy: float):
         self.machine, self.strokes, self.rtol = machine, strokes, rtol
         self.integration_rtol = max(INTEGRATION_SHARE * rtol, INTEGRATION_FLOOR)
-        self.atol = self.integration_rtol * np.array([scale, 2.0 * np.pi / scale, max(abs(energy), 1.0)])
+        self.atol = [self.integration_rtol * a for a in (scale, 2.0 * np.pi / scale, max(abs(energy), 1.0))]
         self.floor = STALL_FRACTION * scale
         self.evaluations = 0
 
     def run(self, omega0: float):
         """States (omega, t, E) at the end of the cycle and the two strokes' dense solutions."""
-        from scipy.integrate import solve_ivp
-
         machine = self.machine
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
-
-        stalled = _Stall(self.floor)
-        y = np.array([omega0, 0.0, 0.0])
+        floor = self.floor
+        y = [omega0, 0.0, 0.0]
         solutions = []
         for stroke in self.strokes:
             def rhs(theta, y, spline=stroke.at):
                 inertia, rate, torque = spline(theta)
                 w = y[0]
                 drive = a_u + b_u2 * w
-                return [(drive - torque - 0.5 * w * w * rate) / (inertia * w), 1.0 / w, drive]
+                return (drive - torque - 0.5 * w * w * rate) / (inertia * w), 1.0 / w, drive
 
-            sol = solve_ivp(rhs, (stroke.start, stroke.start + stroke.travel), y, method="DOP853",
-                            rtol=self.integration_rtol, atol=self.atol, dense_output=True, events=stalled)
-            self.evaluations += sol.nfev
-            if sol.status == 1:
+            try:
+                sol = integrate(rhs, stroke.start, stroke.start + stroke.travel, y, self.integration_rtol, self.atol,
+                                event=lambda theta, y: y[0] - floor)
+            except ZeroDivisionError:
+                raise DynamicsError(f"the crank stops when the upstroke starts at {omega0:.6g} 1/s: "
+                                    f"the motor cannot turn the unit") from None
+            except DynamicsError as e:
+                raise DynamicsError(f"integration failed from omega1 = {omega0:.6g} 1/s: {e}") from None
+            self.evaluations += sol.evaluations
+            if sol.stopped_at is not None:
                 raise DynamicsError(
-                    f"the crank stalls (omega1 below {self.floor:.3g} 1/s at crank angle "
-                    f"{np.degrees(sol.t_events[0][0]) % 360:.1f}°) when the upstroke starts at {omega0:.6g} 1/s: "
+                    f"the crank stalls (omega1 below {floor:.3g} 1/s at crank angle "
+                    f"{np.degrees(sol.stopped_at) % 360:.1f}°) when the upstroke starts at {omega0:.6g} 1/s: "
                     f"the motor cannot turn the unit"
                 )
-            if not sol.success:
-                raise DynamicsError(f"integration failed from omega1 = {omega0:.6g} 1/s: {sol.message}")
-            y = sol.y[:, -1]
-            solutions.append(sol)
+            y = sol.end
+            solutions.append(sol.trajectory)
         return y, solutions
 
 
@@ -368,7 +360,7 @@ def _evaluate(strokes: tuple[_Stroke, _Stroke], solutions, theta: np.ndarray) ->
         if not mask.any():
             continue
         local = stroke.start + (theta[mask] - stroke.start) % (2.0 * np.pi)
-        out[:, mask] = sol.sol(np.minimum(local, stroke.start + stroke.travel))
+        out[:, mask] = sol(np.minimum(local, stroke.start + stroke.travel))
     return out
 
 

@@ -1,0 +1,253 @@
+"""Dormand and Prince's Runge-Kutta pair of orders 8(5,3) with its dense output of order 7,
+for the few states of the machine's equation of motion.
+
+The method of Hairer's code DOP853 ([HairerNorsettWanner1993] sec. II.5 and II.6: twelve
+stages, a fifth- and a third-order error estimate combined into one error norm, three
+more stages for the continuous extension), with the step-size control and initial step of
+the same book (sec. II.4: safety 0.9, step factor between 0.2 and 10, the error exponent
+-1/8), as scipy's ``solve_ivp(method="DOP853")`` runs it; the tableau is the one scipy
+publishes as the attributes of its ``scipy.integrate.DOP853`` class. The difference is
+the arithmetic: a state of three numbers is stepped in plain floats, not in numpy arrays
+of three elements, whose every operation costs a microsecond of dispatch (scipy's own
+stepper spent three quarters of `pumpjack dynamics` in that overhead). The continuous
+extension is made only when it is asked for, so that the shots of a shooting that are not
+kept never pay its three extra stages.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from functools import cache
+from operator import mul
+
+import numpy as np
+
+from ...errors import DynamicsError
+
+#: Right-hand side f(t, y) of y' = f(t, y): the derivatives of the state, as many as y has.
+RightHandSide = Callable[[float, Sequence[float]], Sequence[float]]
+
+#: Step-size control ([HairerNorsettWanner1993] sec. II.4).
+SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
+#: The error estimate is of order 7: the step scales as error^(-1/8).
+EXPONENT = -1.0 / 8.0
+
+
+@dataclass(frozen=True)
+class _Tableau:
+    """The coefficients as plain lists: the stages' rows of A (each as long as the stages before
+    it), C, the weights B, the two error estimators, and the continuous extension's rows."""
+
+    a: tuple[tuple[float, ...], ...]
+    c: tuple[float, ...]
+    b: tuple[float, ...]
+    e3: tuple[float, ...]
+    e5: tuple[float, ...]
+    extra_a: tuple[tuple[float, ...], ...]
+    extra_c: tuple[float, ...]
+    d: tuple[tuple[float, ...], ...]
+
+
+@cache
+def _tableau() -> _Tableau:
+    """scipy's DOP853 coefficients (imported when the first integration runs)."""
+    from scipy.integrate import DOP853
+
+    stages = int(DOP853.n_stages)
+    return _Tableau(
+        a=tuple(tuple(DOP853.A[s, :s].tolist()) for s in range(stages)),
+        c=tuple(DOP853.C.tolist()),
+        b=tuple(DOP853.B.tolist()),
+        e3=tuple(DOP853.E3.tolist()),
+        e5=tuple(DOP853.E5.tolist()),
+        extra_a=tuple(tuple(DOP853.A_EXTRA[r, :stages + 1 + r].tolist()) for r in range(len(DOP853.C_EXTRA))),
+        extra_c=tuple(DOP853.C_EXTRA.tolist()),
+        d=tuple(tuple(row) for row in DOP853.D.tolist()),
+    )
+
+
+class Trajectory:
+    """The dense solution of one integration: the state at any t of its interval, vectorised.
+
+    Each step keeps its start, length, start state, end state and stage derivatives; the
+    interpolation coefficients of the continuous extension are made, for all steps at once,
+    at the first call (three right-hand sides a step)."""
+
+    def __init__(self, rhs: RightHandSide, counter: list[int]):
+        self._rhs, self._counter = rhs, counter
+        self._steps: list[tuple[float, float, list[float], list[float], list[list[float]]]] = []
+        self._table: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
+
+    def add(self, t: float, h: float, y: list[float], y_new: list[float], columns: list[list[float]]) -> None:
+        self._steps.append((t, h, y, y_new, columns))
+
+    def _coefficients(self, t: float, h: float, y: list[float], y_new: list[float],
+                      columns: list[list[float]]) -> list[list[float]]:
+        """F_0 .. F_6 of one step, by component (the extension's three stages appended to ``columns``)."""
+        tab = _tableau()
+        extended = [list(col) for col in columns]
+        for a, c in zip(tab.extra_a, tab.extra_c):
+            k = self._rhs(t + c * h, [yi + h * sum(map(mul, a, col)) for yi, col in zip(y, extended)])
+            for col, ki in zip(extended, k):
+                col.append(ki)
+        self._counter[0] += len(tab.extra_c)
+        out = []
+        for y0, y1, col in zip(y, y_new, extended):
+            dy, f_old, f_new = y1 - y0, col[0], col[len(tab.b)]
+            out.append([dy, h * f_old - dy, 2.0 * dy - h * (f_new + f_old)]
+                       + [h * sum(map(mul, row, col)) for row in tab.d])
+        return out
+
+    def _tabled(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        if self._table is None:
+            starts = np.array([s[0] for s in self._steps])
+            lengths = np.array([s[1] for s in self._steps])
+            states = np.array([s[2] for s in self._steps])
+            coefficients = np.array([self._coefficients(*s) for s in self._steps])   # (steps, states, 7)
+            self._table = starts, lengths, states, coefficients
+        return self._table
+
+    def in_last_step(self) -> Callable[[float], list[float]]:
+        """The state at any t of the last step (its coefficients made once; for an event's root)."""
+        start, h, y, y_new, columns = self._steps[-1]
+        coefficients = self._coefficients(start, h, y, y_new, columns)
+
+        def at(t: float) -> list[float]:
+            x = (t - start) / h
+            out = []
+            for y0, f in zip(y, coefficients):
+                acc = 0.0
+                for i, fi in enumerate(reversed(f)):
+                    acc = (acc + fi) * (x if i % 2 == 0 else 1.0 - x)
+                out.append(y0 + acc)
+            return out
+
+        return at
+
+    def __call__(self, t: np.ndarray) -> np.ndarray:
+        """The states at ``t`` (any shape (N,)), shape (states, N)."""
+        starts, lengths, states, coefficients = self._tabled()
+        t = np.asarray(t, dtype=float)
+        i = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, starts.size - 1)
+        x = ((t - starts[i]) / lengths[i])[:, None]
+        f = coefficients[i]
+        acc = np.zeros((t.size, states.shape[1]))
+        for n in range(f.shape[2] - 1, -1, -1):
+            acc += f[:, :, n]
+            acc *= x if (f.shape[2] - 1 - n) % 2 == 0 else 1.0 - x
+        return (states[i] + acc).T
+
+
+@dataclass(frozen=True)
+class Integration:
+    """The end state, the dense solution, the right-hand sides evaluated, and where the event
+    stopped the integration (None: it reached the end)."""
+
+    end: list[float]
+    trajectory: Trajectory
+    evaluations: int
+    stopped_at: float | None
+
+
+def _norm(values: Sequence[float], scale: Sequence[float]) -> float:
+    return math.sqrt(sum((v / s) ** 2 for v, s in zip(values, scale)) / len(scale))
+
+
+def _initial_step(rhs: RightHandSide, t0: float, y0: list[float], f0: Sequence[float], span: float, rtol: float,
+                  atol: Sequence[float]) -> float:
+    """[HairerNorsettWanner1993] sec. II.4's starting step (one right-hand side)."""
+    scale = [a + abs(y) * rtol for a, y in zip(atol, y0)]
+    d0, d1 = _norm(y0, scale), _norm(f0, scale)
+    h0 = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
+    h0 = min(h0, span)
+    f1 = rhs(t0 + h0, [y + h0 * f for y, f in zip(y0, f0)])
+    d2 = _norm([b - a for a, b in zip(f0, f1)], scale) / h0
+    h1 = max(1e-6, h0 * 1e-3) if d1 <= 1e-15 and d2 <= 1e-15 else (0.01 / max(d1, d2)) ** (1.0 / 8.0)
+    return min(100.0 * h0, h1, span)
+
+
+def integrate(rhs: RightHandSide, t0: float, t1: float, y0: Sequence[float], rtol: float, atol: Sequence[float],
+              event: Callable[[float, Sequence[float]], float] | None = None) -> Integration:
+    """Integrate y' = rhs(t, y) from t0 to t1 > t0 at the relative tolerance ``rtol`` and the
+    absolute tolerances ``atol`` (one per state).
+
+    ``event(t, y)``, when given, stops the integration where it changes sign: its root on the
+    dense solution of the step in which it did (bisection to 1e-12 of the step or to adjacent
+    floating-point numbers, whichever comes first).
+
+    Raises
+    ------
+    DynamicsError
+        When the step size falls below ten spacings of floating-point numbers at t (a
+        singular right-hand side) or a state is not finite.
+    """
+    tab = _tableau()
+    counter = [0]
+
+    def counted(t: float, y: Sequence[float]) -> Sequence[float]:
+        counter[0] += 1
+        return rhs(t, y)
+
+    trajectory = Trajectory(counted, counter)
+    t, y = float(t0), [float(v) for v in y0]
+    f = counted(t, y)
+    h_abs = _initial_step(counted, t, y, f, t1 - t0, rtol, atol)
+    g = event(t, y) if event is not None else 0.0
+    while t < t1:
+        min_step = 10.0 * (math.nextafter(t, math.inf) - t)
+        h_abs = max(h_abs, min_step)
+        rejected = False
+        while True:
+            if h_abs < min_step or not math.isfinite(h_abs):
+                raise DynamicsError(f"the integration's step fell below the floating-point spacing at {t:.10g}: "
+                                    f"the equation of motion is singular there")
+            t_new = min(t + h_abs, t1)
+            h = t_new - t
+            columns = [[fi] for fi in f]
+            for a, c in zip(tab.a[1:], tab.c[1:]):
+                k = counted(t + c * h, [yi + h * sum(map(mul, a, col)) for yi, col in zip(y, columns)])
+                for col, ki in zip(columns, k):
+                    col.append(ki)
+            y_new = [yi + h * sum(map(mul, tab.b, col)) for yi, col in zip(y, columns)]
+            f_new = counted(t_new, y_new)
+            for col, ki in zip(columns, f_new):
+                col.append(ki)
+            scale = [a + max(abs(u), abs(v)) * rtol for a, u, v in zip(atol, y, y_new)]
+            err5 = sum((sum(map(mul, tab.e5, col)) / s) ** 2 for col, s in zip(columns, scale))
+            err3 = sum((sum(map(mul, tab.e3, col)) / s) ** 2 for col, s in zip(columns, scale))
+            if not (math.isfinite(err5) and math.isfinite(err3)):
+                raise DynamicsError(f"the equation of motion's state is not finite near {t:.10g}")
+            error = 0.0 if err5 == 0.0 == err3 else h * err5 / math.sqrt((err5 + 0.01 * err3) * len(scale))
+            if error < 1.0:
+                factor = MAX_FACTOR if error == 0.0 else min(MAX_FACTOR, SAFETY * error**EXPONENT)
+                h_abs *= min(1.0, factor) if rejected else factor
+                break
+            h_abs *= max(MIN_FACTOR, SAFETY * error**EXPONENT)
+            rejected = True
+        trajectory.add(t, h, y, y_new, columns)
+        if event is not None:
+            g_new = event(t_new, y_new)
+            if (g <= 0.0 <= g_new) or (g >= 0.0 >= g_new):
+                return _stopped(trajectory, event, t, t_new, counter)
+            g = g_new
+        t, y, f = t_new, y_new, f_new
+    return Integration(y, trajectory, counter[0], None)
+
+
+def _stopped(trajectory: Trajectory, event: Callable[[float, Sequence[float]], float], t: float, t_new: float,
+             counter: list[int]) -> Integration:
+    """The event's root in the last step, by bisection on its dense solution."""
+    at = trajectory.in_last_step()
+    lo, hi = t, t_new
+    below = event(lo, at(lo)) <= 0.0
+    while hi - lo > 1e-12 * (t_new - t):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:  # a short step far from t = 0: the floats between lo and hi ran out
+            break
+        if (event(mid, at(mid)) <= 0.0) == below:
+            lo = mid
+        else:
+            hi = mid
+    return Integration(at(hi), trajectory, counter[0], hi)
