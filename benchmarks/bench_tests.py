@@ -2,7 +2,8 @@
 
 Run: .venv/bin/python benchmarks/bench_tests.py [--split]
 
-Runs ``python -m pytest -q`` (the Makefile's ``make test`` after the install; two xdist workers
+Prints the CPU of a fixed pure-Python loop (the machine's calibration), then runs
+``python -m pytest -q`` (the Makefile's ``make test`` after the install; two xdist workers
 from pyproject.toml) in the repository and prints the tests counted, the wall time and the user
 and system CPU of the run and its workers (``resource.getrusage(RUSAGE_CHILDREN)``, what
 ``/usr/bin/time`` reports). With ``--split`` the tests run with the plugin
@@ -52,11 +53,24 @@ def _split(folder: Path, total: float) -> None:
     print(f"  what no test counts (start-up, imports, collection of the pytest processes): {total - tested:.1f} s")
 
 
+def reference_cpu() -> float:
+    """The best CPU time of three runs of a fixed pure-Python loop [s]: the interpreter's speed on
+    this machine, to which the suite's CPU is roughly proportional (its tests are mostly Python),
+    so that runs on different days' machines can be compared."""
+    times = []
+    for _ in range(3):
+        start = time.process_time()
+        sum(i * i % 7 for i in range(2_000_000))
+        times.append(time.process_time() - start)
+    return min(times)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--split", action="store_true", help="also the CPU by groups of tests (cpu_per_test.py)")
     split = parser.parse_args().split
     print(f"machine: {machine()}")
+    print(f"reference loop: {reference_cpu():.3f} s of CPU")
     with tempfile.TemporaryDirectory() as folder:
         command, environment = [sys.executable, "-m", "pytest", "-q"], dict(os.environ)
         if split:
