@@ -24,7 +24,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from timing import machine
+from timing import best_of, machine
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -57,12 +57,7 @@ def reference_cpu() -> float:
     """The best CPU time of three runs of a fixed pure-Python loop [s]: the interpreter's speed on
     this machine, to which the suite's CPU is roughly proportional (its tests are mostly Python),
     so that runs on different days' machines can be compared."""
-    times = []
-    for _ in range(3):
-        start = time.process_time()
-        sum(i * i % 7 for i in range(2_000_000))
-        times.append(time.process_time() - start)
-    return min(times)
+    return best_of(lambda: sum(i * i % 7 for i in range(2_000_000)), 3, time.process_time)
 
 
 def main() -> None:

@@ -8,8 +8,8 @@ the same book (sec. II.4: safety 0.9, step factor between 0.2 and 10, the error 
 -1/8), as scipy's ``solve_ivp(method="DOP853")`` runs it; the tableau is the one scipy
 publishes as the attributes of its ``scipy.integrate.DOP853`` class. The difference is
 the arithmetic: a state of three numbers is stepped in plain floats, not in numpy arrays
-of three elements, whose every operation costs a microsecond of dispatch (scipy's own
-stepper spent three quarters of `pumpjack dynamics` in that overhead). The continuous
+of three elements, whose every operation costs a microsecond of dispatch (with scipy's
+stepper one periodic solve took about twice as long: docs/performance.md). The continuous
 extension is made only when it is asked for, so that the shots of a shooting that are not
 kept never pay its three extra stages.
 """
@@ -113,31 +113,27 @@ class Trajectory:
         """The state at any t of the last step (its coefficients made once; for an event's root)."""
         start, h, y, y_new, columns = self._steps[-1]
         coefficients = self._coefficients(start, h, y, y_new, columns)
-
-        def at(t: float) -> list[float]:
-            x = (t - start) / h
-            out = []
-            for y0, f in zip(y, coefficients):
-                acc = 0.0
-                for i, fi in enumerate(reversed(f)):
-                    acc = (acc + fi) * (x if i % 2 == 0 else 1.0 - x)
-                out.append(y0 + acc)
-            return out
-
-        return at
+        table = (np.array([start]), np.array([h]), np.array([y]), np.array([coefficients]))
+        return lambda t: _dense(*table, np.array([t]))[:, 0].tolist()
 
     def __call__(self, t: np.ndarray) -> np.ndarray:
         """The states at ``t`` (any shape (N,)), shape (states, N)."""
-        starts, lengths, states, coefficients = self._tabled()
-        t = np.asarray(t, dtype=float)
-        i = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, starts.size - 1)
-        x = ((t - starts[i]) / lengths[i])[:, None]
-        f = coefficients[i]
-        acc = np.zeros((t.size, states.shape[1]))
-        for n in range(f.shape[2] - 1, -1, -1):
-            acc += f[:, :, n]
-            acc *= x if (f.shape[2] - 1 - n) % 2 == 0 else 1.0 - x
-        return (states[i] + acc).T
+        return _dense(*self._tabled(), np.asarray(t, dtype=float))
+
+
+def _dense(starts: np.ndarray, lengths: np.ndarray, states: np.ndarray, coefficients: np.ndarray,
+           t: np.ndarray) -> np.ndarray:
+    """The continuous extension at ``t`` (N,) from the steps' starts, lengths, start states and
+    coefficients F_0 .. F_6 (steps, states, 7): y0 + x(F0 + (1-x)(F1 + x(F2 + (1-x)(...)))),
+    x the fraction of the step ([HairerNorsettWanner1993] sec. II.6); shape (states, N)."""
+    i = np.clip(np.searchsorted(starts, t, side="right") - 1, 0, starts.size - 1)
+    x = ((t - starts[i]) / lengths[i])[:, None]
+    f = coefficients[i]
+    acc = np.zeros((t.size, states.shape[1]))
+    for n in range(f.shape[2] - 1, -1, -1):
+        acc += f[:, :, n]
+        acc *= x if n % 2 == 0 else 1.0 - x
+    return (states[i] + acc).T
 
 
 @dataclass(frozen=True)
@@ -181,14 +177,17 @@ def integrate(rhs: RightHandSide, t0: float, t1: float, y0: Sequence[float], rto
     ------
     DynamicsError
         When the step size falls below ten spacings of floating-point numbers at t (a
-        singular right-hand side) or a state is not finite.
+        singular right-hand side), a state is not finite or the right-hand side divides by zero.
     """
     tab = _tableau()
     counter = [0]
 
     def counted(t: float, y: Sequence[float]) -> Sequence[float]:
         counter[0] += 1
-        return rhs(t, y)
+        try:
+            return rhs(t, y)
+        except ZeroDivisionError:  # plain floats raise where numpy's arrays would give inf
+            raise DynamicsError(f"the equation of motion divides by zero at {t:.10g}") from None
 
     trajectory = Trajectory(counted, counter)
     t, y = float(t0), [float(v) for v in y0]
@@ -230,18 +229,18 @@ def integrate(rhs: RightHandSide, t0: float, t1: float, y0: Sequence[float], rto
         if event is not None:
             g_new = event(t_new, y_new)
             if (g <= 0.0 <= g_new) or (g >= 0.0 >= g_new):
-                return _stopped(trajectory, event, t, t_new, counter)
+                return _stopped(trajectory, event, t, t_new, g <= 0.0, counter)
             g = g_new
         t, y, f = t_new, y_new, f_new
     return Integration(y, trajectory, counter[0], None)
 
 
 def _stopped(trajectory: Trajectory, event: Callable[[float, Sequence[float]], float], t: float, t_new: float,
-             counter: list[int]) -> Integration:
-    """The event's root in the last step, by bisection on its dense solution."""
+             below: bool, counter: list[int]) -> Integration:
+    """The event's root in the last step, by bisection on its dense solution (``below``: the
+    event is <= 0 at the step's start)."""
     at = trajectory.in_last_step()
     lo, hi = t, t_new
-    below = event(lo, at(lo)) <= 0.0
     while hi - lo > 1e-12 * (t_new - t):
         mid = 0.5 * (lo + hi)
         if not lo < mid < hi:  # a short step far from t = 0: the floats between lo and hi ran out

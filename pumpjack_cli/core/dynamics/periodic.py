@@ -311,9 +311,6 @@ class _Shooter:
             try:
                 sol = integrate(rhs, stroke.start, stroke.start + stroke.travel, y, self.integration_rtol, self.atol,
                                 event=lambda theta, y: y[0] - floor)
-            except ZeroDivisionError:
-                raise DynamicsError(f"the crank stops when the upstroke starts at {omega0:.6g} 1/s: "
-                                    f"the motor cannot turn the unit") from None
             except DynamicsError as e:
                 raise DynamicsError(f"integration failed from omega1 = {omega0:.6g} 1/s: {e}") from None
             self.evaluations += sol.evaluations

@@ -108,3 +108,9 @@ def test_blow_up_is_an_error_not_a_number():
     """y' = y^2, y(0) = 1: y = 1/(1 - t) is infinite at t = 1; integrating past it must fail."""
     with pytest.raises(DynamicsError):
         integrate(lambda t, y: (y[0] * y[0],), 0.0, 2.0, [1.0], 1e-8, [1e-8])
+
+
+def test_division_by_zero_in_the_right_hand_side_is_an_error():
+    """Plain floats raise where numpy would give inf: y' = 1/y from y = 0 is refused by name."""
+    with pytest.raises(DynamicsError, match="divides by zero at 0"):
+        integrate(lambda t, y: (1.0 / y[0],), 0.0, 1.0, [0.0], 1e-8, [1e-8])
