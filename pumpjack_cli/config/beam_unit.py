@@ -21,7 +21,7 @@ from ..quantities import parse_quantity
 from .drive import Drive
 from .letters import BeamLetters
 from .masses import Masses
-from .unit_classes import UNIT_CLASSES, unit_class
+from .unit_classes import UNIT_CLASSES, designation_types, unit_class
 from .well import Well
 if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.beam.card import Card
@@ -200,7 +200,7 @@ class UnitConfig(Section):
     def _designation(cls, text: str | None) -> str | None:
         if text is not None:
             try:
-                parse_designation(text)
+                parse_designation(text, designation_types())
             except DesignationError as exc:
                 raise ValueError(str(exc)) from None
         return text
@@ -311,7 +311,7 @@ class UnitConfig(Section):
 
         text = self.designation if self.designation is not None else self.name
         try:
-            designation = parse_designation(text)
+            designation = parse_designation(text, designation_types())
         except DesignationError:
             designation = None  # a name that is no designation (a validated designation parses)
 

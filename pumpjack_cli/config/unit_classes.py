@@ -2,7 +2,8 @@
 
 Each kind is a schema module under :mod:`pumpjack_cli.config` whose ``[geometry]`` model
 builds the kind's mechanism (``mechanism()``, a :class:`~pumpjack_cli.core.mechanism.Mechanism`),
-the API 11E designation letters that name it (``C-228D-213-86`` is conventional), and the
+the designation letters that name it (``C-228D-213-86`` is conventional; a maker's own
+letters, such as Lufkin's RM, are declared here and nowhere else), and the
 exact stroke of a raw ``[geometry]`` table computed without pydantic (``pumpjack units``).
 Adding a kind is its mechanism module in :mod:`pumpjack_cli.core.beam` (unless it shares
 one), its schema module here, and one line in :data:`UNIT_CLASSES`
@@ -20,7 +21,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from ..core.designations import API_CLASSES
+from ..core.designations import API_TYPES
 from .geometry_names import linkage_of
 
 
@@ -50,16 +51,21 @@ def four_bar_stroke(geometry: dict) -> float:
 UNIT_CLASSES: dict[str, UnitClass] = {
     "conventional": UnitClass("conventional:ConventionalGeometry", ("C",), four_bar_stroke),
     "mark-ii": UnitClass("mark_ii:MarkIIGeometry", ("M",), four_bar_stroke),
-    "reverse-mark": UnitClass("reverse_mark:ReverseMarkGeometry", ("RM",), four_bar_stroke),
+    "reverse-mark": UnitClass("reverse_mark:ReverseMarkGeometry", ("RM",), four_bar_stroke),  # [LufkinRM]
     "air-balanced": UnitClass("air_balanced:AirBalancedGeometry", ("A",), four_bar_stroke),
     "beam-balanced": UnitClass("beam_balanced:BeamBalancedGeometry", ("B",), four_bar_stroke),
 }
 DEFAULT_CLASS = "conventional"
 
 
+def designation_types() -> dict[str, str]:
+    """The designation letters of every kind and the kind each names
+    (:func:`pumpjack_cli.core.designations.parse_designation`'s ``types``)."""
+    return {letter: name for name, kind in UNIT_CLASSES.items() for letter in kind.letters}
+
+
 def _designation_class(designation: str | None) -> str | None:
-    """The kind an API designation's letters name (the longest letter prefix wins), None for a
-    GOST designation or none.
+    """The kind an API designation's type letters name, None for a GOST designation or none.
 
     >>> _designation_class("C-228D-213-86"), _designation_class("SK8-3,5-4000"), _designation_class(None)
     ('conventional', None, None)
@@ -67,12 +73,11 @@ def _designation_class(designation: str | None) -> str | None:
     if designation is None:
         return None
     head = designation.strip().upper().split("-", 1)[0].strip()
-    found = [(len(letter), name) for name, kind in UNIT_CLASSES.items() for letter in kind.letters
-             if head == letter]
-    if found:
-        return max(found)[1]
-    if head in API_CLASSES:
-        raise ValueError(f"the designation {designation!r} names a {API_CLASSES[head]} unit, a kind of unit this "
+    types = designation_types()
+    if head in types:
+        return types[head]
+    if head in API_TYPES:
+        raise ValueError(f"the designation {designation!r} names a {API_TYPES[head]} unit, a kind of unit this "
                          f"version does not model (kinds: {', '.join(UNIT_CLASSES)})")
     return None
 

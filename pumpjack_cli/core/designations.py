@@ -6,7 +6,9 @@ it at no start-up cost.
 API Spec 11E ([API11E]; [Guo2007] p. 12/163; [PetroWikiUnits]), e.g. ``C-228D-213-86``:
 
 * first field, the unit type: C conventional (crank-balanced, class I lever), M Mark II,
-  A air-balanced, B beam-balanced ([Guo2007]: "B is for beam counterbalance units");
+  A air-balanced, B beam-balanced ([Guo2007]: "B is for beam counterbalance units"); a
+  maker's own letters (Lufkin's RM for reverse-mark units, [LufkinRM]) are declared by the
+  unit kind that models them and passed in as ``types``;
 * second field, the gear-reducer (gearbox) peak torque rating in thousands of lbf·in,
   followed by D for a double-reduction reducer ([Guo2007]); no other letter is defined
   in the sources read, so a field without a letter has ``reduction = None`` (not
@@ -34,6 +36,7 @@ g_n = 9.80665 m/s² ([BIPM2019]).
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ..errors import DesignationError
@@ -46,13 +49,15 @@ INCH = 0.0254
 API = "API Spec 11E"
 GOST = "GOST 5866-76"
 
-#: API Spec 11E unit-type letters ([Guo2007] p. 12/163), and RM for Lufkin's reverse-mark units ([LufkinRM]).
-API_CLASSES = {"C": "conventional", "M": "Mark II", "A": "air-balanced", "B": "beam-balanced", "RM": "reverse-mark"}
+#: API Spec 11E unit-type letters ([Guo2007] p. 12/163) and the kinds they name (the ``[geometry] class``
+#: of a unit file). A maker's own letters (RM, Lufkin's reverse-mark) are declared by the kind that
+#: models them (:data:`pumpjack_cli.config.unit_classes.UNIT_CLASSES`), which passes its letters here.
+API_TYPES = {"C": "conventional", "M": "mark-ii", "A": "air-balanced", "B": "beam-balanced"}
 
 _DASH = r"\s*[-\u2013\u2014]+\s*"
 _NUMBER = r"[0-9]+(?:[.,][0-9]+)?"
 _API = re.compile(
-    rf"^(?P<cls>RM|[A-Z]){_DASH}(?P<reducer>(?P<prefix>P?)(?P<torque>{_NUMBER})(?P<letter>[A-Z]?))"
+    rf"^(?P<cls>[A-Z]{{1,2}}){_DASH}(?P<reducer>(?P<prefix>P?)(?P<torque>{_NUMBER})(?P<letter>[A-Z]?))"
     rf"{_DASH}(?P<structure>{_NUMBER}){_DASH}(?P<stroke>{_NUMBER})$",
     re.IGNORECASE,
 )
@@ -87,9 +92,9 @@ class Designation:
     ``gearbox_torque`` [N·m]: peak torque rating of the gear reducer (output shaft);
     ``structure_load`` [N]: largest polished-rod load of the structure;
     ``max_stroke`` [m]: largest polished-rod stroke; ``family``: ``API Spec 11E`` or
-    ``GOST 5866-76``; ``unit_class``: conventional, Mark II, air-balanced or
-    beam-balanced (GOST 5866-76 SK units are rear-mounted class I units, reported as
-    conventional); ``reduction``: ``double`` when the API reducer field ends in D, None
+    ``GOST 5866-76``; ``unit_class``: the kind the type letters name (conventional, mark-ii,
+    air-balanced, beam-balanced, or a maker's kind such as reverse-mark; GOST 5866-76 SK
+    units are rear-mounted class I units, reported as conventional); ``reduction``: ``double`` when the API reducer field ends in D, None
     when not stated; ``reducer_code``: the API reducer field as printed; ``series``: the
     number before SK of a GOST designation (meaning unknown, see the module notes).
     """
@@ -112,10 +117,11 @@ def _positive(text: str, value: str, quantity: str) -> float:
     return number
 
 
-def _api(text: str, match: re.Match) -> Designation:
+def _api(text: str, match: re.Match, types: Mapping[str, str]) -> Designation:
     letter = match["cls"].upper()
-    if letter not in API_CLASSES:
-        raise DesignationError(f"unit designation {text!r}: unknown API unit type {match['cls']!r}; {EXPECTED}")
+    if letter not in types:
+        raise DesignationError(f"unit designation {text!r}: unknown API unit type {match['cls']!r} "
+                               f"(types: {', '.join(types)}); {EXPECTED}")
     reduction_letter = match["letter"].upper()
     if reduction_letter not in ("", "D"):
         raise DesignationError(
@@ -127,7 +133,7 @@ def _api(text: str, match: re.Match) -> Designation:
     return Designation(
         text=text,
         family=API,
-        unit_class=API_CLASSES[letter],
+        unit_class=types[letter],
         gearbox_torque=_positive(text, match["torque"], "reducer rating") * 1e3 * POUND_FORCE * INCH,
         structure_load=_positive(text, match["structure"], "structure rating") * 100.0 * POUND_FORCE,
         max_stroke=_positive(text, match["stroke"], "maximum stroke") * INCH,
@@ -153,7 +159,7 @@ def _gost(text: str, match: re.Match) -> Designation:
     )
 
 
-def parse_designation(text: str) -> Designation:
+def parse_designation(text: str, types: Mapping[str, str] = API_TYPES) -> Designation:
     """The ratings of an API Spec 11E or GOST 5866-76 unit designation, in SI.
 
     Parameters
@@ -161,6 +167,10 @@ def parse_designation(text: str) -> Designation:
     text : str
         The designation, e.g. ``C-228D-213-86``, ``M-912D-427-192``, ``SK8-3,5-4000``,
         ``7СК12-2,5-5600``.
+    types : mapping of str to str
+        The unit-type letters of an API designation (upper case) and the kind each names;
+        API 11E's own by default, the unit kinds' (:mod:`pumpjack_cli.config.unit_classes`)
+        when a unit file is read.
 
     Returns
     -------
@@ -197,7 +207,7 @@ def parse_designation(text: str) -> Designation:
     stripped = text.strip()
     match = _API.match(stripped)
     if match:
-        return _api(stripped, match)
+        return _api(stripped, match, types)
     match = _GOST.match(stripped)
     if match:
         return _gost(stripped, match)

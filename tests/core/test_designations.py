@@ -12,7 +12,7 @@ import sys
 
 import pytest
 
-from pumpjack_cli.core.designations import API, GOST, Designation, parse_designation
+from pumpjack_cli.core.designations import API, API_TYPES, GOST, Designation, parse_designation
 from pumpjack_cli.errors import DesignationError, PumpjackError
 
 from helpers import INCH, KILOGRAM_FORCE, POUND_FORCE
@@ -36,7 +36,7 @@ def test_guo2007_example_c_228d_213_86():
 
 @pytest.mark.parametrize("text, cls, torque_kin, structure_100, stroke_in", [
     ("C-456D-305-144", "conventional", 456, 305, 144),
-    ("M-912D-427-192", "Mark II", 912, 427, 192),
+    ("M-912D-427-192", "mark-ii", 912, 427, 192),
     ("A-1280D-470-240", "air-balanced", 1280, 470, 240),
     ("B-40D-89-42", "beam-balanced", 40, 89, 42),
     ("C-6.4-32-16", "conventional", 6.4, 32, 16),
@@ -49,9 +49,18 @@ def test_api_classes_and_ratings(text, cls, torque_kin, structure_100, stroke_in
     assert d.max_stroke == pytest.approx(stroke_in * INCH, rel=1e-12)
 
 
-def test_mark_ii_parses_so_the_command_can_refuse_it():
-    """The command, not the parser, decides that Mark II is not supported yet."""
-    assert parse_designation("M-912D-427-192").unit_class == "Mark II"
+def test_a_makers_letters_parse_only_where_a_kind_declares_them():
+    """API 11E defines C, M, A and B; Lufkin's RM (reverse-mark, [LufkinRM]) is declared once,
+    by its unit kind in config/unit_classes.py, and the parser reads the letters it is given."""
+    from pumpjack_cli.config.unit_classes import designation_types, unit_class
+
+    with pytest.raises(DesignationError, match="unknown API unit type 'RM'"):
+        parse_designation("RM-640D-365-168")
+    d = parse_designation("rm-640D-365-168", designation_types())
+    assert d.unit_class == "reverse-mark" == unit_class({}, "RM-640D-365-168")
+    assert d.gearbox_torque == pytest.approx(640_000 * LBF_IN, rel=1e-12)
+    assert parse_designation("Q-1-2-3", {"Q": "a kind of one's own"}).unit_class == "a kind of one's own"
+    assert {letter: designation_types()[letter] for letter in "CMAB"} == API_TYPES
 
 
 def test_guo2007_table_12_1_prefixed_reducer_and_printed_dashes():

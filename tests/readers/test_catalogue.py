@@ -390,7 +390,7 @@ def test_the_listing_refuses_letters_that_cannot_assemble(tmp_path):
 
 
 @pytest.mark.parametrize(("row", "column", "message"), [
-    (GOOD.replace("C-80D", "M-80D"), "designation", "the designation 'M-80D-133-48' names a Mark II unit"),
+    (GOOD.replace("C-80D", "M-80D"), "designation", "the designation 'M-80D-133-48' names a mark-ii unit"),
     (GOOD.replace(",1,cw,", ",1,shaped,cw,"), "class", "class 'shaped' is not a kind of unit"),
 ])
 def test_a_kind_the_registry_lacks_is_refused_by_the_listing_and_the_schema(tmp_path, monkeypatch, row, column,
