@@ -126,14 +126,23 @@ def test_the_seed_papers_have_entries():
 
 @pytest.mark.parametrize("path", documents(), ids=rel)
 def test_every_cited_key_has_an_entry(path):
-    missing = keys_in(prose(path)) - bibliography()
+    # A Python file's prose is tokens of its text, and no key can start or end at a token's edge
+    # (strings begin and end with quotes, comments with # and the line's end), so its keys are
+    # among those of the whole text: the tokens are read only when the text has a missing key.
+    missing = keys_in(path.read_text(encoding="utf-8")) - bibliography()
+    if missing and path.suffix == ".py":
+        missing = keys_in(python_prose(path)) - bibliography()
     assert not missing, f"{rel(path)} cites {sorted(missing)} without an entry in docs/references.md"
 
 
 def test_the_citations_are_found_at_all():
     # Guards the test above against a pattern that silently matches nothing.
-    cited = set().union(*(keys_in(prose(path)) for path in documents()))
-    assert {"SK8Rotation2013", "Spatial7SK12", "InertiaUNB600A", "PopovychSenchishak", "API11E"} <= cited
+    expected, cited = {"SK8Rotation2013", "Spatial7SK12", "InertiaUNB600A", "PopovychSenchishak", "API11E"}, set()
+    for path in documents():
+        cited |= keys_in(prose(path))
+        if expected <= cited:
+            break
+    assert expected <= cited
 
 
 # --- no seed numbers -------------------------------------------------------------------
