@@ -309,8 +309,9 @@ SECTIONS: tuple[Section, ...] = (
           "off the crank pins, downward positive", "B"),
         E("counterbalance_moment", "torque", "present counterbalance: largest moment of cranks and counterweights",
           "M"),
-        E("crank_offset", "angle", "crank offset: the lag of the counterweights' resultant behind the crank pin "
-          "(class I), its lead ahead of the crank's tail (class III, docs/conventions.md)", "τ"),
+        E("crank_offset", "angle", "crank offset: the lead of the counterweights' resultant ahead of the crank pin "
+          "(class I) or of the crank's tail (class III), in the direction of rotation; negative a lag "
+          "(docs/conventions.md)", "τ"),
         E("beam_counterweight", "force", "present weight of the beam counterweight (beam-balanced unit)", "W_cb"),
         E("beam_counterweight_arm", "length", "the beam counterweight's distance from the centre bearing along "
           "the beam, towards the well positive"),
@@ -323,9 +324,9 @@ SECTIONS: tuple[Section, ...] = (
         E("air_exponent", "ratio", "polytropic exponent of the air cylinder's gas", "n"),
         E("counterbalance_effect", "force", "present counterbalance effect: the polished-rod load the "
           "structure and counterbalance hold with the cranks horizontal on the upstroke (90°, a Mark II's 270°): "
-          "−(T_s + T_c)/TF there; for class I crank counterweights B + M sin(90° − τ)/TF(90°)", "CBE"),
+          "−(T_s + T_c)/TF there; for class I crank counterweights B + M sin(90° + τ)/TF(90°)", "CBE"),
         E("structural_torque", "torque", "torque of the structural unbalance, −TF B", "−TF B"),
-        E("counterbalance_torque", "torque", "torque of the counterbalance: crank counterweights −M sin(θ − τ) "
+        E("counterbalance_torque", "torque", "torque of the counterbalance: crank counterweights −M sin(θ + τ) "
           "(class III: +M sin(θ + τ)), a beam counterweight or an air cylinder through TF", "T_c"),
         E("articulating_inertia_torque", "torque", "inertia torque of the beam group (through TF) ([Takacs2016])"),
         E("rotary_inertia_torque", "torque", "inertia torque of cranks and counterweights, I_r α ([Takacs2016])"),

@@ -39,7 +39,7 @@ PAGE = REPO / "docs" / "units.md"
 #: The kinds drawn, in the page's order: (kind, bundled unit name or a file the page shows).
 UNITS = (
     ("conventional", "c-114d-133-54"),
-    ("reverse-mark", "reverse-mark-example.toml"),
+    ("reverse-mark", "rm-640d-365-168.toml"),
     ("beam-balanced", "beam-balanced-example.toml"),
     ("mark-ii", "m-912d-365-168"),
     ("air-balanced", "air-balanced-example"),
@@ -198,7 +198,7 @@ class Drawing:
         reference = theta + math.pi if balance.tail else theta   # the tail (class III) or the pin (class I)
         if balance.tail:
             self.line(O, O + 0.95 * R * self.direction(reference), width=1.6 * 1.4)
-        resultant = reference + tau if balance.tail else reference - tau
+        resultant = reference + tau   # tau: the lead ahead of the pin or the tail, in the rotation
         where = O + 0.78 * R * self.direction(resultant)
         self.ax.plot(*where, "o", ms=11, color=BALANCE, zorder=5)
         self.ax.annotate("", xy=where - np.array([0, 0.45 * R]), xytext=where,

@@ -159,7 +159,8 @@ class CounterbalanceConfig(Section):
     moment: Torque | None = Field(
         default=None, ge=0, le=1e7, description="M: largest moment of cranks and counterweights about the shaft [N·m]")
     phase: Angle = Field(default=0.0, gt=-math.pi, le=math.pi,
-                         description="tau: crank offset angle, 0 for conventional units [rad]")
+                         description="tau: crank offset angle, the lead of the counterweights' resultant ahead "
+                         "of the crank pin in the direction of rotation; 0 for conventional units [rad]")
     counterbalance_effect: Force | None = Field(
         default=None, ge=0, le=1e7,
         description="CBE: the polished-rod load the counterbalance holds at counterbalance_effect_angle, as a crew "

@@ -72,9 +72,10 @@ class PhasedCrankGeometry(BeamLetters):
     reverse-mark): ``crank_offset`` and the counterweights it places."""
 
     crank_offset: Angle = Field(
-        ge=-1.0, le=1.0, description="tau: crank offset angle as catalogues print it: on class I units the lag of "
-        "the counterweights behind the crank pin in T = TF (W - B) - M sin(theta - tau), on class III units their "
-        "lead ahead of the crank's tail in T = TF (W - B) + M sin(theta + tau) (docs/units.md) [rad]")
+        ge=-1.0, le=1.0, description="tau: crank offset angle as catalogues print it, the lead of the "
+        "counterweights' resultant ahead of the arm they ride on, in the direction of rotation (negative: a lag): "
+        "on class I units ahead of the crank pin in T = TF (W - B) - M sin(theta + tau), on class III units ahead "
+        "of the crank's tail in T = TF (W - B) + M sin(theta + tau) (docs/units.md) [rad]")
 
     def counterbalance(self, given: CounterbalanceConfig | None, masses: MassModel | None) -> tuple[Counterbalance, bool]:
         """Crank counterweights with the crank offset (:func:`crank_counterweights`)."""

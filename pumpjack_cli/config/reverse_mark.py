@@ -1,11 +1,11 @@
 """Schema of the ``[geometry]`` of a reverse-mark (phased-crank) unit: a class I lever with phased counterweights.
 
-Conventional geometry with the rear working centre shifted forward ([LufkinRM]: the crank
-shaft towards the well from under the equalizer, I < C, which makes the clockwise upstroke
-take less than half a turn; ``docs/units.md`` says what could not be checked), the
-counterweights offset from the crank pin by the crank offset angle tau, turning clockwise
-with the well to the right only ([LufkinRM]); the four-bar is
-:class:`~pumpjack_cli.core.beam.geometry.Linkage`.
+Conventional geometry with the rear working centre shifted forward ([LufkinRM]: the
+equalizer bearing towards the well from above the crank shaft, C < I in every reverse-mark row
+of [UnitDatabase2018], which makes the clockwise upstroke take more than half a turn), the
+counterweights offset from the crank pin by the crank offset angle tau (negative in
+catalogues: a lag), turning clockwise with the well to the right only ([LufkinRM]); the
+four-bar is :class:`~pumpjack_cli.core.beam.geometry.Linkage`.
 """
 
 from __future__ import annotations

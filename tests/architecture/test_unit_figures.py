@@ -83,9 +83,9 @@ def test_each_kind_has_a_small_figure_on_the_page(script):
 
 def test_the_page_files_are_read_as_the_kinds_they_show(script):
     files = script.page_files(PAGE.read_text(encoding="utf-8"))
-    assert {"reverse-mark-example.toml", "beam-balanced-example.toml", "mark-ii-letters-as-class-i.toml"} <= set(files)
+    assert {"rm-640d-365-168.toml", "beam-balanced-example.toml", "mark-ii-letters-as-class-i.toml"} <= set(files)
     kinds = {name: script.load(name).geometry.unit_class for name in files}
-    assert kinds["reverse-mark-example.toml"] == "reverse-mark"
+    assert kinds["rm-640d-365-168.toml"] == "reverse-mark"
     assert kinds["beam-balanced-example.toml"] == "beam-balanced"
     assert kinds["mark-ii-letters-as-class-i.toml"] == "conventional"
 

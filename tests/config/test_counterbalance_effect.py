@@ -54,9 +54,9 @@ def test_a_measured_effect_gives_the_torque_of_the_equivalent_moment(tmp_path, r
     mechanism = unit.geometry.mechanism()
     balance, _ = unit.counterbalance_model()
     test = mechanism.motion(np.array([math.radians(angle_deg)]))
-    # forward: B + M sin(theta - tau) / TF
+    # forward: B + M sin(theta + tau) / TF
     tf = float(test.torque_factor[0])
-    cbe = balance.structural_unbalance + balance.moment * math.sin(math.radians(angle_deg) - balance.offset) / tf
+    cbe = balance.structural_unbalance + balance.moment * math.sin(math.radians(angle_deg) + balance.offset) / tf
     assert cbe == pytest.approx(counterbalance_effect(test, balance), rel=1e-12)
     written = _with_counterbalance(tmp_path, C80, "c80-cbe.toml",
                                    f'counterbalance_effect = "{cbe / POUND_FORCE!r} lbf"\n'

@@ -1,6 +1,7 @@
 """Validation of the kinematics against an operator's unit database ([UnitDatabase2018]): the
-conventional unit C-228D-213-86 (the unit of `pumpjack report`'s example) and the Mark II
-M-912D-365-168 of [LufkinM912], whose letters the database repeats independently.
+conventional unit C-228D-213-86 (the unit of `pumpjack report`'s example), the Mark II
+M-912D-365-168 of [LufkinM912], whose letters the database repeats independently, and seven
+Lufkin reverse-mark rows, with the sign of their crank offset.
 
 The database gives A = 111, C = 96.05, I = 96, K = 151.34 (the centre bearing to the crank
 shaft, so H - G = sqrt(K^2 - I^2)) and P = 114 in, four crank holes 37, 32, 27 and 22 in, and
@@ -12,11 +13,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.class_three import ClassThreeLinkage
+from pumpjack_cli.core.beam.counterbalance import Counterbalance
 from pumpjack_cli.core.beam.geometry import CLOCKWISE, COUNTERCLOCKWISE, Linkage
+from pumpjack_cli.core.rods.predict import predict_cards
 
 from helpers import INCH, POUND_FORCE
 
@@ -65,3 +69,75 @@ def test_the_mark_ii_first_hole_gives_the_stored_stroke():
     mark_ii = ClassThreeLinkage(front_arm=334.0, rear_arm=270.0, pitman=193.5, horizontal_offset=202.56,
                                 vertical_offset=vertical, crank_radius=63.56, rotation=COUNTERCLOCKWISE)
     assert mark_ii.stroke == pytest.approx(168.04, abs=0.01)
+
+
+#: Lufkin reverse-mark rows of the database: row, designation, A, C, I, K, P, the first hole's R [in],
+#: its stored stroke [in], B [lb] and the phase angle [deg] as stored. Rows 2058, 2060, 2061 and 2063
+#: (the C = 92 in structure) store K = 200.73 in, the next structure's: with it the unit cannot
+#: assemble (K + R > P + C), a slip, so they are left out.
+REVERSE_MARK = (
+    (2056, "RM-114D-119-74", 96.0, 73.0, 104.0, 147.08, 110.0, 25.75, 74.0, 140.0, -14.0),
+    (2057, "RM-228D-173-74", 89.0, 92.0, 127.0, 179.6, 134.0, 35.0, 74.0, 680.0, -14.0),
+    (2062, "RM-228D-213-120", 144.5, 103.0, 142.0, 200.73, 149.0, 39.0, 120.0, 40.0, -14.0),
+    (2076, "RM-456D-305-168", 202.0, 103.0, 142.0, 200.73, 149.0, 39.0, 168.0, -1580.0, -14.0),
+    (2078, "RM-456D-365-144", 178.0, 118.0, 153.0, 223.56, 171.0, 45.0, 144.3, -170.0, -9.0),
+    (2084, "RM-640D-305-192", 228.5, 118.0, 163.0, 230.51, 171.0, 45.0, 192.0, -1600.0, -12.0),
+    (2086, "RM-640D-365-168", 200.0, 118.0, 163.0, 230.51, 171.0, 45.0, 168.0, -695.0, -12.0),
+)
+
+
+def reverse_mark_file(row: tuple, well: str = "") -> str:
+    """The unit file of a reverse-mark row (lengths in inches), with an optional [well]."""
+    _, name, a, c, i, k, p, r, _, b, tau = row
+    return (f'name = "{name}"\ndesignation = "{name}"\n[geometry]\nclass = "reverse-mark"\nA = "{a} in"\n'
+            f'C = "{c} in"\nI = "{i} in"\nK = "{k} in"\nP = "{p} in"\nR = "{r} in"\nrotation = "clockwise"\n'
+            f'crank_offset = "{tau} deg"\n[counterbalance]\nstructural_unbalance = "{b} lbf"\n{well}')
+
+
+@pytest.mark.parametrize("row", REVERSE_MARK, ids=[row[1] for row in REVERSE_MARK])
+def test_a_reverse_mark_row_gives_its_stroke_and_a_long_clockwise_upstroke(tmp_path, row):
+    """The rear working centre shifted forward (C < I) and clockwise rotation, as [LufkinRM] runs
+    them: the exact stroke of the first hole within 0.25 in of the stored one (a nominal stroke,
+    rounded), and an upstroke of more than half a turn (about 186-194 deg is the usual
+    statement), as a Mark II's counterclockwise."""
+    path = tmp_path / "unit.toml"
+    path.write_text(reverse_mark_file(row), encoding="utf-8")
+    unit = load_unit(str(path))
+    assert unit.geometry.unit_class == "reverse-mark" and row[3] < row[4]
+    mechanism = unit.geometry.mechanism()
+    assert mechanism.stroke / INCH == pytest.approx(row[8], abs=0.25)
+    assert 185.0 < math.degrees(mechanism.dead_positions().upstroke_crank_travel) < 195.0
+
+
+def test_the_reverse_mark_offset_is_a_lag_where_the_balance_is_best(tmp_path):
+    """RM-640D-365-168 stores a phase angle of -12 deg. On a card predicted by the wave equation
+    (an illustrative 8000 ft well at 5 strokes/min), the moment with the least peak torque is found
+    for every offset from -40 to +40 deg: read as tau of T = TF (W - B) - M sin(theta + tau), a lead
+    of -12 deg (the counterweights lag the pin) is within 5 % of the least peak and the best offset
+    is a lag too; read the other way (+12 deg) the peak is more than 1.5 times larger. So the
+    class I tau is a lead and a catalogue's negative offset a lag (docs/conventions.md)."""
+    well = ('[well]\npump_depth = "8000 ft"\nplunger_diameter = "1.5 in"\n'
+            'rod_string = [{ diameter = "1 in", fraction = "45 %", grade = "D" }, '
+            '{ diameter = "0.875 in", fraction = "55 %", grade = "D" }]\n'
+            'fluid_density = "950 kg/m3"\npump_submergence = "300 ft"\ntubing_inner_diameter = "2.441 in"\n')
+    path = tmp_path / "rm.toml"
+    path.write_text(reverse_mark_file(REVERSE_MARK[-1], well), encoding="utf-8")
+    unit = load_unit(str(path))
+    balance, _ = unit.counterbalance_model()
+    assert balance.offset == pytest.approx(math.radians(-12.0)) and not balance.tail
+    mechanism = unit.geometry.mechanism()
+    cards = predict_cards(mechanism, 5.0 * math.pi / 30.0, unit.rods(), unit.pump(), damping=0.05,
+                          fluid_density=unit.well.fluid_density, samples=720)
+    motion = mechanism.motion(cards.crank_angle)
+    base = motion.torque_factor * cards.polished_rod_load + balance.structural_torque(motion)
+    moments = np.linspace(0.0, 3.0 * np.abs(base).max(), 1201)
+
+    def least_peak(offset_deg: float) -> float:
+        per_moment = Counterbalance(0.0, 1.0, math.radians(offset_deg)).counterbalance_torque(motion)
+        return float(np.abs(base[None, :] + moments[:, None] * per_moment[None, :]).max(axis=1).min())
+
+    offsets = np.arange(-40.0, 41.0, 2.0)
+    peaks = np.array([least_peak(t) for t in offsets])
+    assert offsets[np.argmin(peaks)] < 0.0
+    assert least_peak(-12.0) < 1.05 * peaks.min()
+    assert least_peak(12.0) > 1.5 * least_peak(-12.0)

@@ -232,7 +232,7 @@ def min_rms_moment(base: np.ndarray, sine: np.ndarray, weights: np.ndarray | Non
         raise TorqueError("minimum RMS torque: the weights must be finite, >= 0, one per crank angle")
     denominator = float(np.sum(w * sine * sine))
     if not denominator > 0:
-        raise TorqueError("minimum RMS torque: sin(theta - tau) vanishes at every crank angle given")
+        raise TorqueError("minimum RMS torque: sin(theta + tau) vanishes at every crank angle given")
     return float(np.sum(w * base * sine)) / denominator
 
 
@@ -284,7 +284,7 @@ def min_peak_moment(base: np.ndarray, sine: np.ndarray) -> float:
 
     scale = float(np.max(np.abs(sine)))
     if not scale > 0:
-        raise TorqueError("minimum peak torque: sin(theta - tau) vanishes at every crank angle given")
+        raise TorqueError("minimum peak torque: sin(theta + tau) vanishes at every crank angle given")
     lo, hi = 0.0, 2.0 * float(np.max(np.abs(base))) / scale
     if slope(lo) >= 0.0 or hi == 0.0:
         return 0.0
@@ -339,7 +339,7 @@ def recommend_counterbalance(criterion: str, linkage: Mechanism, crank_angle: np
 
     The net torque T(theta; x) = TF W + T_s + T_c(x) + T_extra is affine in the variable x,
     T_c(x) = c0 + x g (:class:`.counterbalance.CounterbalanceModel`; crank counterweights: T = TF (W - B) + T_extra -
-    M sin(theta - tau)); with base = TF W + T_s + c0 + T_extra and sine = -g, T = base - x sine:
+    M sin(theta + tau)); with base = TF W + T_s + c0 + T_extra and sine = -g, T = base - x sine:
 
     * ``equal-peaks``: the largest T of the upstroke equals that of the downstroke
       (:func:`equal_peaks_moment`);

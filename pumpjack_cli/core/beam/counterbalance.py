@@ -9,7 +9,7 @@ when the gearbox drives the crank in its direction of rotation (the sign of
 positive on the upstroke of a conventional unit; polished-rod load W positive pulling
 the horsehead down. The API net torque is then ([API11E]; [Rowlan2004] method 1)
 
-    T(theta) = TF(theta) (W(theta) - B) - M sin(theta - tau)
+    T(theta) = TF(theta) (W(theta) - B) - M sin(theta + tau)
 
 * B, structural unbalance [N]: the force that must act *downwards* at the polished rod
   to hold the walking beam level with the pitmans disconnected from the crank pins
@@ -19,18 +19,20 @@ the horsehead down. The API net torque is then ([API11E]; [Rowlan2004] method 1)
 * M, maximum counterbalance moment [N·m]: the gravity moment of both crank arms and all
   counterweights about the crank shaft when their resultant is horizontal.
 * tau, crank offset [rad]: the angle by which the resultant of crank arms and
-  counterweights *lags* the crank pin, measured against the direction of rotation;
-  0 when the counterweights sit on the crank arm in line with the pin (every
+  counterweights *leads* the crank pin, in the direction of rotation (negative when it
+  lags); 0 when the counterweights sit on the crank arm in line with the pin (every
   conventional unit). With the package's ``counterweight_phase`` phi (angle from the
-  pin to the blocks, *in* the direction of rotation) and no crank-arm mass, tau = -phi.
+  pin to the blocks, in the direction of rotation) and no crank-arm mass, tau = phi.
   Sources write the sign before tau differently (sin(theta - tau) or sin(theta + tau));
-  this module's definition is fixed by the geometry above and tested against the
-  spatial kinetostatics.
+  this one makes the offsets catalogues print well-balanced: a reverse-mark's -9 to -14
+  deg is a lag, and the lag is what lowers its peak torque (``docs/conventions.md``,
+  ``tests/validation/test_unitdatabase2018.py``); it is tested against the spatial
+  kinetostatics.
 
 The counterbalance term: the potential energy of crank arms and counterweights is
 V = g sum m_i r_i cos(theta + phi_i) (heights above the shaft), so the gearbox torque
-that holds them is dV/dtheta = -g sum m_i r_i sin(theta + phi_i) = -M sin(theta - tau)
-with M exp(-i tau) = g sum m_i r_i exp(i phi_i).
+that holds them is dV/dtheta = -g sum m_i r_i sin(theta + phi_i) = -M sin(theta + tau)
+with M exp(i tau) = g sum m_i r_i exp(i phi_i).
 """
 
 from __future__ import annotations
@@ -100,11 +102,11 @@ class Counterbalance(NamedTuple):
     (the balancing variable), crank offset tau [rad]; a :class:`CounterbalanceModel`.
 
     ``tail`` False (class I): the counterweights ride on the crank pin's arm and
-    T_c = -M sin(theta - tau), tau their lag behind the pin ([API11E]). ``tail`` True
-    (class III, Mark II): they ride on the crank's tail, the arm opposite the pin, and
-    T_c = +M sin(theta + tau), tau their lead ahead of the tail in the direction of rotation
-    (``docs/conventions.md``: the sign that makes a catalogue's positive Mark II offset the
-    well-balanced one).
+    T_c = -M sin(theta + tau), tau their lead ahead of the pin in the direction of rotation
+    ([API11E]). ``tail`` True (class III, Mark II): they ride on the crank's tail, the arm
+    opposite the pin, and T_c = +M sin(theta + tau), tau their lead ahead of the tail
+    (``docs/conventions.md``: the sign that makes the offsets catalogues print, a Mark II's
+    positive and a reverse-mark's negative one, the well-balanced ones).
 
     >>> import numpy as np
     >>> from pumpjack_cli.core.beam.geometry import Linkage
@@ -145,7 +147,7 @@ class Counterbalance(NamedTuple):
         return -motion.torque_factor * self.structural_unbalance
 
     def counterbalance_torque(self, motion: Motion) -> np.ndarray:
-        """-M sin(theta - tau), on the tail +M sin(theta + tau) [N·m] ([API11E]; [Rowlan2004])."""
+        """-M sin(theta + tau), on the tail +M sin(theta + tau) [N·m] ([API11E]; [Rowlan2004])."""
         return self.moment * self.torque_per_value(motion)
 
     def torque_per_value(self, motion: Motion) -> np.ndarray:
@@ -153,10 +155,9 @@ class Counterbalance(NamedTuple):
         return self.per_moment(motion.crank_angle)
 
     def per_moment(self, crank_angle: np.ndarray) -> np.ndarray:
-        """-sin(theta - tau), on the tail +sin(theta + tau) [-]."""
-        if self.tail:
-            return np.sin(crank_angle + self.offset)
-        return -np.sin(crank_angle - self.offset)
+        """-sin(theta + tau), on the tail +sin(theta + tau) [-]."""
+        wave = np.sin(crank_angle + self.offset)
+        return wave if self.tail else -wave
 
     def with_value(self, value: float) -> Counterbalance:
         """The counterweights with the moment M = ``value`` [N·m]."""
@@ -171,7 +172,7 @@ def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: f
     on a class I unit), the beam body and horsehead centres of mass at x_b, x_h, all
     measured from the centre bearing towards the well. M exp(i alpha) = g (2 m_a r_a + m_cw r_cw
     exp(i phi)): both crank arms in line with the pin, all counterweights at phase phi ahead of
-    it; tau = -alpha on a class I unit, and on a class III unit, whose counterweights ride on
+    it; tau = alpha on a class I unit, and on a class III unit, whose counterweights ride on
     the crank's tail, tau = alpha - pi, their lead ahead of the tail (:class:`Counterbalance`).
 
     Parameters
@@ -211,7 +212,7 @@ def counterbalance_from_masses(linkage: Mechanism, masses: MassModel, gravity: f
     y = weights * math.sin(masses.counterweight_phase)
     lead = math.atan2(y, x)     # the resultant's angle ahead of the pin, in the direction of rotation
     tail = linkage.lever_class == "III"
-    offset = (lead % (2.0 * math.pi)) - math.pi if tail else 0.0 - lead
+    offset = (lead % (2.0 * math.pi)) - math.pi if tail else lead
     return Counterbalance(-gravity * moment / linkage.horsehead_arm, gravity * math.hypot(x, y), offset, tail)
 
 
@@ -261,7 +262,7 @@ def counterbalance_effect(test: Motion, balance: CounterbalanceModel) -> float:
     at the test position.
 
     From T = TF W + T_s + T_c = 0 there: CBE = -(T_s + T_c) / TF, T_s and T_c the structure's
-    and counterbalance's gearbox torques; for crank counterweights CBE = B + M sin(theta_t -
+    and counterbalance's gearbox torques; for crank counterweights CBE = B + M sin(theta_t +
     tau) / TF(theta_t). The usual test position is the crank horizontal on the upstroke,
     theta_t = 90 deg ([Rowlan2004]).
 
@@ -305,7 +306,7 @@ def value_for_effect(test: Motion, balance: CounterbalanceModel, effect: float) 
 
     The counterbalance torque is affine in the variable v, T_c(v) = T_c(v0) + (v - v0) g, so
     from CBE TF = -(T_s + T_c(v)) at theta_t: v = v0 - (CBE TF + T_s + T_c(v0)) / g. For crank
-    counterweights (g = -sin(theta_t - tau)) this is M = (CBE - B) TF(theta_t) / sin(theta_t - tau),
+    counterweights (g = -sin(theta_t + tau)) this is M = (CBE - B) TF(theta_t) / sin(theta_t + tau),
     the moment a crew's measured CBE stands for ([Rowlan2004]; [API11E]).
 
     Parameters

@@ -5,9 +5,9 @@ load diagram, and the exact (spatial kinetostatic) method beside it.
 Sign conventions are those of :mod:`.counterbalance`: theta from 12 o'clock in the
 direction of rotation; T positive when the gearbox drives the crank forward; TF = A psi'
 (ds/dtheta); W positive pulling the horsehead down; B positive for a rear-heavy beam;
-tau the lag of the counterweight resultant behind the crank pin.
+tau the lead of the counterweight resultant ahead of the crank pin (negative: a lag).
 
-API net torque ([API11E]; [Rowlan2004] method 1): T = TF (W - B) - M sin(theta - tau).
+API net torque ([API11E]; [Rowlan2004] method 1): T = TF (W - B) - M sin(theta + tau).
 
 Decomposition with non-uniform crank speed ([Takacs2016]): crank speed omega(t) and
 acceleration alpha(t) from the card's time stamps (:func:`pumpjack_cli.core.cards.place_card`) or
@@ -15,7 +15,7 @@ from the machine's equation of motion (:mod:`pumpjack_cli.core.dynamics.periodic
 
 * rod-load torque TF W,
 * structural-unbalance torque -TF B,
-* counterbalance torque -M sin(theta - tau),
+* counterbalance torque -M sin(theta + tau),
 * articulating-inertia torque (TF / A) I_b psi_tt, with I_b the moment of inertia of the
   beam group (beam, horsehead, equalizer, and the pitmans lumped at the equalizer pins,
   as [Takacs2016] defines I_b) about the saddle bearing and psi_tt = psi'' omega^2 +
@@ -59,7 +59,7 @@ def _finite(name: str, *arrays: np.ndarray) -> None:
 
 def api_net_torque(crank_angle: np.ndarray, torque_factor: np.ndarray, rod_load: np.ndarray,
                    balance: Counterbalance) -> np.ndarray:
-    """Net gearbox torque T = TF (W - B) - M sin(theta - tau) [N·m] ([API11E]; [Rowlan2004]);
+    """Net gearbox torque T = TF (W - B) - M sin(theta + tau) [N·m] ([API11E]; [Rowlan2004]);
     on a class III crank (``balance.tail``) T = TF (W - B) + M sin(theta + tau).
 
     Parameters
@@ -168,7 +168,7 @@ def torque_components(linkage: Mechanism, crank_angle: np.ndarray, rod_load: np.
     Returns
     -------
     TorqueComponents
-        rod_load TF W, structural -TF B, counterbalance -M sin(theta - tau),
+        rod_load TF W, structural -TF B, counterbalance -M sin(theta + tau),
         articulating_inertia (TF/A) I_b (psi'' omega² + psi' alpha), rotary_inertia I_r alpha [N·m].
 
     References
@@ -199,7 +199,7 @@ def permissible_load(torque_factor: np.ndarray, counter_torque: np.ndarray,
     """Permissible load diagram: the polished-rod loads W_min, W_max [N] that keep |T| <= T_r.
 
     With T = TF W + T_c, T_c the gearbox torque of the structure and the counterbalance
-    (crank counterweights: T_c = -TF B - M sin(theta - tau)), |T| <= T_r gives for TF > 0
+    (crank counterweights: T_c = -TF B - M sin(theta + tau)), |T| <= T_r gives for TF > 0
     (-T_r - T_c)/TF <= W <= (T_r - T_c)/TF, and the bounds swap where TF < 0
     ([GaultSWPSC], from the definition). Where TF = 0 the load does not reach the gearbox:
     every W is allowed (W_min = -inf, W_max = +inf) if the counterbalance alone keeps

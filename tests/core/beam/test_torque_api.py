@@ -65,19 +65,19 @@ def test_counterbalance_moment_equals_kinetostatic_gravity_of_crank_group(name, 
     b, m, tau, _ = counterbalance_from_masses(spatial.planar, crank)
     assert b == 0.0
     exact = static_exact(spatial, crank, np.zeros_like(THETA))
-    assert np.max(np.abs(exact - (-m * np.sin(THETA - tau)))) <= 1e-9 * m
+    assert np.max(np.abs(exact - (-m * np.sin(THETA + tau)))) <= 1e-9 * m
     if phase == 0.0:
         assert tau == 0.0
         assert m == pytest.approx(G * (2 * masses.crank_arm_mass * masses.crank_arm_cg
                                        + masses.counterweight_mass * masses.counterweight_radius), rel=1e-15)
 
 
-def test_crank_offset_sign_is_the_lag_of_the_counterweights():
-    """Counterweights alone at phase phi ahead of the pin give tau = -phi (lag = -lead)."""
+def test_crank_offset_sign_is_the_lead_of_the_counterweights():
+    """Counterweights alone at phase phi ahead of the pin give tau = phi (a lag is negative)."""
     lk = load_unit("sk8-3.5-4000").geometry.mechanism()
     masses = dataclasses.replace(ZERO, counterweight_mass=1000.0, counterweight_radius=1.0, counterweight_phase=0.25)
     _, m, tau, _ = counterbalance_from_masses(lk, masses)
-    assert tau == pytest.approx(-0.25, abs=1e-15) and m == pytest.approx(1000.0 * G, rel=1e-15)
+    assert tau == pytest.approx(0.25, abs=1e-15) and m == pytest.approx(1000.0 * G, rel=1e-15)
 
 
 @pytest.mark.parametrize("name", BEAM_UNITS)
@@ -153,11 +153,12 @@ def test_methods_registry():
 
 
 def test_api_net_torque_by_hand():
-    """T = TF (W - B) - M sin(theta - tau) at three positions, evaluated here by hand."""
+    """T = TF (W - B) - M sin(theta + tau) at three positions, evaluated here by hand (tau = -10 deg,
+    a lag of 10 deg as a reverse-mark's catalogue prints it)."""
     theta = np.radians([30.0, 90.0, 200.0])
     tf = np.array([0.8, 1.3, -1.1])
     w = np.array([60e3, 55e3, 30e3])
-    bal = Counterbalance(500.0, 45e3, math.radians(10.0))
+    bal = Counterbalance(500.0, 45e3, math.radians(-10.0))
     expected = [0.8 * 59_500 - 45e3 * math.sin(math.radians(20)),
                 1.3 * 54_500 - 45e3 * math.sin(math.radians(80)),
                 -1.1 * 29_500 - 45e3 * math.sin(math.radians(190))]

@@ -64,7 +64,7 @@ def test_components_sum_and_static_limit():
     assert parts.net == pytest.approx(api_net_torque(THETA, tf, load(THETA), bal), rel=1e-13, abs=1e-9)
     assert parts.rod_load == pytest.approx(tf * load(THETA), rel=1e-15)
     assert parts.structural == pytest.approx(800.0 * tf, rel=1e-15)
-    assert parts.counterbalance == pytest.approx(-60e3 * np.sin(THETA - 0.1), rel=1e-15, abs=1e-9)
+    assert parts.counterbalance == pytest.approx(-60e3 * np.sin(THETA + 0.1), rel=1e-15, abs=1e-9)
 
 
 def test_articulating_inertia_is_the_rate_of_beam_kinetic_energy():

@@ -2,7 +2,7 @@
 the balance of each kind's own variable, and the upstroke each kind's rotation gives.
 
 Unit files are written here as TOML text with API letters (C-114D-133-54's letters of
-[Guo2007] for the class I kinds, with the crank shaft moved for the reverse-mark; the bundled
+[Guo2007] for the class I kinds, with the crank shaft moved back for the reverse-mark; the bundled
 M-912D-365-168 and the air-balanced example for class III), so each kind is read through the
 same schema and registry a user's file is.
 """
@@ -29,7 +29,7 @@ LETTERS = 'A = "72 in"\nC = "64 in"\nP = "74.5 in"\nH = "116 in"\nG = "41 in"\nR
 FILES = {
     "conventional": f'[geometry]\nclass = "conventional"\n{LETTERS}I = "64 in"\nrotation = "clockwise"\n'
                     '[counterbalance]\nstructural_unbalance = "330 lbf"\nmoment = "300000 lbf*in"\n',
-    "reverse-mark": f'[geometry]\nclass = "reverse-mark"\n{LETTERS}I = "56 in"\ncrank_offset = "-10 deg"\n'
+    "reverse-mark": f'[geometry]\nclass = "reverse-mark"\n{LETTERS}I = "72 in"\ncrank_offset = "-10 deg"\n'
                     '[counterbalance]\nstructural_unbalance = "330 lbf"\nmoment = "300000 lbf*in"\n',
     "beam-balanced": f'[geometry]\nclass = "beam-balanced"\n{LETTERS}I = "64 in"\nrotation = "counterclockwise"\n'
                      'beam_counterweight = "6000 lbf"\nbeam_counterweight_arm = "60 in"\n'
@@ -70,9 +70,10 @@ def test_torque_factor_is_the_derivative_of_the_rod_position(units, kind):
 
 def test_upstroke_travel_with_each_kinds_standard_rotation(units):
     # [LufkinMarkII]: the Mark II lifts over more than half a turn counterclockwise; the
-    # reverse-mark, its crank shaft shifted forward (I < C), over less clockwise ([LufkinRM])
+    # reverse-mark, its rear working centre shifted forward of the crank shaft (C < I, as in every
+    # reverse-mark row of [UnitDatabase2018]), also over more than half a turn, clockwise ([LufkinRM])
     assert units["mark-ii"].geometry.mechanism().dead_positions().upstroke_crank_travel > math.pi
-    assert units["reverse-mark"].geometry.mechanism().dead_positions().upstroke_crank_travel < math.pi
+    assert units["reverse-mark"].geometry.mechanism().dead_positions().upstroke_crank_travel > math.pi
 
 
 @pytest.mark.parametrize("kind", ["conventional", "reverse-mark", "mark-ii"])
