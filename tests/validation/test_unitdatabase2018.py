@@ -141,3 +141,29 @@ def test_the_reverse_mark_offset_is_a_lag_where_the_balance_is_best(tmp_path):
     assert offsets[np.argmin(peaks)] < 0.0
     assert least_peak(-12.0) < 1.05 * peaks.min()
     assert least_peak(12.0) > 1.5 * least_peak(-12.0)
+
+
+#: Lufkin Mark II rows: row, designation, A, C, I, K, P, the first hole's R [in] and its stroke as
+#: the database stores it, to two decimals (an exact stroke, not a nominal one).
+MARK_II = (
+    (2108, "M-114D-143-64", 189.0, 162.0, 111.0, 146.42, 107.93, 24.18, 64.1),
+    (2112, "M-114D-143-86", 189.0, 162.0, 111.0, 146.42, 112.18, 32.25, 86.03),
+    (2119, "M-114D-200-74", 222.0, 186.0, 124.0, 169.37, 130.5, 27.25, 73.96),
+    (2122, "M-160D-173-86", 222.0, 186.0, 124.0, 169.37, 135.75, 31.5, 86.05),
+    (2133, "M-228D-173-100", 312.0, 258.0, 186.0, 244.69, 173.75, 37.62, 100.0),
+    (2140, "M-228D-213-120", 312.0, 258.0, 186.0, 244.69, 173.75, 45.12, 120.02),
+    (2151, "M-320D-253-144", 312.0, 258.0, 186.0, 244.69, 182.37, 53.75, 144.08),
+    (2177, "M-456D-305-168", 334.0, 270.0, 202.56, 272.98, 193.5, 63.56, 168.05),
+)
+
+
+@pytest.mark.parametrize("row", MARK_II, ids=[row[1] for row in MARK_II])
+def test_a_mark_ii_row_gives_its_stored_stroke_and_a_long_counterclockwise_upstroke(row):
+    """Five Mark II structures, eight units: the exact class III stroke within 0.02 in of the
+    stored one (rounding of the letters and of the stroke), and counterclockwise an upstroke of
+    more than half a turn, 188-199 deg ([LufkinMarkII]: about 195 deg)."""
+    _, _, a, c, i, k, p, r, stored = row
+    mark_ii = ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
+                                vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=COUNTERCLOCKWISE)
+    assert mark_ii.stroke == pytest.approx(stored, abs=0.02)
+    assert 188.0 < math.degrees(mark_ii.dead_positions().upstroke_crank_travel) < 199.0
