@@ -36,6 +36,14 @@ class TorqueError(PumpjackError, ValueError):
     """Gearbox-torque, counterbalance or loading input that cannot give a result."""
 
 
+class BalanceError(TorqueError):
+    """A balance criterion that no value of the balancing variable meets on a card; ``note`` says why."""
+
+    def __init__(self, message: str, note: str) -> None:
+        super().__init__(message)
+        self.note = note
+
+
 class DownholeError(PumpjackError, ValueError):
     """A rod string or a dynamometer card the downhole (pump-card) calculation cannot use."""
 

@@ -134,6 +134,12 @@ class Result:
     panels: tuple[Panel, ...] = ()
     marks: tuple[Mark, ...] = ()
 
+    def __post_init__(self) -> None:
+        for kind, names in (("summary value", [s.name for s in self.summary]), ("column", [c.name for c in self.columns])):
+            twice = sorted({name for name in names if names.count(name) > 1})
+            if twice:
+                raise ValueError(f"{self.title!r}: the {kind} {', '.join(twice)} is given twice")
+
     def column(self, name: str) -> Column:
         """The column called ``name``."""
         return next(c for c in self.columns if c.name == name)

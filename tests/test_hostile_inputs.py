@@ -201,6 +201,9 @@ def test_quantities_written_wrongly(run_cli, tmp_path, case):
 # --- options ------------------------------------------------------------------------------
 
 OPTIONS = [
+    (["predict", "sk8-3.5-4000", "--gas-exponent", "nan"], "'--gas-exponent': nan is not a finite number"),
+    (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-pin-stiffness", "1e-9 N*m/rad"],
+     "--crank-pin-stiffness"),
     (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-phase", "0.1"], "--crank-phase: '0.1' has no unit"),
     (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--pitman-length", "2"], "--pitman-length: '2' has no unit"),
     (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-phase", "inf deg"], "--crank-phase"),

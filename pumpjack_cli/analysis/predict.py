@@ -26,7 +26,7 @@ from ..core.rods.deviated_predict import predict_deviated, predict_deviated_card
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.rods.pump_faults import hanging_pump, parted_damping, parted_string, tag_stops
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import PumpjackError, warn
+from ..errors import BalanceError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
 from .deviated import (Deviation, deviated_path, friction_coefficient, profile_result, survey_summary, surveyed,
@@ -380,8 +380,13 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
     summary += taper_summary(string, loads, service_factor)
     card, runs = _runs(found, steps)
     method = "exact" if unit.masses is not None else "api"
-    torque = card_torque(unit, card, runs, method, "equal-peaks")
-    summary += torque.summary
+    try:
+        torque = card_torque(unit, card, runs, method, "equal-peaks")
+    except BalanceError as exc:
+        warn(f"unit {unit.name}: the predicted card cannot be balanced by equal peaks ({exc.note}); the recommended "
+             f"counterbalance is the one of the least peak torque (min-peak)")
+        torque = card_torque(unit, card, runs, method, "min-peak")
+    summary += [s for s in torque.summary if s.name != "stroke"]   # the cards' own stroke is printed above
     columns = [
         *crank_columns(cards.crank_angle, cards.time, found.crank_speed, found.crank_acceleration),
         Column("position", cards.polished_rod_position),

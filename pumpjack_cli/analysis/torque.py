@@ -44,7 +44,7 @@ from ..core.beam.torque import (
 from ..core.designations import Ratings
 from ..core.motors import nema_motor_size
 from ..core.sampling import Extreme, extremes_of, peaks_of
-from ..errors import PumpjackError, collected_warnings, warn
+from ..errors import BalanceError, PumpjackError, collected_warnings, warn
 from ..quantities import DAY, HORSEPOWER, INCH
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun, CardSource, alone, card_runs, each_card
@@ -289,7 +289,7 @@ def _dense_figures(context: _TorqueContext, cards: list[Card], runs: list[list[C
         extra_torque=net - parts.rod_load - parts.structural - parts.counterbalance)
     for found in recommendations:
         if found.value is None:
-            raise PumpjackError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms")
+            raise BalanceError(f"--balance {criterion}: {found.note}; try --balance min-peak or min-rms", found.note)
     values = np.array([r.value for r in recommendations])
     recommended = _with_value(balance, linkage, theta, net, values[:, None])
     current = net if context.balance_known else None

@@ -26,8 +26,8 @@ class CrankMotion(str, Enum):
     dynamic = "dynamic"
 
 
-def _well(help_text: str):
-    return typer.Option(help=f"{help_text} [default: the unit's [well]]")
+def _well(help_text: str, **kwargs):
+    return typer.Option(help=f"{help_text} [default: the unit's [well]]", **kwargs)
 
 
 def _fault(help_text: str):
@@ -51,7 +51,8 @@ def predict(
     fluid_density: Annotated[str | None, _well("produced fluid density, with its unit ('850 kg/m3')")] = None,
     fillage: Annotated[str | None, _well("share of the barrel filled with liquid ('80 %')")] = None,
     gas_exponent: Annotated[float | None, _well(
-        "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound")] = None,
+        "polytropic exponent of the gas in the unfilled barrel (1: isothermal); none: vapour, fluid pound",
+        callback=finite)] = None,
     unanchored_tubing: Annotated[str | None, _fault(
         "unanchored tubing of this API size (2-3/8, 2-7/8 or 3-1/2): it stretches under the fluid load")] = None,
     travelling_valve_leak: Annotated[str | None, _fault(
@@ -92,7 +93,7 @@ def predict(
         casing_head_pressure=quantity(casing_head_pressure, "pressure", "--casing-head-pressure"),
         fluid_density=quantity(fluid_density, "density", "--fluid-density"),
         fillage=quantity(fillage, "fraction", "--fillage"),
-        gas_exponent=finite(gas_exponent),
+        gas_exponent=gas_exponent,
         tubing_size=unanchored_tubing,
     )
     leaks = [_leak(text, option) for text, option in ((travelling_valve_leak, "--travelling-valve-leak"),

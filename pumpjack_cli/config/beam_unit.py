@@ -120,10 +120,12 @@ class JointsConfig(Section):
     """Rotational stiffness and clearance of the revolute pins of the real mechanism, across
     their axes (default: rigid pins without clearance, as [Spatial7SK12])."""
 
+    # At least 1 N·m/rad: a pin that tilts a radian under 1 N·m constrains nothing (real pins are
+    # 1e5-1e8 N·m/rad), and far below it the flexibility matrix of the self-stress states is singular.
     crank_pin_stiffness: RotationalStiffness | None = Field(
-        default=None, gt=0, le=1e12, description="crank pins A, A1 with their studs [N·m/rad]; none: rigid")
+        default=None, ge=1.0, le=1e12, description="crank pins A, A1 with their studs [N·m/rad]; none: rigid")
     equalizer_pin_stiffness: RotationalStiffness | None = Field(
-        default=None, gt=0, le=1e12, description="equalizer pins B, B1 and bearing [N·m/rad]; none: rigid")
+        default=None, ge=1.0, le=1e12, description="equalizer pins B, B1 and bearing [N·m/rad]; none: rigid")
     crank_pin_clearance: Angle = Field(default=0.0, ge=0, le=0.05,
                                        description="free tilt of the crank pins: radial clearance / width [rad]")
     equalizer_pin_clearance: Angle = Field(default=0.0, ge=0, le=0.05,

@@ -18,7 +18,7 @@ from ..errors import ConfigError, warn
 from ..quantities import INCH
 from ..readers.catalogue import Catalogue, CatalogueRow
 from .files import field_path, parse_unit
-from .geometry_names import GEOMETRY_ALIASES
+from .geometry_names import GEOMETRY_ALIASES, rotation_sign
 from .unit_classes import UNIT_CLASSES, unit_class
 
 #: Largest difference between the exact and the published stroke of a crank hole taken as
@@ -109,6 +109,10 @@ def catalogue_listing(catalogue: Catalogue) -> list[dict[str, Any]]:
     listed = []
     for row in catalogue.rows:
         kind = row_class(row)
+        try:
+            rotation_sign(row.table["geometry"].get("rotation", "clockwise"))
+        except ValueError as exc:
+            raise ConfigError(f"{row.place}: {_columns(row.columns, ('geometry', 'rotation'))}: {exc}") from None
         try:
             stroke = UNIT_CLASSES[kind].stroke(row.table["geometry"])
         except ValueError as exc:

@@ -82,6 +82,16 @@ def canonical_geometry(data: dict[str, Any]) -> dict[str, Any]:
     return data
 
 
+def rotation_sign(rotation: Any) -> int:
+    """The sign of a ``rotation`` as written (clockwise, counterclockwise, cw, ccw; any case).
+
+    Raises ValueError for anything else."""
+    name = ROTATION_NAMES.get(rotation.lower(), rotation.lower()) if isinstance(rotation, str) else rotation
+    if name not in ROTATION_SIGNS:
+        raise ValueError(f"rotation {rotation!r} is neither clockwise nor counterclockwise (cw, ccw)")
+    return ROTATION_SIGNS[name]
+
+
 def linkage_of(geometry: dict[str, Any]) -> Linkage:
     """The planar class I linkage of a ``[geometry]`` table as written in a file (any spelling);
     clockwise when the table states no rotation (a kind with one rotation only)."""
@@ -89,7 +99,7 @@ def linkage_of(geometry: dict[str, Any]) -> Linkage:
     lengths = {name: parse_quantity(fields[name], "length") for name in GEOMETRY_ALIASES}
     spatial = {name: parse_quantity(fields[name], "length") if name in fields else None
                for name in ("crank_half_spacing", "equalizer_half_length")}
-    return beam_linkage(**lengths, rotation=ROTATION_SIGNS[fields.get("rotation", "clockwise")], **spatial)
+    return beam_linkage(**lengths, rotation=rotation_sign(fields.get("rotation", "clockwise")), **spatial)
 
 
 def slider_crank_of(crank_radius: Any, rod_length: Any, offset: Any = 0.0, rotation: str = "counterclockwise"):

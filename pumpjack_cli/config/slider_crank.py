@@ -55,7 +55,8 @@ class SliderSection(Section):
     """One section of a stepped slider, a solid round bar."""
 
     length: Length = Field(gt=0, le=20, description="l_i: section length along the slider [m]")
-    diameter: Length = Field(gt=0, le=2, description="d_i: section diameter [m]")
+    # at least 1 mm: far below it the section's bending stiffness (d^4) makes the support problem singular
+    diameter: Length = Field(ge=1e-3, le=2, description="d_i: section diameter [m]")
 
 
 
@@ -75,7 +76,8 @@ class SteppedSlider(Section):
     sections: tuple[SliderSection, ...] = Field(
         min_length=1, description="sections from the clamped end A to the guide B (crosshead)"
     )
-    guide_length: Length = Field(gt=0, le=5, description="l_n: distance between the edge contacts of guide B [m]")
+    # at least 10 mm: the edge forces of guide B grow as 1/l_n, without bound for a shoe of no length
+    guide_length: Length = Field(ge=0.01, le=5, description="l_n: distance between the edge contacts of guide B [m]")
     settlement: Length = Field(
         ge=-0.01, le=0.01, description="Delta_B: guide B's axis off the axis of A at the outer dead centre [m]"
     )

@@ -9,6 +9,9 @@ kinetostatics against the equation of motion's gearbox torque ([SK8Rotation2013]
 
 from __future__ import annotations
 
+import csv
+import io
+import json
 import math
 
 import numpy as np
@@ -163,3 +166,34 @@ def test_the_net_torque_plot_shows_the_gearbox_rating():
     (panel,) = [panel for panel in result.panels if panel.title == "net torque"]
     assert panel.levels == (("gearbox rating", pytest.approx(4000 * KILOGRAM_FORCE)),
                             ("", pytest.approx(-4000 * KILOGRAM_FORCE)))
+
+
+@pytest.mark.parametrize("argv", [("predict", "sk8-3.5-4000", "--damping", "0.1", "--samples", "64"),
+                                  (*SK8_COUPLED[:-1], "64")], ids=["uniform", "coupled"])
+def test_the_csv_summary_rows_are_the_json_summary_with_their_own_units(run_cli, run_json, argv):
+    """Each CSV summary row carries its own value and unit: the rows are the JSON summary's items in
+    order, and the unit column agrees with the name's unit suffix (a name given twice once shifted
+    every later unit and description by a row)."""
+    code, out, _ = run_cli(*argv, "--what", "summary", "-f", "csv")
+    assert code == 0
+    rows = list(csv.DictReader(io.StringIO(out)))
+    document = run_json(*argv)["summary"]
+    assert [row["name"] for row in rows] == list(document)
+    assert [float(row["value"]) for row in rows if row["unit"]] == [
+        v for v in document.values() if not isinstance(v, str)][:sum(1 for row in rows if row["unit"])]
+    suffixes = {"N·m": "_n_m", "N": "_n", "%": "_percent", "m": "_m", "s": "_s", "deg": "_deg", "W": "_w", "J": "_j"}
+    for row in rows:
+        if row["unit"] in suffixes:
+            assert row["name"].endswith(suffixes[row["unit"]]), row
+
+
+def test_a_card_equal_peaks_cannot_balance_is_balanced_for_the_least_peak(run_cli):
+    """At 60 strokes/min no moment >= 0 makes the SK8's stroke peaks equal: predict still prints its
+    cards, says so, and recommends the moment of the least peak torque, whose peak is then no
+    larger than the present counterbalance's (the minimum over all moments)."""
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--spm", "60", "--damping", "0.1", "--samples", "64",
+                             "--what", "summary", "-f", "json")
+    assert code == 0, err
+    assert "cannot be balanced by equal peaks" in err and "(min-peak)" in err
+    summary = json.loads(out)["summary"]
+    assert summary["recommended_peak_net_torque_n_m"] <= summary["peak_net_torque_n_m"]

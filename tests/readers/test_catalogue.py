@@ -389,6 +389,13 @@ def test_the_listing_refuses_letters_that_cannot_assemble(tmp_path):
         catalogue_listing(read_catalogue(path))
 
 
+def test_the_listing_refuses_a_rotation_that_is_none(tmp_path):
+    path = field(tmp_path, GOOD.replace(",cw,", ",sideways,"))
+    with pytest.raises(ConfigError, match=f"^{path}: line 2: column rotation: rotation 'sideways' is neither "
+                                          "clockwise nor counterclockwise"):
+        catalogue_listing(read_catalogue(path))
+
+
 @pytest.mark.parametrize(("row", "column", "message"), [
     (GOOD.replace("C-80D", "M-80D"), "designation", "the designation 'M-80D-133-48' names a mark-ii unit"),
     (GOOD.replace(",1,cw,", ",1,shaped,cw,"), "class", "class 'shaped' is not a kind of unit"),

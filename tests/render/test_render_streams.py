@@ -76,3 +76,12 @@ def test_a_result_without_columns():
     text = _full(result, "si")
     assert text == json.dumps({"title": "nothing", "units": "si", "summary": {"stroke_m": 2.5}, "columns": {},
                                "series": {}}, indent=1) + "\n"
+
+
+def test_a_name_given_twice_is_refused_where_the_result_is_made():
+    """Summary and columns are keyed by name in every output (JSON objects, the store's columns, the
+    CSV summary's rows): a name given twice would drop one value and shift the rows after it."""
+    with pytest.raises(ValueError, match="the summary value stroke is given twice"):
+        Result("t", (Scalar("stroke", 1.0), Scalar("stroke", 1.0)), ())
+    with pytest.raises(ValueError, match="the column position is given twice"):
+        Result("t", (), (Column("position", np.zeros(2)), Column("position", np.ones(2))))

@@ -8,9 +8,11 @@ file of several strokes have the stroke's number after the digest (``<sha256>#07
 
 from __future__ import annotations
 
+import errno
 import hashlib
 import json
 import os
+import stat
 from pathlib import Path
 
 from ...errors import ConfigError
@@ -24,7 +26,11 @@ def file_sha256(path: str | Path) -> str:
     """SHA-256 of a file's bytes (hex), read unbuffered in blocks of 64 KiB (a card in one; a
     larger block is allocated whole at each read, which costs more than hashing a card)."""
     digest = hashlib.sha256()
-    with open(path, "rb", buffering=0) as handle:
+    # opened without blocking and refused unless a regular file: a FIFO would wait for a writer and
+    # a device such as /dev/zero never ends (the card's reader then names what it is)
+    with open(os.open(path, os.O_RDONLY | os.O_NONBLOCK), "rb", buffering=0) as handle:
+        if not stat.S_ISREG(os.fstat(handle.fileno()).st_mode):
+            raise OSError(errno.EINVAL, "not a regular file", str(path))
         while block := handle.read(1 << 16):
             digest.update(block)
     return digest.hexdigest()
