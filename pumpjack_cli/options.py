@@ -13,7 +13,7 @@ from typing import Annotated
 import typer
 
 from .errors import PumpjackError
-from .quantities import parse_quantity
+from .quantities import SPM_RANGE, parse_quantity
 from .render import Outputs
 from .render.formats import CONTENTS, CSV, FORMATS, PLOT_SUFFIXES, TABLE
 from .results import Result
@@ -113,10 +113,11 @@ def positive(value: float | None) -> float | None:
 
 
 SpmOption = Annotated[float | None, typer.Option(
-    help="pumping speed, strokes/min [default: from motor and drive]", min=0.1, max=60, callback=finite)]
+    help="pumping speed, strokes/min [default: from motor and drive]", min=SPM_RANGE[0], max=SPM_RANGE[1],
+    callback=finite)]
 CardSpmOption = Annotated[float | None, typer.Option(
     "--spm", help="pumping speed, strokes/min [default: the card's time stamps, else from motor and drive]",
-    min=0.1, max=60, callback=finite)]
+    min=SPM_RANGE[0], max=SPM_RANGE[1], callback=finite)]
 StepsOption = Annotated[int, typer.Option(help="crank positions per revolution", min=4, max=1_000_000)]
 CrankMotionOption = Annotated[CrankMotion, typer.Option(
     "--crank-motion", help="uniform: constant crank speed (the card's time stamps, --spm or the motor's rated speed); "

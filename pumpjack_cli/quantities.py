@@ -31,6 +31,9 @@ BARREL = 42 * 231 * INCH**3
 #: Kilowatt hour [J] and day [s] ([NIST811]).
 KWH = 3.6e6
 DAY = 86400.0
+#: Pumping speeds the tool takes [1/min]: of ``--spm``, of a file's stated SPM, and of a card's
+#: time stamps (a card that implies another speed is no beam unit's card).
+SPM_RANGE = (0.1, 60.0)
 
 #: Accepted input units for each dimension: normalised unit text -> factor to SI.
 INPUT_UNITS: dict[str, dict[str, float]] = {

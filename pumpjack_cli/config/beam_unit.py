@@ -140,6 +140,10 @@ class JointsConfig(Section):
             self.crank_pin_clearance, self.equalizer_pin_clearance)
 
 
+#: The SI unit of each rating, for messages.
+RATING_UNITS = {"gearbox_torque": "N·m", "structure_load": "N", "max_stroke": "m"}
+
+
 class Rating(Section):
     """Ratings of the unit, completing or overriding what its designation gives ([API11E], [GOST5866])."""
 
@@ -203,9 +207,17 @@ class UnitConfig(Section):
     def _designation(cls, text: str | None) -> str | None:
         if text is not None:
             try:
-                parse_designation(text, designation_types())
+                found = parse_designation(text, designation_types())
             except DesignationError as exc:
                 raise ValueError(str(exc)) from None
+            limits = {name: field.metadata for name, field in Rating.model_fields.items()}
+            for name in limits:
+                value = getattr(found, name)
+                top = next(m.le for m in limits[name] if hasattr(m, "le"))
+                if value > top:
+                    raise ValueError(f"unit designation {text!r}: its {name.replace('_', ' ')} rating {value:.4g} "
+                                     f"{RATING_UNITS[name]} is above {top:g} {RATING_UNITS[name]}, the limit of "
+                                     f"[rating] {name}")
         return text
 
     @field_validator("geometry", mode="before")

@@ -29,6 +29,7 @@ from typing import Required, TypedDict, TypeVar
 import numpy as np
 
 from ..errors import CardError
+from ..quantities import SPM_RANGE
 from .beam.card import (Card, RotationFit, card_from_angles, cards_from_angles, crank_angle_from_position, fit_input_errors,
                         fit_rotation, fit_rotations, largest_gap, loop_work, time_samples, upstroke_points)
 from .beam.geometry import CLOCKWISE, COUNTERCLOCKWISE
@@ -363,6 +364,7 @@ def _finished_all(mechanism: Mechanism, cards: list[_TimeCard],
     for row, (k, fit) in enumerate(good.items()):
         card = cards[k]
         try:
+            _check_speed(fit.speed * 30.0 / math.pi, card.source)
             notes = [*card.notes, *_rotation(mechanism, fit, float(slowest[row]), card.time, card.scaled,
                                              card.position_unit, card.source)]
             _check_gap(float(gaps[row]), theta.shape[1], card.source,
@@ -373,6 +375,14 @@ def _finished_all(mechanism: Mechanism, cards: list[_TimeCard],
         done[k] = PlacedCard(placed[row], card.source, tuple(notes), card.load, theta[row], card.position, card.time,
                              fit.speed, fit.crank_speed, fit.crank_acceleration, fit.rms, fit.rms / stroke, card.reversed)
     return [fit if isinstance(fit, CardError) else done[k] for k, fit in enumerate(fits)]
+
+
+def _check_speed(spm: float, source: str) -> None:
+    """Refuse a card whose time stamps give a pumping speed outside :data:`SPM_RANGE` (no beam unit's
+    card: a time column in other units than seconds, or written wrong)."""
+    if not SPM_RANGE[0] <= spm <= SPM_RANGE[1]:
+        raise CardError(f"{source}: its time stamps give {spm:.4g} strokes/min, outside {SPM_RANGE[0]:g} .. "
+                        f"{SPM_RANGE[1]:g}; is the time column in seconds?")
 
 
 #: Lengths a position column is commonly written in [m], for naming a slip.

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import PumpjackError
-from ..quantities import parse_quantity
+from ..quantities import SPM_RANGE, parse_quantity
 from ..text_input import read_text
 from .unit_files import names_a_file
 
@@ -135,8 +135,9 @@ def _spm(row: dict, number: int, source: str) -> float | None:
         spm = float(spm)
     except (TypeError, ValueError):
         raise _row_error(source, number, f"spm: {spm!r} is not a number (strokes per minute)") from None
-    if not (math.isfinite(spm) and 0.1 <= spm <= 60):
-        raise _row_error(source, number, f"spm: {spm:g} is outside 0.1 .. 60 strokes per minute")
+    if not (math.isfinite(spm) and SPM_RANGE[0] <= spm <= SPM_RANGE[1]):
+        raise _row_error(source, number,
+                         f"spm: {spm:g} is outside {SPM_RANGE[0]:g} .. {SPM_RANGE[1]:g} strokes per minute")
     return spm
 
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from ...errors import CardError
 from ...names import written_names
-from ...quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, UNIT_SPELLINGS, output_unit
+from ...quantities import FOOT, INCH, KILOGRAM_FORCE, POUND_FORCE, SPM_RANGE, UNIT_SPELLINGS, output_unit
 from ...text_input import decode_text
 
 #: Column kinds: accepted names and dimension.
@@ -62,8 +62,6 @@ LIMITS = {"load": (1e7, "10 MN"), "position": (1e3, "1 km")}
 #: A stroke the file states may differ from its positions' range by this fraction, as a
 #: card's stroke may from the unit's (``core.cards.STROKE_ERROR``); beyond, it is refused.
 STATED_STROKE_TOLERANCE = 0.05
-#: Pumping speeds a file may state [1/min], the range of ``--spm``.
-SPM_RANGE = (0.1, 60.0)
 #: The surface card among the columns this tool writes (``predict``, ``downhole``, ``torque``
 #: with ``-f csv`` or ``-f json``): output name -> column kind ...
 _WRITTEN_KINDS = {"time": "time", "position": "position", "rod_load": "load", "crank_angle": "crank_angle"}

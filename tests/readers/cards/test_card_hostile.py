@@ -346,3 +346,18 @@ def test_bad_card_columns_option(text, fragment):
     with pytest.raises(CardError) as error:
         parse_card_columns(text)
     assert "\n" not in str(error.value) and fragment in str(error.value)
+
+
+@pytest.mark.parametrize(("scale", "spm"), [(1e-2, 1090.8), (1e3, 0.010908)])
+def test_time_stamps_that_give_no_beam_units_speed_are_refused(tmp_path, scale, spm):
+    """The sample card (10.908 strokes/min) with its time stamps scaled: the speed they give, 10.908 /
+    scale, lies outside the 0.1 .. 60 strokes/min of --spm and of a stated SPM, so the card is refused
+    by name (a time column in ms or minutes read as seconds) instead of giving numbers."""
+    lines = Path(SK8_CARD).read_text(encoding="utf-8").splitlines()
+    header = next(i for i, line in enumerate(lines) if line.startswith("time_s"))
+    rows = [line.split(",") for line in lines[header + 1:]]
+    path = tmp_path / "scaled.csv"
+    path.write_text("\n".join([lines[header], *(",".join([repr(float(t) * scale), s, w]) for t, s, w in rows)]) + "\n",
+                    encoding="utf-8")
+    with pytest.raises(CardError, match=rf"^{path}: its time stamps give {spm:.4g} strokes/min, outside 0.1 \.\. 60"):
+        place(cards.read_card(path), load_unit("sk8-3.5-4000").geometry.mechanism())
