@@ -298,8 +298,14 @@ def _prepared(mechanism: Mechanism, card: CardSamples) -> PlacedCard | _TimeCard
         if np.all(theta == theta[0]):
             raise CardError(f"{source}: every crank angle is {math.degrees(theta[0]):.6g} deg; a card covers a whole cycle")
         _check_coverage(theta, source, "crank angles")
-        return PlacedCard(card_from_angles(theta, load), source, tuple(card.get("warnings", ())), load, theta,
-                          reversed=reversed)
+        placed = card_from_angles(theta, load)
+        swept = mechanism.rod_position(placed.crank_angle)
+        work = loop_work(swept, placed.load)
+        if work < -WORK_TOLERANCE * float(np.ptp(swept)) * float(np.ptp(load)):
+            raise CardError(f"{source}: on these crank angles the rods do {-work:.4g} J of work on the unit per "
+                            f"cycle; a pumping unit does positive work: crank angles measured against the rotation, "
+                            f"or a sign inverted?")
+        return PlacedCard(placed, source, tuple(card.get("warnings", ())), load, theta, reversed=reversed)
     if position is None:
         raise CardError(f"{source}: a card has crank angles or polished-rod positions; this one has neither")
     unit, factor = position_unit = card.get("position_unit", ("m", 1.0))
@@ -364,9 +370,9 @@ def _finished_all(mechanism: Mechanism, cards: list[_TimeCard],
     for row, (k, fit) in enumerate(good.items()):
         card = cards[k]
         try:
-            _check_speed(fit.speed * 30.0 / math.pi, card.source)
             notes = [*card.notes, *_rotation(mechanism, fit, float(slowest[row]), card.time, card.scaled,
                                              card.position_unit, card.source)]
+            _check_speed(fit.speed * 30.0 / math.pi, card.source)
             _check_gap(float(gaps[row]), theta.shape[1], card.source,
                        f"samples at the fitted {fit.speed * 30.0 / math.pi:.4g} strokes/min")
         except CardError as error:

@@ -13,6 +13,7 @@ from pumpjack_cli.analysis.card_runs import place
 from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.beam.card import card_load, crank_angle_from_position
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
+from pumpjack_cli.core.cards import place_card
 from pumpjack_cli.core.sampling import crank_grid
 from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers.cards import read_card
@@ -183,3 +184,14 @@ def test_sample_cards_fit_their_units(name):
     reading = read(sample_card(name), linkage)
     assert reading.warnings == ()
     assert 0 < reading.card.load.min() < reading.card.load.max() < rated[name]
+
+
+def test_an_angle_card_measured_against_the_rotation_is_refused():
+    """The sample card's loads at its fitted crank angles place as an angle card; the same loads at
+    the angles mirrored (2 pi - theta, measured against the rotation) run the loop backwards, the rods
+    doing work on the unit, and are refused by name instead of giving a pump card of negative work."""
+    placed = place(read_card(sample_card("sk8-3.5-4000")), SK8)
+    good = place_card(SK8, placed.load, crank_angle=placed.crank_angle, source="angles.csv")
+    assert good.card.load.size == placed.card.load.size
+    with pytest.raises(CardError, match=r"^angles\.csv: on these crank angles the rods do .* J of work on the unit"):
+        place_card(SK8, placed.load, crank_angle=2.0 * math.pi - placed.crank_angle, source="angles.csv")
