@@ -140,6 +140,11 @@ class JointsConfig(Section):
             self.crank_pin_clearance, self.equalizer_pin_clearance)
 
 
+#: The largest counterbalance moment M a unit file may give or imply [N·m].
+MOMENT_LIMIT = 1e7
+#: A counterbalance effect tells the counterbalance only where the torque factor is at least this
+#: share of its largest: nearer a dead position the moment it implies grows without bound.
+CBE_TORQUE_FACTOR_SHARE = 0.05
 #: The SI unit of each rating, for messages.
 RATING_UNITS = {"gearbox_torque": "N·m", "structure_load": "N", "max_stroke": "m"}
 
@@ -163,7 +168,8 @@ class CounterbalanceConfig(Section):
         description="B: force at the polished rod that holds the beam level with the pitmans off the crank pins, "
         "downward positive [N]")
     moment: Torque | None = Field(
-        default=None, ge=0, le=1e7, description="M: largest moment of cranks and counterweights about the shaft [N·m]")
+        default=None, ge=0, le=MOMENT_LIMIT,
+        description="M: largest moment of cranks and counterweights about the shaft [N·m]")
     phase: Angle = Field(default=0.0, gt=-math.pi, le=math.pi,
                          description="tau: crank offset angle, the lead of the counterweights' resultant ahead "
                          "of the crank pin in the direction of rotation; 0 for conventional units [rad]")
@@ -309,14 +315,25 @@ class UnitConfig(Section):
             angle = upstroke_test_angle(self.geometry.mechanism())
 
         where = f"unit {self.name}: [counterbalance] counterbalance_effect"
+        mechanism = self.geometry.mechanism()
+        test = mechanism.motion(np.array([angle]))
+        largest = float(np.max(np.abs(mechanism.torque_factor(np.linspace(0.0, 2.0 * math.pi, 361)))))
+        if abs(float(test.torque_factor[0])) < CBE_TORQUE_FACTOR_SHARE * largest:
+            raise ConfigError(f"{where}: at {math.degrees(angle):.4g} deg the torque factor is below "
+                              f"{100 * CBE_TORQUE_FACTOR_SHARE:g} % of its largest, too near a dead position for the "
+                              f"effect to tell the counterbalance; give it measured with the cranks nearer horizontal")
         try:
-            value = value_for_effect(self.geometry.mechanism().motion(np.array([angle])), model, effect)
+            value = value_for_effect(test, model, effect)
         except TorqueError as exc:
             raise ConfigError(f"{where}: {exc}") from None
         if not math.isfinite(value) or value < 0:
             raise ConfigError(f"{where}: {effect:.6g} N at {math.degrees(angle):.4g} deg gives a "
                               f"{model.variable.replace('_', ' ')} of {value:.6g} {model.symbol}, below 0; check the "
                               f"effect, its angle and structural_unbalance")
+        top = MOMENT_LIMIT if model.variable == "counterbalance_moment" else math.inf
+        if value > top:
+            raise ConfigError(f"{where}: {effect:.6g} N at {math.degrees(angle):.4g} deg gives a counterbalance "
+                              f"moment of {value:.6g} N·m, above the {top:g} N·m of [counterbalance] moment")
         return model.with_value(value)
 
     def ratings(self) -> Ratings:

@@ -127,12 +127,13 @@ def test_bad_units_exit_2_with_one_line(run_cli, unit_file, old, new, message):
 
 
 def test_card_that_does_not_fit_exits_2(run_cli, tmp_path):
-    # An angle card with the downstroke's load on the upstroke: it would drive the motor.
+    # An angle card with the downstroke's load on the upstroke: it would drive the motor, the rods doing
+    # work on the unit; the card is refused when it is placed, before the machine is solved.
     card = tmp_path / "backwards.csv"
     rows = ["crank_angle_deg,load_n"] + [f"{a},{37000 if a < 178 else 51000}" for a in range(0, 360, 10)]
     card.write_text("\n".join(rows) + "\n", encoding="utf-8")
     code, _, err = run_cli("dynamics", SK8, "--card", card)
-    assert code == 2 and "does not fit this unit" in err
+    assert code == 2 and f"{card}: on these crank angles the rods do" in err and err.count("\n") == 1
 
 
 def test_rtol_out_of_range_is_an_option_error(run_cli):

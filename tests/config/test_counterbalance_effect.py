@@ -119,6 +119,8 @@ def test_the_air_balanced_effect_sets_the_air_pressure(tmp_path, run_card_json):
     ('counterbalance_effect = "6000 lbf"\ncounterbalance_effect_angle = "0 deg"', "greater than 0"),
     ('counterbalance_effect = "6000 kg"', "is a mass, not a force"),
     ('counterbalance_effect = "100 lbf"', "below 0"),
+    # 2 deg past the bottom dead position TF is a few % of its largest: the moment it would imply is noise
+    ('counterbalance_effect = "6000 lbf"\ncounterbalance_effect_angle = "2 deg"', "too near a dead position"),
 ])
 def test_a_bad_effect_is_refused_in_one_line(tmp_path, run_cli, lines, message):
     text = MOMENT_LINE.sub(lines.replace("\\", "\\\\"), C80.read_text(encoding="utf-8"))
@@ -138,3 +140,14 @@ def test_an_effect_at_a_dead_position_is_refused(tmp_path, run_cli):
     path.write_text(text, encoding="utf-8")
     code, _, err = run_cli("torque", path, "--card", sample_card("c-80d-133-48"))
     assert code == 2 and "counterbalance_effect" in err and err.count("\n") == 1, err
+
+
+def test_an_effect_implying_a_moment_no_file_may_give_is_refused(tmp_path, run_cli):
+    """C-228D-213-86's TF(90 deg) is about 43 in, so a CBE of 10 MN (the largest a file may give) implies
+    M of about 1.1e7 N·m, above the 1e7 N·m of [counterbalance] moment: refused, not used."""
+    source = REPO_ROOT / "configs" / "c-228d-213-86.toml"
+    text = re.sub(r'^moment = .*$', 'counterbalance_effect = "1e7 N"', source.read_text(encoding="utf-8"), flags=re.M)
+    path = tmp_path / "huge.toml"
+    path.write_text(text, encoding="utf-8")
+    code, _, err = run_cli("torque", path, "--card", sample_card("c-228d-213-86"))
+    assert code == 2 and "above the 1e+07 N·m of [counterbalance] moment" in err and err.count("\n") == 1, err
