@@ -148,6 +148,17 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     conditions = diagnose(position, load, reference_fluid_load(unit))
     works = card_work(np.array([surfaces[k][1].position for k in good]), np.array([surfaces[k][1].load for k in good]))
     pump_works = card_work(position, load)
+    backwards = _backwards_pump_cards(cards, surfaces, pumps, good, pump_works, conditions.label)
+    if backwards:
+        for k, error in backwards.items():
+            found[k] = error
+        keep = [i for i, k in enumerate(good) if k not in backwards]
+        good = [good[i] for i in keep]
+        if not good:
+            return [(result, tuple(notes)) for result, notes in zip(found, said)]
+        position, load, works, pump_works = position[keep], load[keep], works[keep], pump_works[keep]
+        figures = summarise_pump_card(position, load)
+        conditions = diagnose(position, load, reference_fluid_load(unit))
     loads = taper_loads(string, np.array([pumps[k][1].joint_load for k in good]))
     rows = CardSummaries(unit, string, [surfaces[k] for k in good], [pumps[k] for k in good], load, figures, conditions,
                          (works, pump_works), loads, service_factor, production, path)
@@ -158,6 +169,31 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
                                         marks if tables else None)
         said[k] += noted
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
+
+
+#: A pump card may do no less work on the fluid than minus this share of (surface stroke x surface load
+#: range): a pump takes no energy from the fluid column, and below it the damping or the card is wrong.
+PUMP_WORK_TOLERANCE = 0.02
+
+
+def _backwards_pump_cards(cards: list, surfaces: dict, pumps: dict, good: list[int], pump_works: np.ndarray,
+                          labels: np.ndarray) -> dict[int, PumpjackError]:
+    """The cards whose pump card does work on the rods (index -> the error saying so); a parted
+    string's card is not among them: its free end carries no pump, and it is labelled, never refused
+    (the damping of the whole string over the part that hangs makes its work a little negative)."""
+    found = {}
+    for i, k in enumerate(good):
+        if labels[i] == "rod_part":
+            continue
+        surface = surfaces[k][1]
+        scale = float(np.ptp(surface.position)) * float(np.ptp(surface.load))
+        if pump_works[i] < -PUMP_WORK_TOLERANCE * scale:
+            nu = pumps[k][0]
+            found[k] = PumpjackError(
+                f"{cards[k].name}: its pump card does {pump_works[i]:.4g} J of work on the fluid per cycle; a pump "
+                f"does none negative: the damping factor {nu:.4g} takes more energy from the rods than the surface "
+                f"card gives them, or the card is not a pumping well's")
+    return found
 
 
 def _vertical_pumps(unit: UnitConfig, string, cards: list, surfaces: dict, damping: float | None, method: str,

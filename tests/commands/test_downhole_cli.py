@@ -236,3 +236,37 @@ def test_blind_diagnosis_of_the_sample_card_gives_back_the_well(downhole):
     assert s["pump_fillage_percent"] > 99.5
     assert s["fluid_load_n"] == pytest.approx(SK8_FLUID_DENSITY * STANDARD_GRAVITY * 1430.0 * area, rel=0.005)
     assert s["pump_intake_pressure_pa"] == pytest.approx(SK8_FLUID_DENSITY * STANDARD_GRAVITY * 100.0, rel=0.01)
+
+
+@pytest.mark.parametrize("damping", ["0.5", "2"])
+def test_a_damping_that_leaves_the_pump_card_negative_work_is_refused(run_cli, damping):
+    """The SK8 sample card's surface work is about 48 kJ per cycle; a damping factor of 0.5 or 2 takes
+    more than that from the rods, and the pump card would do negative work on the fluid (with a
+    negative fluid load). A pump does no negative work: refused by name, no numbers."""
+    code, out, err = run_cli("downhole", SK8, "--card", sample_card(SK8), "--damping", damping, "-f", "json")
+    assert (code, out) == (2, "")
+    assert "its pump card does -" in err and f"the damping factor {float(damping):g}" in err and err.count("\n") == 1
+
+
+def test_a_card_refused_for_its_pump_work_leaves_the_others_of_a_batch_alone(tmp_path):
+    """downholes of two position cards at the sample's speed, the sample card and a card of no loop
+    (the load constant, the rods doing no work): the second is refused for its pump card's negative
+    work, the first is as alone."""
+    from pumpjack_cli.analysis.card_runs import CardSource
+    from pumpjack_cli.analysis.downhole import downhole, downholes
+    from pumpjack_cli.config import load_unit
+    from pumpjack_cli.errors import PumpjackError
+    from pumpjack_cli.results import Result
+
+    rows = list(csv.reader(open(sample_card(SK8), encoding="utf-8")))
+    header = next(i for i, row in enumerate(rows) if row and row[0] == "time_s")
+    good, flat = tmp_path / "good.csv", tmp_path / "flat.csv"
+    good.write_text("position_m,load_kN\n" + "".join(f"{s},{w}\n" for _, s, w in rows[header + 1:]), encoding="utf-8")
+    flat.write_text("position_m,load_kN\n" + "".join(f"{s},40.0\n" for _, s, _ in rows[header + 1:]), encoding="utf-8")
+    unit = load_unit(SK8)
+    (first, _), (second, _) = downholes(unit, [CardSource(good), CardSource(flat)], 10.908, "uniform", None,
+                                        0.05)
+    assert isinstance(second, PumpjackError) and "its pump card does -" in str(second)
+    assert isinstance(first, Result)
+    alone = downhole(unit, CardSource(good), 10.908, "uniform", None, 0.05)
+    assert [s.value for s in first.summary] == [s.value for s in alone.summary]

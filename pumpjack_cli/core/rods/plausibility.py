@@ -132,7 +132,9 @@ def free_end(load: np.ndarray, position: np.ndarray, period: float, rods: RodStr
     static = fine.static_tension(fluid_density, gravity)
     damping = np.array([fine.damping_coefficient(nu) for nu in BREAK_DAMPING])[:, None]
     _, dynamic = march(fine, period, position, load - static[0], damping, harmonics=BREAK_HARMONICS)
-    off = np.abs(dynamic + static[:, None]).max(axis=-1) / float(np.ptp(load))
+    # relative to the load's range (a card of constant load has none: then to its size)
+    scale = max(float(np.ptp(load)), 1e-12 * float(np.max(np.abs(load))), np.finfo(float).tiny)
+    off = np.abs(dynamic + static[:, None]).max(axis=-1) / scale
     nu, where = np.unravel_index(int(np.argmin(off)), off.shape)
     return float(np.concatenate([[0.0], np.cumsum(fine.length)])[where]), float(off[nu, where])
 
