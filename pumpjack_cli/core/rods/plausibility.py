@@ -19,6 +19,8 @@ polished rod's acceleration at the ends of a harmonic stroke in units of g, S th
   and the largest fluid load, accelerated, with half again for the rod waves;
 * its load range is at most that same bound: the polished rod's load is never below zero
   (the carrier bar cannot push the rods down);
+* (with or without a ``[well]``) its minimum load is not below zero by more than
+  :data:`NEGATIVE_SHARE` of its peak, for the same reason;
 * its minimum load is at most W_r: the polished rod never carries more than the whole
   string at the bottom of a downstroke;
 * its load-transfer slope (range over stroke) is at most
@@ -58,6 +60,9 @@ from .downhole import LOAD_TRANSFER_MARGIN, load_transfer_slope
 from .gibbs import march
 from .string import RodString
 
+#: A card's minimum load may lie below zero by at most this share of its peak load (a load cell's
+#: zero and noise): the polished rod's load is never below zero, the carrier bar cannot push it down.
+NEGATIVE_SHARE = 0.05
 #: A connected string's median load is at least this share of W_rf.
 MEDIAN_SHARE = 0.75
 #: A connected string's peak load is at most this multiple of (W_r + F_max)(1 + 2 alpha).
@@ -198,9 +203,10 @@ def check_cards_loads(loads: np.ndarray, position: np.ndarray, *, stroke: float,
     the cards one array computation."""
     loads = np.asarray(loads, dtype=float)
     peaks, lows, spreads = loads.max(axis=1), loads.min(axis=1), np.ptp(loads, axis=1)
+    below = [_below_zero(float(low), float(peak), source) for low, peak, source in zip(lows, peaks, sources)]
     if well is None:
-        return [_rated(float(peak), float(spread), structure_rating, source)
-                for peak, spread, source in zip(peaks, spreads, sources)]
+        return [found or _rated(float(peak), float(spread), structure_rating, source)
+                for found, peak, spread, source in zip(below, peaks, spreads, sources)]
     medians = np.median(loads, axis=1)
     slopes = load_transfer_slope(position, loads)
     rods = well.rods
@@ -212,6 +218,10 @@ def check_cards_loads(loads: np.ndarray, position: np.ndarray, *, stroke: float,
     figures = (f"W_r {air * _KN:.4g} kN, W_rf {buoyant * _KN:.4g} kN, F_max {well.max_fluid_load * _KN:.4g} kN")
     out: list[Verdict | CardError] = []
     for k, source in enumerate(sources):
+        refused = below[k]
+        if refused is not None:
+            out.append(refused)
+            continue
         peak, low, median, spread, upper = (float(x[k]) for x in (peaks, lows, medians, spreads, uppers))
         problem = ""
         if peak > upper:
@@ -256,6 +266,15 @@ def check_cards_loads(loads: np.ndarray, position: np.ndarray, *, stroke: float,
 
 #: N to kN, for messages.
 _KN = 1e-3
+
+
+def _below_zero(low: float, peak: float, source: str) -> CardError | None:
+    """The error of a card whose loads lie below zero by more than :data:`NEGATIVE_SHARE` of its peak."""
+    if low < -NEGATIVE_SHARE * max(peak, 0.0):
+        return CardError(f"{source}: its minimum load {low * _KN:.4g} kN is below zero by more than "
+                         f"{NEGATIVE_SHARE:.0%} of its peak {peak * _KN:.4g} kN; the polished rod's load is never "
+                         f"below zero (the carrier bar cannot push the rods down): the load cell's zero?")
+    return None
 
 
 def _rated(peak: float, spread: float, structure_rating: float | None, source: str) -> Verdict | CardError:

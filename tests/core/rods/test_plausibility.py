@@ -179,3 +179,25 @@ def test_a_minimum_load_above_the_rods_weight_in_air_is_refused():
     shifted = cards.polished_rod_load + 1.05 * unit.rods().weight_in_air() - cards.polished_rod_load.min()
     with pytest.raises(CardError, match="minimum load .* kN is above the rods' weight in air"):
         _judge(unit, omega, cards.polished_rod_position, shifted)
+
+
+@pytest.mark.parametrize("with_well", [True, False])
+def test_loads_below_zero_beyond_a_load_cells_zero_are_refused(with_well):
+    """The SK8's predicted card shifted down until its minimum is 4 % of its peak below zero passes (a
+    load cell's zero); until it is 6 % below, it is refused, with or without the well's data: the
+    carrier bar cannot push the rods down."""
+    unit, omega, cards = _connected("sk8-3.5-4000")
+    load, position = cards.polished_rod_load, cards.polished_rod_position
+    judge = dict(stroke=unit.geometry.mechanism().stroke, crank_speed=omega, source="card.csv",
+                 well=unit.well_limits() if with_well else None, structure_rating=unit.ratings().structure_load)
+
+    def shifted(share: float) -> np.ndarray:
+        # min - d = -share (max - d): the shift d that puts the minimum share x the peak below zero
+        d = (load.min() + share * load.max()) / (1.0 + share)
+        return load - d
+
+    assert shifted(0.04).min() == pytest.approx(-0.04 * shifted(0.04).max())
+    if not with_well:   # with the well, a card shifted so far is also below its median bound
+        assert isinstance(check_card_loads(shifted(0.04), position, **judge).warning, str)
+    with pytest.raises(CardError, match=r"^card\.csv: its minimum load .* kN is below zero by more than 5% of its peak"):
+        check_card_loads(shifted(0.06), position, **judge)
