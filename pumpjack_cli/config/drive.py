@@ -3,11 +3,13 @@ core's drive built from them ([SK8Rotation2013] eqs. 25-26)."""
 
 from __future__ import annotations
 
+import math
 from typing import Annotated
 
 from pydantic import Field, model_validator
 
 from ..core.dynamics.drive import belt_ratio, rated_crank_speed, total_ratio
+from ..quantities import SPM_RANGE
 from .quantities import Length, MomentOfInertia, Number, Power, RotationalSpeed, Section, at_least
 
 
@@ -47,6 +49,15 @@ class Drive(Section):
         default=0.0, ge=0, le=1e4,
         description="gears and shafts of the gearbox referred to its input shaft; 0: not counted [kg·m²]",
     )
+
+    @model_validator(mode="after")
+    def _pumping_speed(self) -> "Drive":
+        spm = self.rated_crank_speed * 30.0 / math.pi
+        if not SPM_RANGE[0] <= spm <= SPM_RANGE[1]:
+            raise ValueError(f"motor, sheaves and gearbox turn the crank at {spm:.4g} strokes/min at the motor's rated "
+                             f"speed, outside {SPM_RANGE[0]:g} .. {SPM_RANGE[1]:g}: check the sheave diameters and the "
+                             f"gearbox ratio")
+        return self
 
     @property
     def belt_ratio(self) -> float:

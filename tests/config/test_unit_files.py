@@ -236,6 +236,9 @@ INVALID = [
      "less than or equal to 5 m; got 8 m"),
     ("phase-beyond-half-turn", _set("masses.counterweights.phase", "200 deg"), "masses.counterweights.phase",
      "less than or equal to 3.141592653589793 rad (180 deg); got 3.49066 rad (200 deg)"),
+    # 1460 rpm / (2 x 900 mm / 250 mm) = 202.8 strokes/min
+    ("drive-beyond-pumping-speeds", _set("drive.gearbox_ratio", 2), "drive",
+     "motor, sheaves and gearbox turn the crank at 202.8 strokes/min at the motor's rated speed, outside 0.1 .. 60"),
     ("designation-rating-beyond-any-unit", _set("designation", "C-99999999999999999999D-133-54"), "designation",
      "its gearbox torque rating 1.13e+22 N·m is above 1e+07 N·m, the limit of [rating] gearbox_torque"),
     ("submergence-negative", _set("well.pump_submergence", "-10 ft"), "well.pump_submergence",
