@@ -253,6 +253,11 @@ def _cached_motion(linkage: Linkage, crank_angle: bytes):
     return found
 
 
+#: The transmission angle between pitman and rear arm may come no nearer a line than this [deg]:
+#: at a toggle the beam's acceleration has no bound (the bundled and catalogue units keep 35-90 deg).
+MIN_TRANSMISSION_ANGLE = 10.0
+
+
 def check_assembly(linkage: Linkage) -> None:
     """Raise :class:`GeometryError` unless the crank turns through a full revolution.
 
@@ -260,7 +265,11 @@ def check_assembly(linkage: Linkage) -> None:
     pitman and rear arm reach it at every crank angle only if (Grashof crank-rocker
     condition, strict so that the unit never locks in a toggle)
 
-        K + R < P + C  and  K - R > |P - C|.
+        K + R < P + C  and  K - R > |P - C|;
+
+    and the transmission angle mu between pitman and rear arm, cos mu = (P^2 + C^2 - d^2) / (2 P C)
+    at the crank pin's distance d = K -+ R from the centre bearing, stays at least
+    :data:`MIN_TRANSMISSION_ANGLE` from 0 and 180 deg (near a toggle the motion has no bound).
 
     Every length must be finite and, except the two offsets, positive.
 
@@ -315,6 +324,15 @@ def check_assembly(linkage: Linkage) -> None:
             f"(|P - C| = |{p:.4g} - {c:.4g}| = {abs(p - c):.4g} m) fold past each other; "
             f"crank_radius is too large or the offsets too small for this pitman/rear_arm"
         )
+    for reach, where in ((k - r, "nearest"), (k + r, "farthest from")):
+        cosine = (p * p + c * c - reach * reach) / (2.0 * p * c)
+        angle = math.degrees(math.acos(max(-1.0, min(1.0, cosine))))
+        if min(angle, 180.0 - angle) < MIN_TRANSMISSION_ANGLE:
+            raise GeometryError(
+                f"the unit is near a toggle: with the crank pin {where} the centre bearing the pitman and rear arm "
+                f"stand {angle:.4g} deg apart, within {MIN_TRANSMISSION_ANGLE:g} deg of a line (pumping units keep "
+                f"30 deg and more); the motion there has no bound: check crank_radius, pitman, rear_arm and the offsets"
+            )
 
 
 def assembly_angle(x: Any, y: Any, reach: Any, rear_arm: float, xp: Any = math) -> Any:

@@ -25,8 +25,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from pumpjack_cli.core.beam.kinematics import uniform_kinematics
-from pumpjack_cli.core.beam.geometry import (CLOCKWISE, COUNTERCLOCKWISE, Linkage, assembly_angle, check_assembly,
-                                             dead_positions)
+from pumpjack_cli.core.beam.geometry import (CLOCKWISE, COUNTERCLOCKWISE, MIN_TRANSMISSION_ANGLE, Linkage,
+                                             assembly_angle, check_assembly, dead_positions)
 from pumpjack_cli.core.beam.linkage import _beam_angle, crank_pin, motion, rod_motion
 from pumpjack_cli.errors import GeometryError
 
@@ -387,7 +387,12 @@ def geometries(draw):
     # 1/rad^2 over a few degrees) that no fixed finite-difference step checks it to 1e-6
     assume(k + r < p + c - 0.1 * k)
     assume(k - r > abs(p - c) + 0.1 * k)
-    return Linkage(a, c, r, p, i, v, rot)
+    linkage = Linkage(a, c, r, p, i, v, rot)
+    try:   # and a transmission angle the package accepts
+        check_assembly(linkage)
+    except GeometryError:
+        assume(False)
+    return linkage
 
 
 PROPERTY_SETTINGS = settings(max_examples=60, deadline=None)
@@ -461,3 +466,17 @@ def test_property_stroke(lk):
     pos = kin.rod.position
     assert pos.min() >= -1e-12 * lk.front_arm
     assert pos.max() <= stroke + 1e-12 * lk.front_arm
+
+
+def test_a_four_bar_near_its_toggle_is_refused():
+    """SK8-3,5-4000's four-bar with the crank 1 mm short of the toggle (K + R = P + C - 1 mm): pitman and
+    rear arm stand within a degree of a line, where the beam's acceleration grows without bound (the
+    helper found it change threefold with the grid); refused. A crank that keeps them 12 deg from a
+    line passes."""
+    k = math.hypot(2.195, 3.0)
+    with pytest.raises(GeometryError, match="near a toggle: with the crank pin farthest from the centre bearing"):
+        check_assembly(Linkage(3.5, 2.5, 5.5 - k - 1e-3, 3.0, 2.195, 3.0))
+    # the crank at which the far transmission angle is 180 - 12 deg: (K + R)^2 = P^2 + C^2 - 2 P C cos(168 deg)
+    reach = math.sqrt(3.0**2 + 2.5**2 - 2 * 3.0 * 2.5 * math.cos(math.radians(180.0 - 12.0)))
+    assert MIN_TRANSMISSION_ANGLE < 12.0
+    check_assembly(Linkage(3.5, 2.5, reach - k, 3.0, 2.195, 3.0))
