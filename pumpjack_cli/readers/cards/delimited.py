@@ -172,8 +172,13 @@ def _header(cells: list[str], default_units: str | None,
 
 
 def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.ndarray:
-    """One column's cells as floats, or a one-line error at the first cell that is not a number."""
+    """One column's cells as floats, or a one-line error at the first cell that is not a number
+    (written with ASCII digits and no underscores: ``float`` would read "4_5.5" and Arabic-Indic
+    digits, which no logger writes)."""
+    joined = "".join(cells)
     try:
+        if "_" in joined or not joined.isascii():
+            raise ValueError
         return np.fromiter(map(float, cells), dtype=float, count=len(cells))
     except ValueError:
         i = next(i for i, cell in enumerate(cells) if not _is_float(cell))
@@ -182,6 +187,8 @@ def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.
 
 
 def _is_float(cell: str) -> bool:
+    if "_" in cell or not cell.isascii():
+        return False
     try:
         float(cell)
     except ValueError:

@@ -75,7 +75,9 @@ def time_card(theta, time) -> str:
 
 BAD_CELLS = {"abc": "'abc' is not a number", "": "is empty", "nan": "is nan, not a finite number",
              "-inf": "is -inf, not a finite number", "1e999": "is 1e999, not a finite number",
-             "12..5": "'12..5' is not a number", "0x1F": "'0x1F' is not a number", "1 000": "'1 000' is not a number"}
+             "12..5": "'12..5' is not a number", "0x1F": "'0x1F' is not a number", "1 000": "'1 000' is not a number",
+             # Python's float reads these two (underscores, Arabic-Indic digits); no logger writes them
+             "4_5.5": "'4_5.5' is not a number", "\u0664\u0665.\u0665": "'\u0664\u0665.\u0665' is not a number"}
 
 CASES: list[tuple[str, str | bytes, str]] = []
 CASES += [(f"cell-{kind}-line{line_of(r)}-{value or 'empty'}", with_cell(r, j, value), f"line {line_of(r)}: {kind} {what}")
