@@ -15,6 +15,7 @@ import importlib
 import json
 import os
 import re
+import sys
 import tomllib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -122,7 +123,14 @@ def _parse_text(path: Path, text: str) -> Any:
     except json.JSONDecodeError as exc:
         raise ConfigError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno}") from None
     except ConfigError as exc:
+        if str(exc).startswith(f"{path}: "):   # said whole already (a YAML error with its line)
+            raise
         raise ConfigError(f"{path}: not valid {name}: {exc}") from None
+    except ValueError as exc:   # Python's limit on the digits of an integer it converts
+        if "digits" not in str(exc):
+            raise
+        raise ConfigError(f"{path}: not valid {name}: an integer of more than {sys.get_int_max_str_digits()} "
+                          f"digits") from None
     except RecursionError:
         raise ConfigError(f"{path}: not valid {name}: nested too deep") from None
     if _depth(data) > MAX_DEPTH:

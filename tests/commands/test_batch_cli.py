@@ -398,6 +398,17 @@ def test_export_and_trend_in_field_units(run_cli, tmp_path):
     assert "pump_displacement_bbl_d" in series and "peak_net_torque_n_m" not in series
 
 
+def test_a_rod_string_file_that_is_not_one_is_an_error_row_naming_its_key(run_cli, tmp_path):
+    rows = field(tmp_path, 1)
+    (tmp_path / "rods.toml").write_text("rod_string = 5\n", encoding="utf-8")
+    path = tmp_path / "m.csv"
+    path.write_text(f"well,unit,card,rod_string\n{rows[0][0]},{rows[0][1]},{rows[0][2]},rods.toml\n")
+    store = tmp_path / "r.sqlite"
+    assert run_cli("batch", path, "--store", store)[0] == 0
+    errors = {row["error"] for row in stored(store).values()}
+    assert errors == {f"{tmp_path / 'rods.toml'}: rod_string: Input should be a valid tuple"}
+
+
 def test_a_rows_counterbalance_moment_and_rod_string_are_the_units_own(run_cli, tmp_path):
     """A manifest row's counterbalance moment and rod string give the results of the single
     commands on the unit file edited the same way."""

@@ -375,3 +375,25 @@ def test_field_error_in_a_file_names_the_file(tmp_path):
     with pytest.raises(ConfigError, match="cannot assemble") as info:
         read_unit_file(path)
     assert str(info.value).startswith(f"{path}: geometry: ")
+
+
+@pytest.mark.parametrize("suffix", [".toml", ".json", ".yaml"])
+def test_an_integer_beyond_pythons_digit_limit_is_one_line(tmp_path, suffix):
+    """An integer of 5001 digits: Python refuses to convert it (a ValueError, not the parser's own
+    error); the reader names the file and the form in one line."""
+    digits = "1" * 5001
+    text = {".toml": f'name = "x"\n[geometry]\nr = {digits}\n', ".json": f'{{"name": "x", "geometry": {{"r": {digits}}}}}',
+            ".yaml": f"name: x\ngeometry:\n  r: {digits}\n"}[suffix]
+    path = tmp_path / f"x{suffix}"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(ConfigError) as info:
+        load_unit(str(path))
+    assert str(info.value) == f"{path}: not valid {suffix[1:].upper()}: an integer of more than 4300 digits"
+
+
+def test_a_yaml_error_names_the_file_once(tmp_path):
+    path = tmp_path / "x.yaml"
+    path.write_text("name: x\ngeometry:\n  r: 1 m\n  r: 2 m\n", encoding="utf-8")
+    with pytest.raises(ConfigError) as info:
+        load_unit(str(path))
+    assert str(info.value).count(str(path)) == 1 and "given twice" in str(info.value)

@@ -145,12 +145,17 @@ def _with_rod_string(unit: UnitConfig, path: str):
     sections = table.get("rod_string") if isinstance(table, dict) else None
     if sections is None:
         raise PumpjackError(f"{path}: no rod_string list in the file")
+    from pydantic import ValidationError
+
+    from ...config.files import format_validation_error
+
     data = unit.model_dump(by_alias=True)
     data["well"]["rod_string"] = sections
     try:
         return type(unit).model_validate(data)
-    except Exception as exc:  # a pydantic ValidationError, reported as the config reader does
-        raise PumpjackError(f"{path}: rod_string: {str(exc).splitlines()[-1].strip()}") from None
+    except ValidationError as exc:   # named as the config reader names it, the rod string's key in the file
+        raise PumpjackError(format_validation_error(str(path), exc, type(unit),
+                                                    lambda loc: ".".join(map(str, loc[1:])))) from None
 
 
 class _PlacedOnce:

@@ -177,7 +177,7 @@ def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.
     digits, which no logger writes)."""
     joined = "".join(cells)
     try:
-        if "_" in joined or not joined.isascii():
+        if ("_" in joined or not joined.isascii()) and not all(map(_is_float, cells)):
             raise ValueError
         return np.fromiter(map(float, cells), dtype=float, count=len(cells))
     except ValueError:
@@ -187,7 +187,8 @@ def _numbers(cells: list[str], kind: str, lines: np.ndarray, source: str) -> np.
 
 
 def _is_float(cell: str) -> bool:
-    if "_" in cell or not cell.isascii():
+    text = cell.strip()   # any whitespace around, a no-break space too, as float strips it
+    if "_" in text or not text.isascii():
         return False
     try:
         float(cell)

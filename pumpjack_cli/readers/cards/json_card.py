@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import sys
 
 import numpy as np
 
@@ -100,9 +101,11 @@ def read(file: CardFile) -> RawCard:
         document = json.loads(text)
     except json.JSONDecodeError as exc:
         raise CardError(f"{source}: line {exc.lineno}: not valid JSON: {exc.msg} (column {exc.colno})") from None
-    except (RecursionError, ValueError) as exc:
-        raise CardError(f"{source}: not valid JSON: {'nested too deep' if isinstance(exc, RecursionError) else exc}"
-                        ) from None
+    except RecursionError:
+        raise CardError(f"{source}: not valid JSON: nested too deep") from None
+    except ValueError as exc:   # Python's limit on the digits of an integer it converts
+        what = f"an integer of more than {sys.get_int_max_str_digits()} digits" if "digits" in str(exc) else exc
+        raise CardError(f"{source}: not valid JSON: {what}") from None
     if not isinstance(document, dict):
         raise CardError(f"{source}: a JSON card is an object with \"S\" and \"F\" arrays (or pumpjack's own "
                         f"output), not a {type(document).__name__}")

@@ -363,3 +363,10 @@ def test_time_stamps_that_give_no_beam_units_speed_are_refused(tmp_path, scale, 
                     encoding="utf-8")
     with pytest.raises(CardError, match=rf"^{path}: its time stamps give {spm:.4g} strokes/min, outside 0.1 \.\. 60"):
         place(cards.read_card(path), load_unit("sk8-3.5-4000").geometry.mechanism())
+
+
+def test_a_json_card_with_an_integer_beyond_pythons_digit_limit_is_one_line(tmp_path):
+    path = tmp_path / "card.json"
+    path.write_text('{"position_m": [0, 1, 2], "load_n": [1, 2, ' + "1" * 5001 + "]}", encoding="utf-8")
+    with pytest.raises(CardError, match=rf"^{path}: not valid JSON: an integer of more than 4300 digits$"):
+        cards.read_card(path)
