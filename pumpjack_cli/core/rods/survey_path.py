@@ -35,6 +35,10 @@ from ...errors import DownholeError
 STRAIGHT = 1e-9
 #: Largest dogleg between two stations [rad]: the arc's plane is undefined at 180 degrees.
 LARGEST_DOGLEG = np.pi - 1e-6
+#: Largest dogleg severity a survey may give [rad/m], 10 deg/m (300 deg/30 m): beyond the sharpest
+#: (short-radius) drilled builds, about 3 deg/ft; sharper is a survey slip (stations out of order,
+#: angles in the wrong unit), and a string through it would carry side loads without bound.
+LARGEST_SEVERITY = np.radians(10.0)
 
 
 def tangent(inclination, azimuth) -> np.ndarray:
@@ -79,7 +83,8 @@ class SurveyPath:
     ------
     DownholeError
         Stations that are not increasing from 0, an inclination outside [0, 180] degrees, a
-        value that is not finite, or a dogleg of 180 degrees between two stations.
+        value that is not finite, a dogleg of 180 degrees between two stations, or a dogleg
+        severity above :data:`LARGEST_SEVERITY`.
 
     Examples
     --------
@@ -118,6 +123,12 @@ class SurveyPath:
             j = int(np.flatnonzero(beta > LARGEST_DOGLEG)[0])
             raise DownholeError(f"the survey turns by 180 degrees between {s[j]:g} m and {s[j + 1]:g} m")
         length = np.diff(s)
+        sharp = np.flatnonzero(beta > LARGEST_SEVERITY * length)
+        if sharp.size:
+            j = int(sharp[0])
+            raise DownholeError(f"the survey turns by {np.degrees(beta[j]):.4g} degrees over {length[j]:.4g} m between "
+                                f"{s[j]:g} m and {s[j + 1]:g} m: {np.degrees(beta[j] / length[j]):.4g} deg/m, above the "
+                                f"{np.degrees(LARGEST_SEVERITY):g} deg/m of the sharpest drilled builds")
         first, second = _arc_weights(beta, np.ones_like(beta))
         steps = length[:, None] * (first[:, None] * t[:-1] + second[:, None] * t[1:])
         positions = np.vstack([np.zeros((1, 3)), np.cumsum(steps, axis=0)])

@@ -91,3 +91,11 @@ def test_impossible_stations_are_refused(depth, inclination, words):
 def test_a_half_turn_between_two_stations_is_refused():
     with pytest.raises(DownholeError, match="turns by 180 degrees between 100 m and 200 m"):
         _path([0, 100, 200], [0, 90, 90], [0, 0, 180])
+
+
+def test_a_turn_sharper_than_any_drilled_build_is_refused():
+    """10 deg/m is the limit: 9.9 degrees of build over one metre passes; 30 degrees over half a metre
+    (60 deg/m, a survey slip) is refused with its stations and rate."""
+    _path([0, 100, 101], [0, 0, 9.9], [0, 0, 0])
+    with pytest.raises(DownholeError, match="turns by 30 degrees over 0.5 m between 100 m and 100.5 m: 60 deg/m"):
+        _path([0, 100, 100.5], [0, 0, 30.0], [0, 0, 0])
