@@ -171,10 +171,14 @@ ProfileOption = Annotated[bool, typer.Option(
 def deviation(survey: Path | None, friction: float | None, guide_limit: str | None, profile: bool):
     """The deviated-well options as the run layer's :class:`~pumpjack_cli.analysis.deviated.Deviation`."""
     from .analysis.deviated import Deviation  # numpy: only when a command runs
+    from .config.well import GUIDE_LIMIT_RANGE
 
     limit = quantity(guide_limit, "force", "--guide-limit")
     if limit is not None and not limit > 0:
         raise PumpjackError(f"--guide-limit {guide_limit}: must be above 0")
+    if limit is not None and not GUIDE_LIMIT_RANGE[0] <= limit <= GUIDE_LIMIT_RANGE[1]:
+        raise PumpjackError(f"--guide-limit {guide_limit}: must lie between {GUIDE_LIMIT_RANGE[0]:g} and "
+                            f"{GUIDE_LIMIT_RANGE[1]:g} N")
     return Deviation(survey, friction, limit, profile)
 
 RuntimeOption = Annotated[str | None, typer.Option(

@@ -201,6 +201,9 @@ def test_quantities_written_wrongly(run_cli, tmp_path, case):
 # --- options ------------------------------------------------------------------------------
 
 OPTIONS = [
+    (["inertia-error", "unb-600a", "--mass", "1e30 kg"], "--mass must be at most 100000 kg (as a unit file's mass)"),
+    (["downhole", "sk8-3.5-4000", "--card", "samples/sk8-3.5-4000-deviated-card.csv", "--survey",
+      "samples/j-well-survey.csv", "--guide-limit", "1e-9 lbf"], "--guide-limit 1e-9 lbf: must lie between 10 and"),
     (["predict", "sk8-3.5-4000", "--gas-exponent", "nan"], "'--gas-exponent': nan is not a finite number"),
     (["compare-redundancy", "sk8-3.5-4000", "--card", SK8_CARD, "--crank-pin-stiffness", "1e-9 N*m/rad"],
      "--crank-pin-stiffness"),

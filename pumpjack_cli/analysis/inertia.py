@@ -146,6 +146,10 @@ def inertia_error(unit: UnitConfig | SliderCrankConfig, spm: float | None, mass:
     """The comparison (or, with ``support``, the stepped slider's support friction) for a unit of any kind."""
     if mass is not None and not mass > 0:
         raise PumpjackError(f"--mass must be positive, got {mass} kg")
+    from ..config.slider_crank import MASS_LIMIT   # the unit file's own bound (its schema is loaded already)
+
+    if mass is not None and mass > MASS_LIMIT:
+        raise PumpjackError(f"--mass must be at most {MASS_LIMIT:g} kg (as a unit file's mass), got {mass:g} kg")
     if unit.kind == "slider-crank":
         omega = parse_quantity(f"{spm} rpm", "rotational_speed") if spm is not None else unit.reciprocating.crank_speed
         if support:

@@ -42,10 +42,15 @@ class SliderCrankGeometry(Section):
         return slider_crank_of(self.crank_radius, self.rod_length, self.offset, self.rotation)
 
 
+
+#: The largest reciprocating mass of a slider-crank machine [kg] (the file's and --mass's limit).
+MASS_LIMIT = 1e5
+
+
 class Reciprocating(Section):
     """The parts moving with the slider, and the crank speed."""
 
-    mass: Mass = Field(gt=0, le=1e5, description="m: piston (plunger), rod and crosshead together [kg]")
+    mass: Mass = Field(gt=0, le=MASS_LIMIT, description="m: piston (plunger), rod and crosshead together [kg]")
     crank_speed: RotationalSpeed = Field(
         gt=0, le=400, description="omega: crank speed, e.g. '65 rpm' = 65 double strokes per minute [rad/s]"
     )

@@ -68,6 +68,11 @@ class RodSection(Section):
         return "steel"
 
 
+#: The side load one coupling or rod guide may carry [N]: at least 10 N (2.2 lbf; a guide that
+#: carries less is none, and the number of guides it would ask for has no bound), at most 1 MN.
+GUIDE_LIMIT_RANGE = (10.0, 1e6)
+
+
 class Well(Section):
     """Downhole data of the well the unit pumps: pump, rods, fluid, tubing, pressures."""
 
@@ -112,7 +117,8 @@ class Well(Section):
         default=None, ge=0, le=1, description="Coulomb friction coefficient of rods and couplings on the tubing "
         "[default: 0.2, docs/deviated.md]")
     rod_guide_side_load_limit: Force | None = Field(
-        default=None, gt=0, le=1e6, description="side load one coupling or rod guide may carry [N], for the rod-guide "
+        default=None, ge=GUIDE_LIMIT_RANGE[0], le=GUIDE_LIMIT_RANGE[1],
+        description="side load one coupling or rod guide may carry [N], for the rod-guide "
         "advice (no published limit was found: docs/deviated.md)")
     rod_joint_length: Annotated[Length, at_least(1.0, "1 m")] = Field(
         default=7.62, le=20, description="length of one rod between couplings [m] (API 11B: 25 or 30 ft)")

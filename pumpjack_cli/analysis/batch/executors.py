@@ -281,8 +281,11 @@ def dask_chunk(chunk: list[tuple[int, dict]], settings: dict) -> list[tuple[int,
 
 
 def _cluster_failure(client, address: str, exc: Exception) -> str:
-    """One line for what went wrong on the cluster: the scheduler lost, or a task that failed."""
-    if client.status != "running":
+    """One line for what went wrong on the cluster: the scheduler lost (the client may still say it is
+    running for a moment after its connection closed), or a task that failed."""
+    from distributed.comm.core import CommClosedError
+
+    if client.status != "running" or isinstance(exc, (CommClosedError, ConnectionError)):
         return f"--scheduler {address}: lost the connection to the scheduler; {RESUME}"
     first = (str(exc).strip().splitlines() or [""])[0][:200]
     return f"--scheduler {address}: a task failed ({type(exc).__name__}: {first}); {RESUME}"
