@@ -151,15 +151,26 @@ def local_pool(workers: int) -> Iterator[LocalPool | None]:
         _stop(pool.executor, others)
 
 
+#: How long a stopped pool's manager thread is waited for to end [s] (it ends at once once its
+#: workers are killed and its pipes unblocked; the bound keeps a stop from hanging).
+MANAGER_END = 5.0
+
+
 def _stop(executor, others: set) -> None:
     """Kill the pool's workers (the processes other than ``others``) and let it go."""
     import multiprocessing
 
     pipes = executor._result_queue, executor._call_queue     # shutdown lets go of them
+    manager = executor._executor_manager_thread
     for process in set(multiprocessing.active_children()) - others:
         process.kill()
     executor.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
     _unblock(*pipes)
+    # the manager thread closes its wake-up pipe as it ends; the interpreter's exit wakes every pool's
+    # manager through that pipe and, in a race with the closing, wrote to a closed one ("Exception
+    # ignored ... Bad file descriptor" on stderr after the one line): let it end first
+    if manager is not None:
+        manager.join(timeout=MANAGER_END)
 
 
 def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
