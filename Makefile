@@ -15,12 +15,8 @@ $(STAMP): pyproject.toml
 demo: $(STAMP)
 	$(VENV)/bin/pumpjack kinematics sk8-3.5-4000 --format table
 
-# The whole test suite (unit, validation, CLI, doctests). The package's bytecode is compiled
-# first, as pip compiles a regular install: the suite starts some hundred interpreters (the
-# console script, batch pools, xdist workers), and where PYTHONDONTWRITEBYTECODE is set each of
-# them would otherwise compile every module it imports from source again.
+# The whole test suite (unit, validation, CLI, doctests).
 test: $(STAMP)
-	$(VENV)/bin/python -m compileall -q pumpjack_cli tests
 	$(VENV)/bin/python -m pytest -q
 
 # Every benchmark in benchmarks/; each prints its throughput.

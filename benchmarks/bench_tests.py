@@ -2,10 +2,9 @@
 
 Run: .venv/bin/python benchmarks/bench_tests.py [--split]
 
-Prints the CPU of a fixed pure-Python loop (the machine's calibration), then runs what the
-Makefile's ``make test`` runs after the install (``python -m compileall -q pumpjack_cli tests``
-from no bytecode, as on a fresh clone, then ``python -m pytest -q`` with two xdist workers from
-pyproject.toml) in the repository and prints the tests counted, the wall time and the user
+Prints the CPU of a fixed pure-Python loop (the machine's calibration), then runs
+``python -m pytest -q`` (the Makefile's ``make test`` after the install; two xdist workers
+from pyproject.toml) in the repository and prints the tests counted, the wall time and the user
 and system CPU of the run and its workers (``resource.getrusage(RUSAGE_CHILDREN)``, what
 ``/usr/bin/time`` reports). With ``--split`` the tests run with the plugin
 ``cpu_per_test.py`` (the CPU of each test, its own and its children's), and the CPU is
@@ -19,7 +18,6 @@ import argparse
 import json
 import os
 import resource
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -75,11 +73,8 @@ def main() -> None:
             environment["PUMPJACK_CPU_SPLIT"] = folder
             environment["PYTHONPATH"] = os.pathsep.join(filter(None, (str(Path(__file__).parent),
                                                                       environment.get("PYTHONPATH"))))
-        for cache in [*ROOT.glob("pumpjack_cli/**/__pycache__"), *ROOT.glob("tests/**/__pycache__")]:
-            shutil.rmtree(cache)  # as on a fresh clone
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         start = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "compileall", "-q", "pumpjack_cli", "tests"], cwd=ROOT, check=True)
         done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, env=environment)
         wall = time.perf_counter() - start
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
