@@ -367,6 +367,12 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
     unit = with_survey(with_overrides(unit, overrides), deviation.survey, deviation.friction, deviation.guide_limit)
     found = predicted(unit, spm, crank_motion, samples, damping, faults)
     cards = found.cards
+    low = cards.summary.minimum_polished_rod_load
+    if low.value < 0.0:
+        warn(f"unit {unit.name}: the predicted polished-rod load falls to {low.value / 1e3:.4g} kN at "
+             f"{np.degrees(low.crank_angle):.4g} deg, below zero: the rods would push the carrier bar, which cannot "
+             f"hold them down (rod float: the clamp lifts off); the card beyond that is not what the unit would see. "
+             f"Slow the unit down")
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
     if found.deviated is not None:  # the cards' datum is the weight along the hole; W_rf stays the whole string's
         whole = unit.rods().buoyant_weight(unit.well.fluid_density)

@@ -194,3 +194,17 @@ def test_a_card_equal_peaks_cannot_balance_is_balanced_for_the_least_peak(run_cl
     assert "cannot be balanced by equal peaks" in err and "(min-peak)" in err
     summary = json.loads(out)["summary"]
     assert summary["recommended_peak_net_torque_n_m"] <= summary["peak_net_torque_n_m"]
+
+
+def test_a_predicted_load_below_zero_is_said(run_cli):
+    """At 30 strokes/min (2.7 times the SK8's rated speed) the predicted polished-rod load falls below
+    zero, which no carrier bar can give (the rods float off it): the run says so, with where; at the
+    rated speed the load stays above zero and nothing is said."""
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--spm", "30", "--damping", "0.1", "--samples", "64",
+                             "--what", "summary", "-f", "json")
+    low = json.loads(out)["summary"]["min_rod_load_n"]
+    assert code == 0 and low < 0
+    assert f"the predicted polished-rod load falls to {low / 1e3:.4g} kN" in err and "rod float" in err
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--damping", "0.1", "--samples", "64", "--what", "summary",
+                             "-f", "json")
+    assert code == 0 and json.loads(out)["summary"]["min_rod_load_n"] > 0 and "rod float" not in err

@@ -167,6 +167,8 @@ def test_provenance_holds_the_input_hashes(well):
     text = well[0].read_text(encoding="utf-8")
     assert hashlib.sha256(CARD.read_bytes()).hexdigest() in text
     assert "pumpjack 0." in text and "electricity price 0.12 per kWh" in text and "drive efficiency 0.9" in text
+    # every option said in words: none printed as Python's None
+    assert "downhole method the default (gibbs; everitt-jennings in a deviated well)" in text and "None" not in text
 
 
 def test_a_unit_without_a_well_gets_the_torque_sections(run_cli, tmp_path):
