@@ -142,6 +142,9 @@ class Well(Section):
                              f"of the pump depth {self.pump_depth:.6g} m)")
         if self.pump_submergence is not None and self.pump_intake_pressure is not None:
             raise ValueError("give pump_submergence or pump_intake_pressure, not both")
+        if self.pump_submergence is not None and self.pump_submergence > self.pump_depth:
+            raise ValueError(f"pump_submergence {self.pump_submergence:.6g} m is more than the pump depth "
+                             f"{self.pump_depth:.6g} m: the fluid level would stand above the wellhead")
         from ..core.rods.pump import TUBING
 
         for name, inner in (("tubing_inner_diameter", self.tubing_inner_diameter),
@@ -209,7 +212,12 @@ class Well(Section):
 
         if self.pump_submergence is None and self.pump_intake_pressure is None:
             return None
-        return pump_pressures(self.pump_vertical_depth(), self.fluid_density, submergence=self.pump_submergence,
+        vertical = self.pump_vertical_depth()
+        if self.pump_submergence is not None and self.pump_submergence > vertical:
+            raise ConfigError(f"well.pump_submergence {self.pump_submergence:.6g} m is more than the pump's true "
+                              f"vertical depth {vertical:.6g} m (the survey {self.survey}): the fluid level would "
+                              f"stand above the wellhead")
+        return pump_pressures(vertical, self.fluid_density, submergence=self.pump_submergence,
                               intake_pressure=self.pump_intake_pressure, tubing_head_pressure=self.tubing_head_pressure,
                               casing_head_pressure=self.casing_head_pressure)
 
@@ -244,6 +252,10 @@ def _survey_path(file: str, pump_depth: float) -> SurveyPath:
     if path.depth < pump_depth - 1e-6:
         raise ConfigError(f"{file}: the survey reaches {path.depth:.6g} m of measured depth, short of the pump "
                           f"depth {pump_depth:.6g} m")
+    vertical = float(path.vertical_depth(pump_depth))
+    if not vertical > 0.0:
+        raise ConfigError(f"{file}: the survey puts the pump ({pump_depth:.6g} m measured) at a true vertical depth "
+                          f"of {vertical:.4g} m, at or above the wellhead: no fluid column stands over it")
     return path
 
 

@@ -237,6 +237,8 @@ INVALID = [
     ("phase-beyond-half-turn", _set("masses.counterweights.phase", "200 deg"), "masses.counterweights.phase",
      "less than or equal to 3.141592653589793 rad (180 deg); got 3.49066 rad (200 deg)"),
     # 1460 rpm / (2 x 900 mm / 250 mm) = 202.8 strokes/min
+    ("submergence-above-the-wellhead", _set("well.pump_submergence", "2000 m"), "well",
+     "pump_submergence 2000 m is more than the pump depth 1530 m"),
     ("drive-beyond-pumping-speeds", _set("drive.gearbox_ratio", 2), "drive",
      "motor, sheaves and gearbox turn the crank at 202.8 strokes/min at the motor's rated speed, outside 0.1 .. 60"),
     ("designation-rating-beyond-any-unit", _set("designation", "C-99999999999999999999D-133-54"), "designation",

@@ -76,3 +76,21 @@ def test_files_are_read_as_every_input_is(tmp_path):
         read_survey(binary)
     with pytest.raises(ConfigError, match="missing.csv: cannot read: no such file"):
         read_survey(tmp_path / "missing.csv")
+
+
+def test_a_survey_that_lifts_the_pump_above_the_wellhead_is_refused(tmp_path, run_cli):
+    """Down 300 m, then a build to 150 deg: the hole climbs back, and at 1530 m measured the SK8's pump
+    would sit above the wellhead, with no fluid column over it; refused naming the survey. Short of
+    that, a fluid level above the pump's true vertical depth is refused naming the key and the survey."""
+    survey = tmp_path / "updip.csv"
+    survey.write_text("measured_depth_m,inclination_deg,azimuth_deg\n0,0,0\n300,0,0\n600,90,0\n900,120,0\n"
+                      "1700,150,0\n", encoding="utf-8")
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--survey", survey, "--samples", "64")
+    assert (code, out) == (2, "")
+    assert f"{survey}: the survey puts the pump (1530 m measured) at a true vertical depth of -" in err
+    assert err.count("\n") == 1
+    survey.write_text("measured_depth_m,inclination_deg,azimuth_deg\n0,0,0\n300,0,0\n600,90,0\n900,120,0\n"
+                      "1600,120,0\n", encoding="utf-8")
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--survey", survey, "--samples", "64", "--submergence", "100 m")
+    assert (code, out) == (2, "")
+    assert "well.pump_submergence 100 m is more than the pump's true vertical depth" in err and str(survey) in err
