@@ -168,7 +168,10 @@ def _runtime(row: dict, number: int, source: str) -> float | None:
 
 def _jobs(row: dict, number: int, folder: Path, source: str) -> list[Job]:
     for name in REQUIRED_COLUMNS:
-        if not isinstance(row.get(name), str) or not row[name].strip():
+        value = row.get(name)
+        if value is not None and not isinstance(value, str):
+            raise _row_error(source, number, f"{name}: {value!r} is not text")
+        if value is None or not value.strip():
             raise _row_error(source, number, f"{name} is empty")
     extra = set(row) - set(REQUIRED_COLUMNS + OPTIONAL_COLUMNS)
     if extra:

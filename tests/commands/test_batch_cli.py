@@ -138,6 +138,8 @@ def test_export_and_trend(run_cli, tmp_path):
      "line 8: well is empty"),
     ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nrod_string = 5\n",
      "line 1: rod_string: 5 is not a file name"),
+    ("[[cards]]\nwell = 5\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\n", "line 1: well: 5 is not text"),
+    ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = ['x.csv']\n", "line 1: card: ['x.csv'] is not text"),
     ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nspm = true\n", "line 1: spm: true is not a number"),
     ("[[cards]]\nwell = 'w'\nunit = 'sk8-3.5-4000'\ncard = 'x.csv'\nspm = nan\n", "line 1: spm: nan is outside"),
     ("well,unit,card,counterbalance_moment\nw,sk8-3.5-4000,x.csv,1e300 N*m\n",
