@@ -173,7 +173,9 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
 
 #: A pump card may do no less work on the fluid than minus this share of (surface stroke x surface load
 #: range): a pump takes no energy from the fluid column, and below it the damping or the card is wrong.
-PUMP_WORK_TOLERANCE = 0.02
+#: The margin leaves a card of little work (a pump nearly off, gas-locked) to its diagnosis when a
+#: given damping factor slightly overshoots its dissipation.
+PUMP_WORK_TOLERANCE = 0.1
 
 
 def _backwards_pump_cards(cards: list, surfaces: dict, pumps: dict, good: list[int], pump_works: np.ndarray,
