@@ -273,7 +273,8 @@ def _below_zero(low: float, peak: float, source: str) -> CardError | None:
     if low < -NEGATIVE_SHARE * max(peak, 0.0):
         return CardError(f"{source}: its minimum load {low * _KN:.4g} kN is below zero by more than "
                          f"{NEGATIVE_SHARE:.0%} of its peak {peak * _KN:.4g} kN; the polished rod's load is never "
-                         f"below zero (the carrier bar cannot push the rods down): the load cell's zero?")
+                         f"below zero (the carrier bar cannot push the rods down): the load cell's zero, or the "
+                         f"rods floating off the carrier bar (too fast for them to fall)?")
     return None
 
 
