@@ -143,7 +143,9 @@ class JointsConfig(Section):
 #: The largest counterbalance moment M a unit file may give or imply [N·m].
 MOMENT_LIMIT = 1e7
 #: A counterbalance effect tells the counterbalance only where the torque factor is at least this
-#: share of its largest: nearer a dead position the moment it implies grows without bound.
+#: share of its largest, and crank counterweights' torque (M sin) at least this share of M: nearer a
+#: dead position, or with the counterweights' arm nearer the vertical, the moment it implies grows
+#: without bound.
 CBE_TORQUE_FACTOR_SHARE = 0.05
 #: The SI unit of each rating, for messages.
 RATING_UNITS = {"gearbox_torque": "N·m", "structure_load": "N", "max_stroke": "m"}
@@ -322,6 +324,13 @@ class UnitConfig(Section):
             raise ConfigError(f"{where}: at {math.degrees(angle):.4g} deg the torque factor is below "
                               f"{100 * CBE_TORQUE_FACTOR_SHARE:g} % of its largest, too near a dead position for the "
                               f"effect to tell the counterbalance; give it measured with the cranks nearer horizontal")
+        if model.variable == "counterbalance_moment":
+            share = abs(float(model.torque_per_value(test)[0]))
+            if share < CBE_TORQUE_FACTOR_SHARE:
+                raise ConfigError(f"{where}: at {math.degrees(angle):.4g} deg the counterweights' arm stands within "
+                                  f"{math.degrees(math.asin(share)):.2g} deg of the vertical, where their torque is "
+                                  f"{100 * share:.2g} % of M: the effect measured there does not tell the moment; give "
+                                  f"it measured with the cranks nearer horizontal")
         try:
             value = value_for_effect(test, model, effect)
         except TorqueError as exc:

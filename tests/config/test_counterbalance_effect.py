@@ -151,3 +151,14 @@ def test_an_effect_implying_a_moment_no_file_may_give_is_refused(tmp_path, run_c
     path.write_text(text, encoding="utf-8")
     code, _, err = run_cli("torque", path, "--card", sample_card("c-228d-213-86"))
     assert code == 2 and "above the 1e+07 N·m of [counterbalance] moment" in err and err.count("\n") == 1, err
+
+
+def test_an_effect_where_the_counterweights_hang_vertical_is_refused(tmp_path, run_cli):
+    """M-912D-365-168 at 340 deg: the torque factor is still over 5 % of its largest, but the
+    counterweights' arm (its tail, +19 deg) stands 1 deg from the vertical, so their torque is 1.7 %
+    of M: a measured effect there would stand for an unbounded moment; refused."""
+    source = REPO_ROOT / "configs" / "m-912d-365-168.toml"
+    path = _with_counterbalance(tmp_path, source, "m912.toml",
+                                'counterbalance_effect = "17000 lbf"\ncounterbalance_effect_angle = "340 deg"')
+    code, _, err = run_cli("torque", path, "--card", sample_card("m-912d-365-168"))
+    assert code == 2 and "where their torque is 1.7 % of M" in err and err.count("\n") == 1, err
