@@ -185,12 +185,25 @@ def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
         queue = iter(chunks)
         running = {submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, IN_FLIGHT * pool.workers)}
         while running:
-            finished, running = wait(running, return_when=FIRST_COMPLETED)
+            finished, running = wait(running, timeout=WORKER_CHECK, return_when=FIRST_COMPLETED)
+            if not finished and _a_worker_died(pool.executor):
+                # a worker killed while it wrote a result leaves the pool's reader waiting for the rest of
+                # the message for ever, and the pool never says it is broken: say it here
+                raise BrokenProcessPool
             for future in finished:
                 store_chunk(future.result())
                 running |= {submit(analyse_chunk, chunk, settings) for chunk in itertools.islice(queue, 1)}
     except BrokenProcessPool:
         raise PumpjackError(f"a worker process ended abruptly (killed, or out of memory); {RESUME}") from None
+
+
+#: How often a local pool's run looks whether a worker died while no task finished [s].
+WORKER_CHECK = 1.0
+
+
+def _a_worker_died(executor) -> bool:
+    """Whether a process of the pool has ended (its workers end only with the pool)."""
+    return any(process.exitcode is not None for process in list((executor._processes or {}).values()))
 
 
 def _unblock(results, calls) -> None:
