@@ -179,3 +179,11 @@ def read_text(path: Path | str, limit: int, what: str, error: type[PumpjackError
     """The text of a file (``"-"``: ``stream``) of at most ``limit`` bytes (:func:`read_bytes`),
     UTF-8 only (:func:`decode_text`)."""
     return decode_text(read_bytes(path, limit, what, error, stream), display_name(path), error)
+
+
+def digit_limit(exc: ValueError) -> str | None:
+    """What a ValueError of Python's limit on the digits of an integer it converts means to a user
+    (a parser of TOML, JSON or YAML raises it, not its own error), or None for any other."""
+    if "digits" not in str(exc):
+        return None
+    return f"an integer of more than {sys.get_int_max_str_digits()} digits"

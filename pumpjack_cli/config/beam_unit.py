@@ -149,17 +149,19 @@ MOMENT_LIMIT = 1e7
 CBE_TORQUE_FACTOR_SHARE = 0.05
 #: The SI unit of each rating, for messages.
 RATING_UNITS = {"gearbox_torque": "N·m", "structure_load": "N", "max_stroke": "m"}
+#: The largest value of each rating, of [rating] and of a designation alike (SI).
+RATING_LIMITS = {"gearbox_torque": 1e7, "structure_load": 1e7, "max_stroke": 20.0}
 
 
 class Rating(Section):
     """Ratings of the unit, completing or overriding what its designation gives ([API11E], [GOST5866])."""
 
     gearbox_torque: Annotated[Torque, at_least(1.0, "1 N*m")] | None = Field(
-        default=None, gt=0, le=1e7, description="gearbox (reducer) peak torque rating [N·m]")
+        default=None, gt=0, le=RATING_LIMITS["gearbox_torque"], description="gearbox (reducer) peak torque rating [N·m]")
     structure_load: Annotated[Force, at_least(1.0, "1 N")] | None = Field(
-        default=None, gt=0, le=1e7, description="structure (polished-rod load) rating [N]")
+        default=None, gt=0, le=RATING_LIMITS["structure_load"], description="structure (polished-rod load) rating [N]")
     max_stroke: Annotated[Length, at_least(0.01, "10 mm")] | None = Field(
-        default=None, gt=0, le=20, description="maximum polished-rod stroke [m]")
+        default=None, gt=0, le=RATING_LIMITS["max_stroke"], description="maximum polished-rod stroke [m]")
 
 
 class CounterbalanceConfig(Section):
@@ -218,10 +220,8 @@ class UnitConfig(Section):
                 found = parse_designation(text, designation_types())
             except DesignationError as exc:
                 raise ValueError(str(exc)) from None
-            limits = {name: field.metadata for name, field in Rating.model_fields.items()}
-            for name in limits:
+            for name, top in RATING_LIMITS.items():
                 value = getattr(found, name)
-                top = next(m.le for m in limits[name] if hasattr(m, "le"))
                 if value > top:
                     raise ValueError(f"unit designation {text!r}: its {name.replace('_', ' ')} rating {value:.4g} "
                                      f"{RATING_UNITS[name]} is above {top:g} {RATING_UNITS[name]}, the limit of "

@@ -15,13 +15,12 @@ import importlib
 import json
 import os
 import re
-import sys
 import tomllib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..errors import ConfigError
-from ..text_input import read_text
+from ..text_input import digit_limit, read_text
 if TYPE_CHECKING:  # an operator's catalogue is read only when a command is given one
     from .catalogue import Catalogue, CatalogueRow
 
@@ -126,11 +125,11 @@ def _parse_text(path: Path, text: str) -> Any:
         if str(exc).startswith(f"{path}: "):   # said whole already (a YAML error with its line)
             raise
         raise ConfigError(f"{path}: not valid {name}: {exc}") from None
-    except ValueError as exc:   # Python's limit on the digits of an integer it converts
-        if "digits" not in str(exc):
+    except ValueError as exc:
+        what = digit_limit(exc)
+        if what is None:
             raise
-        raise ConfigError(f"{path}: not valid {name}: an integer of more than {sys.get_int_max_str_digits()} "
-                          f"digits") from None
+        raise ConfigError(f"{path}: not valid {name}: {what}") from None
     except RecursionError:
         raise ConfigError(f"{path}: not valid {name}: nested too deep") from None
     if _depth(data) > MAX_DEPTH:

@@ -17,12 +17,12 @@ from __future__ import annotations
 import json
 import math
 import re
-import sys
 
 import numpy as np
 
 from ...errors import CardError
 from ...names import written_names
+from ...text_input import digit_limit
 from .raw import (CardFile, Column, RawCard, assemble, count_points, in_si, show, stated_spm, unit_of,
                   written_card)
 
@@ -103,9 +103,8 @@ def read(file: CardFile) -> RawCard:
         raise CardError(f"{source}: line {exc.lineno}: not valid JSON: {exc.msg} (column {exc.colno})") from None
     except RecursionError:
         raise CardError(f"{source}: not valid JSON: nested too deep") from None
-    except ValueError as exc:   # Python's limit on the digits of an integer it converts
-        what = f"an integer of more than {sys.get_int_max_str_digits()} digits" if "digits" in str(exc) else exc
-        raise CardError(f"{source}: not valid JSON: {what}") from None
+    except ValueError as exc:
+        raise CardError(f"{source}: not valid JSON: {digit_limit(exc) or exc}") from None
     if not isinstance(document, dict):
         raise CardError(f"{source}: a JSON card is an object with \"S\" and \"F\" arrays (or pumpjack's own "
                         f"output), not a {type(document).__name__}")
