@@ -189,14 +189,18 @@ class PumpMarch:
         # product with the cycle's loads so far gives both sums of a step
         self.past = np.stack([model.velocity_kernel[n:0:-1], model.position_kernel[n:0:-1]])
         self.tail = model.response.hat[:, n:0:-1].copy()
+        self.powers = np.ascontiguousarray(model.response.powers[:, :n].T)
         self.samples = n
 
     def carried(self) -> tuple[np.ndarray, np.ndarray]:
         """Downward velocity [m/s] and displacement [m] of the rod end at the cycle's samples
         due to earlier pump loads."""
         m = self.model.modes
-        states = (m.bottom * self.carry)[:, None] * self.model.response.powers[:, :self.samples]
-        return np.sum(modal_velocity(m, states), axis=0), (states.imag / m.damped_frequency[:, None]).sum(axis=0)
+        start = m.bottom * self.carry
+        # the states at sample n are start_k e^{lambda_k h n}; their sums over the modes (modal_velocity
+        # and q = Im / omega_dk, summed) are one product of the powers with two vectors of the modes
+        free, moved = (self.powers @ np.stack([start, start / m.damped_frequency], axis=1)).T
+        return free.real - 0.5 * m.damping * moved.imag, moved.imag
 
     def cycle(self, known_velocity: np.ndarray, known_position: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Pump load [N] and plunger position relative to the barrel [m] over one cycle;
