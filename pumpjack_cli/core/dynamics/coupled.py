@@ -29,8 +29,8 @@ from ...errors import PredictionError
 from ..constants import STEEL_DENSITY
 from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.predict_solver import (STEERING, Convergence, WellModel, modal_velocity, spectral_derivatives,
-                                   well_model, with_step)
+from ..rods.predict_solver import (STEERING, Convergence, WellModel, carried_response, modal_velocity,
+                                   spectral_derivatives, well_model, with_step)
 from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString
 from .coefficients import Machine, gravity_torque, reduced_inertia
@@ -156,10 +156,7 @@ class _Channels:
 
     def carried(self, model: WellModel, carry: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Rod-end velocity and displacement and top force at the block's samples from the modal states carried in."""
-        m = model.modes
-        states = carry[:, None] * self.response.powers[:, :samples]
-        q = states.imag / m.damped_frequency[:, None]
-        return m.bottom @ modal_velocity(m, states), m.bottom @ q, (m.participation * m.frequency**2) @ q
+        return carried_response(model.modes, carry, self.response.powers[:, :samples])
 
 
 #: Samples of the uniform prediction that gives the first guess of the mean crank speed.

@@ -115,6 +115,18 @@ def with_step(model: WellModel, step: float, samples: int) -> WellModel:
     return replace(model, response=response, velocity_kernel=kernel, position_kernel=position)
 
 
+def carried_response(modes: RodModes, carry: np.ndarray,
+                     powers: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The rod end's downward velocity [m/s] and displacement [m] and the dynamic force at the
+    top [N] at the samples of ``powers`` (modes x samples, e^{lambda_k h n}) from the modal
+    states ``carry`` at the first: the sums over the modes of modal_velocity, q = Im / omega_dk
+    and omega_k^2 q, weighted by the modes' values at the joints, as one product of the powers."""
+    weights = np.stack([modes.bottom, modes.bottom / modes.damped_frequency,
+                        modes.participation * modes.frequency**2 / modes.damped_frequency]) * carry
+    free, moved, top = weights @ powers
+    return free.real - 0.5 * modes.damping * moved.imag, moved.imag, top.imag
+
+
 def spectral_derivatives(values: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
     """First and second time derivatives of periodic samples on t_k = k T / N, by FFT
     (exact for a trigonometric polynomial; the Nyquist term is dropped from the first)."""
@@ -189,18 +201,14 @@ class PumpMarch:
         # product with the cycle's loads so far gives both sums of a step
         self.past = np.stack([model.velocity_kernel[n:0:-1], model.position_kernel[n:0:-1]])
         self.tail = model.response.hat[:, n:0:-1].copy()
-        self.powers = np.ascontiguousarray(model.response.powers[:, :n].T)
         self.samples = n
 
     def carried(self) -> tuple[np.ndarray, np.ndarray]:
         """Downward velocity [m/s] and displacement [m] of the rod end at the cycle's samples
         due to earlier pump loads."""
-        m = self.model.modes
-        start = m.bottom * self.carry
-        # the states at sample n are start_k e^{lambda_k h n}; their sums over the modes (modal_velocity
-        # and q = Im / omega_dk, summed) are one product of the powers with two vectors of the modes
-        free, moved = (self.powers @ np.stack([start, start / m.damped_frequency], axis=1)).T
-        return free.real - 0.5 * m.damping * moved.imag, moved.imag
+        velocity, position, _ = carried_response(self.model.modes, self.carry,
+                                                 self.model.response.powers[:, :self.samples])
+        return velocity, position
 
     def cycle(self, known_velocity: np.ndarray, known_position: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Pump load [N] and plunger position relative to the barrel [m] over one cycle;
