@@ -477,6 +477,8 @@ SECTIONS: tuple[Section, ...] = (
         E("machine_energy_residual", "ratio", "(motor work − polished-rod work) / motor work over a cycle of the "
           "coupled solution"),
         E("cycles", "count", "cycles marched to the periodic state"),
+        E("repeat_strokes", "count", "strokes after which the predicted state repeats: 1, or 2 to 4 when a pump "
+          "pounding fluid settles into unlike strokes (the cards are the one of the highest load)"),
         E("revolutions", "count", "revolutions of the coupled solution marched to the periodic state"),
         E("{extreme}_inertia_torque", "torque", "{extreme} inertia torque of links and drive over the cycle"),
         E("{extreme}_inertia_torque_crank_angle", "angle", "crank angle of the {extreme} inertia torque"),

@@ -298,6 +298,7 @@ def _card_summary(cards: Prediction, nu: float, fillage: float) -> list[Scalar]:
         Scalar("rod_energy_residual", s.energy_residual),
         Scalar("polished_rod_power", s.polished_rod_power),
         Scalar("cycles", c.cycles),
+        Scalar("repeat_strokes", c.strokes),
         Scalar("periodicity_error", c.change),
     ]
 
@@ -359,6 +360,18 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
     return rows
 
 
+def _warn_alternating(name: str, summary) -> None:
+    """Say so when the pump's state repeats only after several strokes (:func:`~pumpjack_cli.core.rods.predict.assemble`)."""
+    strokes = summary.convergence.strokes
+    if strokes > 1:
+        peaks = ", ".join(f"{peak / 1e3:.4g}" for peak in summary.stroke_peak_loads)
+        volumes = ", ".join(f"{volume * 1e3:.4g}" for volume in summary.stroke_displacements)
+        warn(f"unit {name}: the pump settles into a cycle of {strokes} unlike strokes (fluid pound: each stroke "
+             f"meets the fluid where the rods' vibration from the one before leaves the plunger), peak polished-rod "
+             f"loads {peaks} kN, pump displacements {volumes} l; the cards are those of the highest load, the works, "
+             f"power and production the means of the {strokes} strokes")
+
+
 def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,
             overrides: WellOverrides = WellOverrides(), service_factor: float = 1.0,
             steps: int = SUMMARY_STEPS, deviation: Deviation = Deviation(), faults: Faults = Faults()) -> Result:
@@ -373,6 +386,7 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
              f"{np.degrees(low.crank_angle):.4g} deg, below zero: the rods would push the carrier bar, which cannot "
              f"hold them down (rod float: the clamp lifts off); the card beyond that is not what the unit would see. "
              f"Slow the unit down")
+    _warn_alternating(unit.name, cards.summary)
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
     if found.deviated is not None:  # the cards' datum is the weight along the hole; W_rf stays the whole string's
         whole = unit.rods().buoyant_weight(unit.well.fluid_density)

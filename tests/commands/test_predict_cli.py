@@ -13,6 +13,7 @@ import csv
 import io
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -208,3 +209,21 @@ def test_a_predicted_load_below_zero_is_said(run_cli):
     code, out, err = run_cli("predict", "sk8-3.5-4000", "--damping", "0.1", "--samples", "64", "--what", "summary",
                              "-f", "json")
     assert code == 0 and json.loads(out)["summary"]["min_rod_load_n"] > 0 and "rod float" not in err
+
+
+def test_a_pump_whose_strokes_alternate_is_predicted_with_its_strokes_named(run_cli):
+    """C-228D-213-86 pounding fluid at 15 strokes/min and 40 % fillage settles into two unlike strokes
+    (tests/core/rods/test_alternating_strokes.py): predict prints the cards of the stroke of the higher
+    load and says so with both strokes' peaks and displacements; production is their mean."""
+    code, out, err = run_cli("predict", "c-228d-213-86", "--spm", "15", "--fillage", "40 %", "--what", "summary",
+                             "-f", "json")
+    assert code == 0, err
+    summary = json.loads(out)["summary"]
+    assert summary["repeat_strokes"] == 2
+    said = re.search(r"a cycle of 2 unlike strokes .* peak polished-rod loads ([\d.]+), ([\d.]+) kN, pump displacements "
+                     r"([\d.]+), ([\d.]+) l; the cards are those of the highest load", err)
+    assert said, err
+    peaks, volumes = [float(x) for x in said.groups()[:2]], [float(x) for x in said.groups()[2:]]
+    assert summary["max_rod_load_n"] / 1e3 == pytest.approx(max(peaks), abs=0.01)
+    per_day = 86400 * summary["strokes_per_minute_spm"] / 60 * np.mean(volumes) / 1e3
+    assert summary["pump_displacement_m3_d"] == pytest.approx(per_day, rel=1e-3)

@@ -18,7 +18,11 @@ Periodic steady state: the pump is marched sample by sample, cycle after cycle, 
 the periodic response to the rigid-rod load (F_o on the upstroke), until the pump load
 and plunger position repeat to ``tolerance``; the rods' response to the polished rod
 is periodic from the start (exact), and to the pump load it is carried between cycles
-in the modal states. The cards are then evaluated from the periodic pump load.
+in the modal states. The cards are then evaluated from the periodic pump load. A pump
+that pounds fluid may settle into strokes that alternate (the rods' vibration left by one
+stroke's hit of the fluid moves where the next one hits) and repeat only after 2 to 4
+strokes; the periodic state is then that of those strokes together, and the cards are the
+stroke of the highest polished-rod load (:func:`assemble`).
 """
 
 from __future__ import annotations
@@ -31,7 +35,7 @@ from ...errors import PredictionError
 from ..mechanism import Mechanism
 from ..constants import STANDARD_GRAVITY, STEEL_DENSITY
 from .predict_solver import (Convergence, PumpMarch, WellModel, converge, periodic_carry,
-                             periodic_fields, spectral_derivatives, well_model)
+                             periodic_fields, spectral_derivatives, well_model, with_step)
 from .pump import Pump
 from .pump_faults import pump_chamber
 from .string import RodString
@@ -61,6 +65,9 @@ class PredictionSummary:
     per cycle [m^3] and rate [m^3/s]. Works per cycle [J]: surface card (polished-rod
     work), pump card (work on the fluid), damping dissipation; energy_residual = (surface
     - pump - damping) / surface; polished_rod_power [W] = surface work / period [s].
+    When the pump's state repeats only after several strokes (``convergence.strokes``), the
+    loads and strokes are the shown stroke's, the works and production the strokes' means,
+    and stroke_peak_loads [N] and stroke_displacements [m^3] give each stroke's (in order).
     """
 
     peak_polished_rod_load: CardExtreme
@@ -80,6 +87,8 @@ class PredictionSummary:
     polished_rod_power: float
     period: float
     convergence: Convergence
+    stroke_peak_loads: tuple[float, ...] = ()
+    stroke_displacements: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -180,18 +189,38 @@ def predict(rods: RodString, pump: Pump, position: np.ndarray, period: float, *,
 
 
 def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np.ndarray, velocity: np.ndarray,
-             top_drive: np.ndarray, load: np.ndarray, discharged: float, period: float,
+             top_drive: np.ndarray, load: np.ndarray, discharged: float | tuple[float, ...], period: float,
              convergence: Convergence) -> Prediction:
-    """Cards and summary from the periodic pump load and the polished-rod motion (up positive)."""
+    """Cards and summary from the periodic pump load and the polished-rod motion (up positive).
+
+    ``load`` holds one stroke's pump load, or the pump loads of strokes that repeat together
+    (strokes x samples, :func:`~.predict_solver.converge`) with the liquid each discharged:
+    the rods' response is then periodic over those strokes, and the cards are those of the
+    stroke with the highest polished-rod load (the one the rods and the gearbox must bear),
+    the works, dissipation and production per stroke the means of the strokes, so that the
+    energy balance holds as for one stroke (the rods store different energies at the
+    strokes' starts).
+    """
     pump = model.pump
-    fields = periodic_fields(model, load, -position, -velocity, top_drive)
-    joint = fields.joint_force + model.weight_below[:, None]
-    polished = joint[0]
-    plunger = -fields.plunger_down
-    step = period / position.size
-    surface = float(np.sum(fields.joint_force[0] * velocity) * step)
-    pump_work = float(np.sum(0.5 * (load + np.roll(load, -1)) * (np.roll(plunger, -1) - plunger)))
-    net = discharged / pump.plunger_area
+    loads = np.atleast_2d(load)
+    strokes, samples = loads.shape
+    volumes = np.atleast_1d(np.asarray(discharged, dtype=float))
+    step = period / samples
+    if strokes > 1:
+        model = with_step(model, step, strokes * samples)
+    fields = periodic_fields(model, loads.ravel(), -np.tile(position, strokes), -np.tile(velocity, strokes),
+                             np.tile(top_drive, strokes))
+    joint = (fields.joint_force + model.weight_below[:, None]).reshape(-1, strokes, samples)
+    peaks = joint[0].max(axis=1)
+    shown = int(np.argmax(peaks))
+    polished, load = joint[0, shown], loads[shown]
+    plungers = -fields.plunger_down
+    plunger = plungers.reshape(strokes, samples)[shown]
+    surface = float(np.sum(fields.joint_force[0] * np.tile(velocity, strokes)) * step) / strokes
+    pump_work = float(np.sum(0.5 * (loads.ravel() + np.roll(loads.ravel(), -1))
+                             * (np.roll(plungers, -1) - plungers))) / strokes
+    dissipation = fields.dissipation / strokes
+    per_stroke = float(np.sum(volumes)) / strokes
     f_o = pump.fluid_load
     summary = PredictionSummary(
         peak_polished_rod_load=card_extreme(polished, time, angle, np.argmax),
@@ -200,17 +229,19 @@ def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np
         fluid_load=f_o,
         polished_rod_stroke=float(np.ptp(position)),
         gross_plunger_stroke=float(np.ptp(plunger)),
-        net_plunger_stroke=net,
+        net_plunger_stroke=per_stroke / pump.plunger_area,
         static_stretch=f_o * (model.modes.static_compliance + 1.0 / pump.tubing_stiffness),
-        pump_displacement=discharged,
-        pump_rate=discharged / period,
+        pump_displacement=per_stroke,
+        pump_rate=per_stroke / period,
         surface_card_work=surface,
         pump_card_work=pump_work,
-        damping_dissipation=fields.dissipation,
-        energy_residual=(surface - pump_work - fields.dissipation) / surface if surface != 0 else 0.0,
+        damping_dissipation=dissipation,
+        energy_residual=(surface - pump_work - dissipation) / surface if surface != 0 else 0.0,
         polished_rod_power=surface / period,
         period=period,
         convergence=convergence,
+        stroke_peak_loads=tuple(float(peak) for peak in peaks),
+        stroke_displacements=tuple(float(volume) for volume in volumes),
     )
     return Prediction(
         time=time,
@@ -221,8 +252,8 @@ def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np
         plunger_position=plunger,
         pump_load=load,
         chamber_pressure=pump.discharge_pressure - load / pump.plunger_area,
-        taper_top_load=joint[:-1],
-        taper_bottom_load=joint[1:],
+        taper_top_load=joint[:-1, shown],
+        taper_bottom_load=joint[1:, shown],
         summary=summary,
     )
 

@@ -29,12 +29,16 @@ MODE_CUTOFF = 2.0
 @dataclass(frozen=True)
 class Convergence:
     """How the periodic state was found: cycles marched, the largest change per cycle
-    (pump load / F_o and plunger position / polished-rod stroke), the tolerance, modes kept."""
+    (pump load / F_o and plunger position / polished-rod stroke), the tolerance, modes kept,
+    and the strokes after which the state repeats (1; 2 to :data:`LONGEST_REPEAT` when the
+    pump settles into a cycle of alternating strokes, the last change then being the one over
+    that many strokes)."""
 
     cycles: int
     changes: tuple[float, ...]
     tolerance: float
     modes: int
+    strokes: int = 1
 
     @property
     def change(self) -> float:
@@ -246,28 +250,51 @@ def periodic_carry(model: WellModel, pump_load: np.ndarray) -> np.ndarray:
     return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0]
 
 
-def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float,
-             tolerance: float, max_cycles: int) -> tuple[np.ndarray, np.ndarray, float, Convergence]:
-    """March cycles until the largest relative change of pump load and plunger position is below
-    tolerance; returns the last cycle's load and position, the liquid it discharged [m^3], and how."""
+#: Most strokes after which a pump's marched state may repeat and be taken as its periodic state.
+LONGEST_REPEAT = 4
+#: Smallest change over one stroke [-] for a state repeating after several strokes to be taken
+#: as such: below it the strokes are one converging state, marched on to the tolerance.
+DISTINCT_STROKES = 1e-4
+
+
+def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float, tolerance: float,
+             max_cycles: int) -> tuple[np.ndarray, np.ndarray, tuple[float, ...], Convergence]:
+    """March cycles until the pump load and plunger position repeat to ``tolerance`` (largest
+    relative change), after one stroke or, failing that, after 2 to :data:`LONGEST_REPEAT`
+    strokes that differ from each other by more than :data:`DISTINCT_STROKES`: a pump that
+    pounds fluid can settle into alternating strokes, each hitting the fluid where the rods'
+    vibration from the stroke before leaves it, and then has no state repeating every stroke.
+    Returns the pump load and plunger position of the repeating strokes (strokes x samples),
+    the liquid each discharged [m^3], and how."""
     if not max_cycles >= 2:
         raise PredictionError(f"at least 2 cycles are needed to see the state repeat, got max_cycles {max_cycles}")
     changes: list[float] = []
-    previous = None
+    marched: list[tuple[np.ndarray, np.ndarray, float]] = []
+
+    def change(k: int) -> float:
+        (load, position, _), (before, before_position, _) = marched[-1], marched[-1 - k]
+        shift = position - before_position
+        return max(float(np.max(np.abs(load - before))) / load_scale,
+                   float(np.max(np.abs(shift - np.mean(shift)))) / position_scale)
+
     for _ in range(max_cycles):
         discharged = march.chamber.discharge
         load, position = march.cycle(known.plunger_velocity_down, known.plunger_down)
-        if previous is not None:
-            shift = position - previous[1]
-            changes.append(max(float(np.max(np.abs(load - previous[0]))) / load_scale,
-                               float(np.max(np.abs(shift - np.mean(shift)))) / position_scale))
-            if changes[-1] <= tolerance:
-                return (load, position, march.chamber.discharge - discharged,
-                        Convergence(len(changes) + 1, tuple(changes), tolerance, march.model.modes.count))
+        marched = [*marched[-LONGEST_REPEAT:], (load, position, march.chamber.discharge - discharged)]
+        if len(marched) > 1:
+            changes.append(change(1))
+            repeats = [k for k in range(1, len(marched)) if (k == 1 or changes[-1] > DISTINCT_STROKES)
+                       and change(k) <= tolerance]
+            if repeats:
+                strokes = marched[-repeats[0]:]
+                return (np.stack([row[0] for row in strokes]), np.stack([row[1] for row in strokes]),
+                        tuple(row[2] for row in strokes),
+                        Convergence(len(changes) + 1, (*changes[:-1], change(repeats[0])), tolerance,
+                                    march.model.modes.count, repeats[0]))
         if march.model.pump.gas_exponent is not None:
             march.chamber.rebase(float(position.min()))
-        previous = (load, position)
     raise PredictionError(
         f"the periodic pump cycle did not converge in {max_cycles} cycles (last change {changes[-1]:.3g}, "
-        f"tolerance {tolerance:g}); raise the damping factor or loosen the tolerance"
+        f"tolerance {tolerance:g}, no repeat within {LONGEST_REPEAT} strokes either); raise the damping factor "
+        f"or loosen the tolerance"
     )
