@@ -361,15 +361,21 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
 
 
 def _warn_alternating(name: str, summary) -> None:
-    """Say so when the pump's state repeats only after several strokes (:func:`~pumpjack_cli.core.rods.predict.assemble`)."""
-    strokes = summary.convergence.strokes
-    if strokes > 1:
+    """Say so when the pump's state repeats only after several strokes, or only to more than the
+    tolerance (:func:`~pumpjack_cli.core.rods.predict_solver.converge`)."""
+    c = summary.convergence
+    if c.strokes > 1:
         peaks = ", ".join(f"{peak / 1e3:.4g}" for peak in summary.stroke_peak_loads)
         volumes = ", ".join(f"{volume * 1e3:.4g}" for volume in summary.stroke_displacements)
-        warn(f"unit {name}: the pump settles into a cycle of {strokes} unlike strokes (fluid pound: each stroke "
+        warn(f"unit {name}: the pump settles into a cycle of {c.strokes} unlike strokes (fluid pound: each stroke "
              f"meets the fluid where the rods' vibration from the one before leaves the plunger), peak polished-rod "
              f"loads {peaks} kN, pump displacements {volumes} l; the cards are those of the highest load, the works, "
-             f"power and production the means of the {strokes} strokes")
+             f"power and production the means of the {c.strokes} strokes")
+    if c.change > c.tolerance:
+        warn(f"unit {name}: the pump's state repeats to {c.change:.2g} of the fluid load (its largest change at one "
+             f"sample), not to the tolerance {c.tolerance:g}, once the rods' transient has died away: a valve event "
+             f"moves by a sample from stroke to stroke (periodicity_error); a finer --samples or a higher damping "
+             f"settles it")
 
 
 def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int, damping: float | None,

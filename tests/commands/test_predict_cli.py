@@ -227,3 +227,25 @@ def test_a_pump_whose_strokes_alternate_is_predicted_with_its_strokes_named(run_
     assert summary["max_rod_load_n"] / 1e3 == pytest.approx(max(peaks), abs=0.01)
     per_day = 86400 * summary["strokes_per_minute_spm"] / 60 * np.mean(volumes) / 1e3
     assert summary["pump_displacement_m3_d"] == pytest.approx(per_day, rel=1e-3)
+
+
+def test_a_state_taken_above_the_tolerance_is_said_with_its_change(run_cli, monkeypatch):
+    """When the march takes a state that repeats only within USABLE_CHANGE (a valve event moving by a
+    sample, tests/core/rods/test_alternating_strokes.py), the run prints its change as
+    periodicity_error and says that it is above the tolerance (here the real march's result is handed
+    on with its change set to 3e-4)."""
+    import dataclasses
+
+    import pumpjack_cli.core.rods.predict as core_predict
+
+    real = core_predict.converge
+
+    def taken_above(*args):
+        loads, positions, volumes, how = real(*args)
+        return loads, positions, volumes, dataclasses.replace(how, changes=(*how.changes[:-1], 3e-4))
+
+    monkeypatch.setattr(core_predict, "converge", taken_above)
+    code, out, err = run_cli("predict", "sk8-3.5-4000", "--damping", "0.1", "--what", "summary", "-f", "json")
+    assert code == 0, err
+    assert json.loads(out)["summary"]["periodicity_error"] == 3e-4
+    assert "the pump's state repeats to 0.0003 of the fluid load" in err and "not to the tolerance 1e-08" in err

@@ -255,6 +255,11 @@ LONGEST_REPEAT = 4
 #: Smallest change over one stroke [-] for a state repeating after several strokes to be taken
 #: as such: below it the strokes are one converging state, marched on to the tolerance.
 DISTINCT_STROKES = 1e-4
+#: Largest change [-] of a state that keeps changing from stroke to stroke once every transient
+#: has died away, for it to be taken as the periodic state (and said): a pump's events snap to
+#: the samples, and a fluid hit that moves by a sample from stroke to stroke changes the load of
+#: that one sample by up to a share of F_o that the step sets, while the card does not change.
+USABLE_CHANGE = 1e-2
 
 
 def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float, tolerance: float,
@@ -264,11 +269,20 @@ def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale:
     strokes that differ from each other by more than :data:`DISTINCT_STROKES`: a pump that
     pounds fluid can settle into alternating strokes, each hitting the fluid where the rods'
     vibration from the stroke before leaves it, and then has no state repeating every stroke.
+
+    After ``max_cycles``, when the rods' transient has decayed below the tolerance (every mode
+    decays as e^{-c t / 2}: e^{-c T max_cycles / 2} <= tolerance) and each of the last
+    2 x :data:`LONGEST_REPEAT` strokes has repeated the one before within :data:`USABLE_CHANGE`, the
+    last stroke is the state, its change (above the tolerance) in the returned :class:`Convergence`
+    (strokes nearly alike that repeat only after several are such a state too, not a cycle of
+    unlike strokes).
+
     Returns the pump load and plunger position of the repeating strokes (strokes x samples),
     the liquid each discharged [m^3], and how."""
     if not max_cycles >= 2:
         raise PredictionError(f"at least 2 cycles are needed to see the state repeat, got max_cycles {max_cycles}")
     changes: list[float] = []
+    repeats: list[dict[int, float]] = []
     marched: list[tuple[np.ndarray, np.ndarray, float]] = []
 
     def change(k: int) -> float:
@@ -277,24 +291,31 @@ def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale:
         return max(float(np.max(np.abs(load - before))) / load_scale,
                    float(np.max(np.abs(shift - np.mean(shift)))) / position_scale)
 
+    def state(strokes: int) -> tuple[np.ndarray, np.ndarray, tuple[float, ...], Convergence]:
+        last = marched[-strokes:]
+        return (np.stack([row[0] for row in last]), np.stack([row[1] for row in last]), tuple(row[2] for row in last),
+                Convergence(len(changes) + 1, (*changes[:-1], repeats[-1][strokes]), tolerance,
+                            march.model.modes.count, strokes))
+
     for _ in range(max_cycles):
         discharged = march.chamber.discharge
         load, position = march.cycle(known.plunger_velocity_down, known.plunger_down)
         marched = [*marched[-LONGEST_REPEAT:], (load, position, march.chamber.discharge - discharged)]
         if len(marched) > 1:
-            changes.append(change(1))
-            repeats = [k for k in range(1, len(marched)) if (k == 1 or changes[-1] > DISTINCT_STROKES)
-                       and change(k) <= tolerance]
-            if repeats:
-                strokes = marched[-repeats[0]:]
-                return (np.stack([row[0] for row in strokes]), np.stack([row[1] for row in strokes]),
-                        tuple(row[2] for row in strokes),
-                        Convergence(len(changes) + 1, (*changes[:-1], change(repeats[0])), tolerance,
-                                    march.model.modes.count, repeats[0]))
+            repeats.append({k: change(k) for k in range(1, len(marched))})
+            changes.append(repeats[-1][1])
+            found = [k for k, value in repeats[-1].items() if (k == 1 or changes[-1] > DISTINCT_STROKES)
+                     and value <= tolerance]
+            if found:
+                return state(found[0])
         if march.model.pump.gas_exponent is not None:
             march.chamber.rebase(float(position.min()))
+    period = march.model.response.step * march.samples
+    if (np.exp(-0.5 * march.model.modes.damping * period * max_cycles) <= tolerance
+            and max(changes[-2 * LONGEST_REPEAT:]) <= USABLE_CHANGE):
+        return state(1)
     raise PredictionError(
         f"the periodic pump cycle did not converge in {max_cycles} cycles (last change {changes[-1]:.3g}, "
         f"tolerance {tolerance:g}, no repeat within {LONGEST_REPEAT} strokes either); raise the damping factor "
-        f"or loosen the tolerance"
+        f"or the samples per cycle, or loosen the tolerance"
     )

@@ -78,11 +78,14 @@ def test_the_energy_balance_closes_over_the_two_strokes(alternating):
 
 
 class _Repeating:
-    """A stand-in for the pump's march: its cycles are given pump loads and plunger positions."""
+    """A stand-in for the pump's march: its cycles are given pump loads (plunger positions 0), one
+    second long, the rods' modes damped by ``damping`` [1/s]."""
 
-    def __init__(self, loads):
-        self.loads, self.model = iter(loads), type("Model", (), {"modes": type("Modes", (), {"count": 0}),
-                                                                 "pump": type("Pump", (), {"gas_exponent": None})})
+    def __init__(self, loads, damping: float = 1.0):
+        modes = type("Modes", (), {"count": 0, "damping": damping})
+        self.loads, self.samples = iter(loads), 2
+        self.model = type("Model", (), {"modes": modes, "pump": type("Pump", (), {"gas_exponent": None}),
+                                        "response": type("Response", (), {"step": 0.5})})
         self.chamber = type("Chamber", (), {"discharge": 0.0})()
 
     def cycle(self, velocity, position):
@@ -115,3 +118,19 @@ def test_no_repeat_within_the_longest_is_refused():
     loads = [np.array([np.sin(k), 0.0]) for k in range(50)]
     with pytest.raises(PredictionError, match=f"no repeat within {LONGEST_REPEAT} strokes"):
         converge(_Repeating(loads), KNOWN, 1.0, 1.0, 1e-8, 50)
+
+
+def test_a_state_jittering_after_the_transient_is_taken_with_its_change():
+    """A load that keeps changing by up to 2e-3 at one sample from stroke to stroke and repeats after no
+    number of strokes (a valve event moving by a sample) is the state once the rods' transient has decayed below the tolerance over the cycles
+    marched (e^{-c T n / 2} = e^{-20} < 1e-8 at c = 1/s, T = 1 s, 40 cycles), its change returned;
+    with a damping too light for the transient to have died (c = 0.1/s: e^{-2}), it is refused."""
+    loads = [np.array([1.0, 1e-3 * np.sin(k)]) for k in range(40)]
+    found, _, _, how = converge(_Repeating(loads), KNOWN, 1.0, 1.0, 1e-8, 40)
+    assert how.strokes == 1 and how.change == pytest.approx(1e-3 * abs(np.sin(39) - np.sin(38)), rel=1e-12)
+    assert np.array_equal(found, [loads[-1]])
+    with pytest.raises(PredictionError, match="did not converge in 40 cycles"):
+        converge(_Repeating(loads, damping=0.1), KNOWN, 1.0, 1.0, 1e-8, 40)
+    wild = [np.array([1.0, 0.1 * (-1) ** k * (1 + k % 3)]) for k in range(40)]
+    with pytest.raises(PredictionError, match="no repeat within"):
+        converge(_Repeating(wild), KNOWN, 1.0, 1.0, 1e-8, 40)
