@@ -239,8 +239,14 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     closing, midway_up, opening = (_first_crossing(x, y, upstroke, level, True) for level in TRANSFER_LEVELS)
     released, fillage, drained = (_first_crossing(x, y, downstroke, level, False) for level in TRANSFER_LEVELS[::-1])
     pickup, unloading = opening - closing, released - drained
-    speed = np.abs(ahead(x) - behind(x)) * samples / 4.0   # / mean speed 2 S / T
-    slow = (speed >= SLOW[0]) & (speed <= SLOW[1])
+    # the plunger's velocity / its mean speed 2 S / T, from its position averaged over the window
+    # (cyclically): noise on a card's load makes the computed plunger jitter where it rests at a
+    # turn, and a resting plunger is neither rising nor falling slowly
+    half = window // 2
+    padded = np.concatenate((x[:, samples - half:], x, x[:, :half]), axis=1)
+    steady = np.lib.stride_tricks.sliding_window_view(padded, window, axis=1).mean(axis=-1)
+    velocity = (ahead(steady) - behind(steady)) * samples / 4.0
+    slow = (np.abs(velocity) >= SLOW[0]) & (np.abs(velocity) <= SLOW[1])
     with np.errstate(invalid="ignore", divide="ignore"):
         sharpness = unloading / (1.0 - drained)
     work = series_work(np.fft.rfft(p, axis=1), np.fft.rfft(f, axis=1), samples)
@@ -250,8 +256,8 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
         travelling_valve_closing=closing, standing_valve_opening=opening, standing_valve_closing=released,
         travelling_valve_opening=drained, fillage=fillage, gross_stroke=stroke,
         pickup_travel=pickup * stroke, unloading_travel=unloading * stroke, unloading_sharpness=sharpness,
-        slow_upstroke_load=_masked(raw, upstroke & (x >= 1.0 - END_TRAVEL) & slow, np.nanmean),
-        slow_downstroke_load=_masked(raw, downstroke & (x <= END_TRAVEL) & slow, np.nanmean),
+        slow_upstroke_load=_masked(raw, upstroke & (x >= 1.0 - END_TRAVEL) & slow & (velocity > 0), np.nanmean),
+        slow_downstroke_load=_masked(raw, downstroke & (x <= END_TRAVEL) & slow & (velocity < 0), np.nanmean),
         bottom_spike=-_masked(spiky, x <= SPIKE_TRAVEL, np.nanmin),
         top_spike=_masked(spiky, x >= 1.0 - SPIKE_TRAVEL, np.nanmax) - 1.0,
         area_ratio=work / (reference * stroke),
