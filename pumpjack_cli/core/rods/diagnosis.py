@@ -243,8 +243,8 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     # (cyclically): noise on a card's load makes the computed plunger jitter where it rests at a
     # turn, and a resting plunger is neither rising nor falling slowly
     half = window // 2
-    padded = np.concatenate((x[:, samples - half:], x, x[:, :half]), axis=1)
-    steady = np.lib.stride_tricks.sliding_window_view(padded, window, axis=1).mean(axis=-1)
+    padded = np.cumsum(np.concatenate((x[:, samples - half - 1:], x, x[:, :half]), axis=1), axis=1)
+    steady = (padded[:, window:] - padded[:, :-window]) / window
     velocity = (ahead(steady) - behind(steady)) * samples / 4.0
     slow = (np.abs(velocity) >= SLOW[0]) & (np.abs(velocity) <= SLOW[1])
     with np.errstate(invalid="ignore", divide="ignore"):
