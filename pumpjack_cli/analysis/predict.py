@@ -103,9 +103,13 @@ def with_overrides(unit: UnitConfig, overrides: WellOverrides):
         changed = type(well).model_validate(data)
     except ValidationError as exc:
         error = exc.errors()[0]
-        field = str(error["loc"][0]) if error["loc"] else ""
-        option = next((option for f, option in _OVERRIDES.values() if f == field), f"well.{field}")
-        raise PumpjackError(f"{option}: {error_message(error, type(well))}") from None
+        if error["loc"]:
+            field = str(error["loc"][0])
+            where = next((option for f, option in _OVERRIDES.values() if f == field), f"well.{field}")
+        else:   # the well as a whole (its fields together): the options given, with the unit's [well]
+            given = [option for name, (_, option) in _OVERRIDES.items() if getattr(overrides, name) is not None]
+            where = f"{', '.join(given)} with the unit's [well]" if given else "well"
+        raise PumpjackError(f"{where}: {error_message(error, type(well))}") from None
     return unit.model_copy(update={"well": changed})
 
 

@@ -145,6 +145,8 @@ def test_field_units(run_json):
     (("predict", "c-80d-133-48", "--crank-motion", "dynamic"), "[masses]"),
     (("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--spm", "8"), "--spm"),
     (("predict", "unb-600a"), "not a beam pumping unit"),
+    (("predict", "7sk12-2.5-5600", "--unanchored-tubing", "2-3/8"),
+     "--unanchored-tubing with the unit's [well]: plunger_diameter 56 mm does not pass through the tubing"),
     (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--steps", "100"), "the wave model takes --samples"),
     (("dynamics", "sk8-3.5-4000", "--well-model", "wave", "--samples", "10"), "--samples"),
     (("dynamics", "sk8-3.5-4000", "--samples", "100"), "--samples applies to --well-model wave"),
