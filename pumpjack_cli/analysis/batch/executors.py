@@ -160,17 +160,22 @@ def _stop(executor, others: set) -> None:
     """Kill the pool's workers (the processes other than ``others``) and let it go."""
     import multiprocessing
 
-    pipes = executor._result_queue, executor._call_queue     # shutdown lets go of them
+    results, calls = executor._result_queue, executor._call_queue     # shutdown lets go of them
     manager = executor._executor_manager_thread
     for process in set(multiprocessing.active_children()) - others:
         process.kill()
     executor.shutdown(wait=False, cancel_futures=True)   # its workers are killed: nothing to wait for
-    _unblock(*pipes)
+    _unblock_results(results, calls)
     # the manager thread closes its wake-up pipe as it ends; the interpreter's exit wakes every pool's
     # manager through that pipe and, in a race with the closing, wrote to a closed one ("Exception
     # ignored ... Bad file descriptor" on stderr after the one line): let it end first
     if manager is not None:
         manager.join(timeout=MANAGER_END)
+    if calls is not None and (manager is None or manager.is_alive()):
+        # the manager closes the task pipe's reading end as it finds the pool broken; closed here as
+        # well while it ran, the two closes raced (EBADF in its thread, or another file's descriptor
+        # closed): only when it did not get there
+        calls._reader.close()
 
 
 def on_pool(pool: LocalPool, chunks, settings: dict, store_chunk) -> None:
@@ -206,20 +211,21 @@ def _a_worker_died(executor) -> bool:
     return any(process.exitcode is not None for process in list((executor._processes or {}).values()))
 
 
-def _unblock(results, calls) -> None:
+def _unblock_results(results, calls) -> None:
     """Let the pool's threads end after its workers were killed, so that the interpreter's exit,
     which joins them, does not wait for ever. A worker killed while it wrote a task's results
     leaves half a message in the results pipe, which the manager thread would read for ever:
     closing this process's end of the pipe's writing side (the workers' ends closed by their
-    deaths) ends that read. A task being written to the workers' pipe when they died fills it
-    for good: the task queue's feeder thread is not waited for, and this process's end of that
-    pipe's reading side is closed so that its write fails. (concurrent.futures keeps the pipes
-    as ``_result_queue`` and ``_call_queue``, and forgets them at its shutdown.)"""
+    deaths) ends that read, and the manager then finds the pool broken. A task being written to
+    the workers' pipe when they died fills it for good: the task queue's feeder thread is not
+    waited for, and the manager, finding the pool broken, closes this process's end of that
+    pipe's reading side so that the write fails (CPython gh-94777; :func:`_stop` closes it when the
+    manager does not get there). (concurrent.futures keeps the pipes as ``_result_queue`` and
+    ``_call_queue``, and forgets them at its shutdown.)"""
     if results is not None:
         results._writer.close()
     if calls is not None:
         calls.cancel_join_thread()
-        calls._reader.close()
 
 
 @contextmanager
