@@ -144,6 +144,8 @@ def test_field_units(run_json):
     (("predict", "c-114d-133-54"), "give the speed with --spm"),
     (("predict", "c-80d-133-48", "--crank-motion", "dynamic"), "[masses]"),
     (("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--spm", "8"), "--spm"),
+    (("predict", "sk8-3.5-4000", "--crank-motion", "dynamic", "--fillage", "70 %"),
+     "settle into a cycle of 2 unlike revolutions"),
     (("predict", "unb-600a"), "not a beam pumping unit"),
     (("predict", "7sk12-2.5-5600", "--unanchored-tubing", "2-3/8"),
      "--unanchored-tubing with the unit's [well]: plunger_diameter 56 mm does not pass through the tubing"),

@@ -29,8 +29,8 @@ from ...errors import PredictionError
 from ..constants import STEEL_DENSITY
 from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.predict_solver import (STEERING, Convergence, WellModel, carried_response, modal_velocity,
-                                   spectral_derivatives, well_model, with_step)
+from ..rods.predict_solver import (DISTINCT_STROKES, LONGEST_REPEAT, STEERING, Convergence, WellModel,
+                                   carried_response, modal_velocity, spectral_derivatives, well_model, with_step)
 from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString
 from .coefficients import Machine, gravity_torque, reduced_inertia
@@ -276,21 +276,32 @@ class _CoupledMarch:
         if not max_revolutions >= 2:
             raise PredictionError(f"at least 2 revolutions are needed to see the state repeat, got {max_revolutions}")
         changes: list[float] = []
-        previous = None
+        blocks: list["_Revolution"] = []
         f_o = max(self.model.pump.fluid_load, 1.0)
         stroke = self.machine.linkage.stroke
+
+        def change(block: "_Revolution", previous: "_Revolution") -> float:
+            return max(float(np.max(np.abs(block.load - previous.load))) / f_o,
+                       _shape_change(block.relative, previous.relative) / stroke,
+                       float(np.max(np.abs(block.omega - previous.omega))) / self.omega,
+                       abs(block.step - previous.step) / block.step)
+
         for revolution in range(max_revolutions):
             discharged = self.chamber.discharge
             block = self._revolution(revolution)
-            if previous is not None:
-                changes.append(max(float(np.max(np.abs(block.load - previous.load))) / f_o,
-                                   _shape_change(block.relative, previous.relative) / stroke,
-                                   float(np.max(np.abs(block.omega - previous.omega))) / self.omega,
-                                   abs(block.step - previous.step) / block.step))
+            blocks = [*blocks[-LONGEST_REPEAT:], block]
+            if len(blocks) > 1:
+                changes.append(change(block, blocks[-2]))
                 if changes[-1] <= tolerance:
                     convergence = Convergence(len(changes) + 1, tuple(changes), tolerance, self.model.modes.count)
                     return self._result(block, self.chamber.discharge - discharged, convergence)
-            previous = block
+                repeat = next((k for k in range(2, len(blocks)) if change(block, blocks[-1 - k]) <= tolerance), None)
+                if repeat is not None and changes[-1] > DISTINCT_STROKES:
+                    raise PredictionError(
+                        f"the coupled machine and rods settle into a cycle of {repeat} unlike revolutions (a pump "
+                        f"pounding fluid where the rods' vibration from the stroke before leaves it, the crank's speed "
+                        f"following): the coupled solution is of a state repeating every revolution; predict at "
+                        f"uniform speed (--crank-motion uniform) reports strokes that alternate")
         raise PredictionError(
             f"the coupled machine and rods did not reach a periodic state in {max_revolutions} revolutions "
             f"(last change {changes[-1]:.3g}, tolerance {tolerance:g})")
