@@ -26,7 +26,7 @@ from ..core.rods.deviated_predict import predict_deviated, predict_deviated_card
 from ..core.rods.predict import Prediction, predict_cards
 from ..core.rods.pump_faults import hanging_pump, parted_damping, parted_string, tag_stops
 from ..core.sampling import crank_grid, cycle_period, uniform_time
-from ..errors import BalanceError, PumpjackError, warn
+from ..errors import BalanceError, PredictionError, PumpjackError, warn
 from ..results import Column, Curve, Panel, Result, Scalar
 from .card_runs import CardRun
 from .deviated import (Deviation, deviated_path, friction_coefficient, profile_result, survey_summary, surveyed,
@@ -160,7 +160,10 @@ def _faulty(unit: UnitConfig, string, well_pump, omega: float, nu: float, sample
         if faults.words() != "parted rods":
             raise PumpjackError("--parted-at: nothing hangs on a parted string's free end; no other pump fault "
                                 "applies")
-        hanging = parted_string(string, depth)
+        try:
+            hanging = parted_string(string, depth)
+        except PredictionError as exc:
+            raise PumpjackError(f"--parted-at: {exc}") from None
         return hanging, cards(hanging, hanging_pump(well_pump), parted_damping(string, hanging, nu))
     displacement = well_pump.plunger_area * mechanism.stroke * omega / (2.0 * np.pi)
     leaks = [rate if share is None else share * displacement
@@ -397,6 +400,10 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
              f"hold them down (rod float: the clamp lifts off); the card beyond that is not what the unit would see. "
              f"Slow the unit down")
     _warn_alternating(unit.name, cards.summary)
+    if cards.summary.pump_displacement < 0.0:
+        warn(f"unit {unit.name}: the pump's valves leak more than it lifts, and the tubing drains back into the well "
+             f"through it ({cards.summary.pump_rate * 86400.0:.4g} m³/d, a negative pump_displacement): with the "
+             f"tubing's pressure held, as the model holds it; in a well the fluid column falls until the leaks stop")
     summary = _card_summary(cards, found.damping, unit.well.pump_fillage)
     if found.deviated is not None:  # the cards' datum is the weight along the hole; W_rf stays the whole string's
         whole = unit.rods().buoyant_weight(unit.well.fluid_density)

@@ -159,7 +159,8 @@ def test_bad_production_options_get_one_line_and_exit_2(run_cli, argv, words):
     (("--tag-top", "30 m"), "the top tag must be within the plunger's stroke"),
     (("--travelling-valve-leak", "-5 m3/d"), "--travelling-valve-leak: '-5 m3/d' must be above 0"),
     (("--standing-valve-leak", "5 kg"), "--standing-valve-leak"),
-    (("--parted-at", "150 %"), "the break must lie between the polished rod and the pump"),
+    (("--parted-at", "150 %"), "--parted-at: the break must lie a rod's length"),
+    (("--parted-at", "1e-300 m"), "--parted-at: the break must lie a rod's length"),
     (("--parted-at", "50 %", "--tag-top", "3 cm"), "--parted-at: nothing hangs on a parted string's free end"),
     (("--travelling-valve-leak", "50 %", "--fillage", "80 %"), "valve leaks are modelled with a pump full of liquid"),
 ])
@@ -240,3 +241,19 @@ def test_batch_tells_a_pump_going_off_from_gas_coming_and_going(run_cli, tmp_pat
     columns = next(csv.DictReader(io.StringIO(out)))
     assert columns["pump_condition"] in ("gas_interference", "fluid_pound")
     assert float(columns["runtime_percent"]) == pytest.approx(100 * 20 / 24)
+
+
+def test_a_pump_whose_leaks_outrun_it_lifts_nothing_and_both_leaking_drain_the_tubing(run_cli):
+    """A travelling valve leaking ten times the displacement rate: the plunger lifts nothing, and the
+    pump's displacement is 0, not the chamber bookkeeping's 1e-11 m of net stroke either side of it.
+    Both valves leaking three times the rate let the tubing drain through the pump: a negative
+    displacement, said with its rate (the model holds the tubing's pressure)."""
+    code, out, err = run_cli("predict", UNIT, "--spm", "8", "--damping", "0.1", "--travelling-valve-leak", "1000 %",
+                             "--what", "summary", "-f", "json")
+    summary = json.loads(out)["summary"]
+    assert code == 0 and summary["net_pump_stroke_m"] == 0.0 == summary["pump_displacement_m3_d"], err
+    code, out, err = run_cli("predict", UNIT, "--spm", "8", "--damping", "0.1", "--travelling-valve-leak", "300 %",
+                             "--standing-valve-leak", "300 %", "--what", "summary", "-f", "json")
+    rate = json.loads(out)["summary"]["pump_displacement_m3_d"]
+    assert code == 0 and rate < 0
+    assert f"the tubing drains back into the well through it ({rate:.4g} m³/d" in err

@@ -44,6 +44,9 @@ from .string import RodString
 DEFAULT_TOLERANCE = 1e-8
 #: Cycles marched at most.
 MAX_CYCLES = 400
+#: Liquid discharged per stroke taken as none, as a share of the plunger's swept volume: what the
+#: sums of the chamber's volumes leave of nothing (a leak beyond the pump's rate: some 1e-11).
+ROUNDING = 1e-9
 
 
 @dataclass(frozen=True)
@@ -221,6 +224,8 @@ def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np
                              * (np.roll(plungers, -1) - plungers))) / strokes
     dissipation = fields.dissipation / strokes
     per_stroke = float(np.sum(volumes)) / strokes
+    if abs(per_stroke) <= ROUNDING * pump.plunger_area * float(np.ptp(plungers)):
+        per_stroke = 0.0    # the chamber's bookkeeping of a pump that lifts nothing (a leak beyond its rate)
     f_o = pump.fluid_load
     summary = PredictionSummary(
         peak_polished_rod_load=card_extreme(polished, time, angle, np.argmax),

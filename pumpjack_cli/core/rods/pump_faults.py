@@ -182,6 +182,11 @@ class FaultyChamber(PumpChamber):
 # --- a parted string and the stops of a tagging pump, for the predictive model -----------
 
 
+#: The shortest piece of rod a break can leave hanging or below it [m]: 2 ft, the shortest pony
+#: rod of [API11B] (a string parts at a rod, a pin or a coupling).
+SHORTEST_ROD = 0.6096
+
+
 def parted_string(rods: RodString, depth: float) -> RodString:
     """The rods left hanging from the polished rod when the string parts ``depth`` [m] down
     (measured along the rods): the sections above the break, the last one cut short.
@@ -190,9 +195,10 @@ def parted_string(rods: RodString, depth: float) -> RodString:
     >>> parted_string(rods, 550.0).length.tolist()
     [400.0, 150.0]
     """
-    if not (math.isfinite(depth) and 0.0 < depth < rods.total_length):
-        raise PredictionError(f"the break must lie between the polished rod and the pump (0 .. "
-                              f"{rods.total_length:.6g} m along the rods), got {depth:.6g} m")
+    if not (math.isfinite(depth) and SHORTEST_ROD <= depth <= rods.total_length - SHORTEST_ROD):
+        raise PredictionError(f"the break must lie a rod's length ({SHORTEST_ROD:g} m, the shortest pony rod) or more "
+                              f"below the polished rod and above the pump ({SHORTEST_ROD:g} .. "
+                              f"{rods.total_length - SHORTEST_ROD:.6g} m along the rods), got {depth:.6g} m")
     ends = np.cumsum(rods.length)
     keep = int(np.searchsorted(ends, depth)) + 1
     length = rods.length[:keep].copy()

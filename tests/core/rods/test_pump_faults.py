@@ -207,9 +207,12 @@ def test_fault_data_that_make_no_pump_are_refused_in_one_line(sk8_pump, changes,
 
 
 def test_a_break_outside_the_string_is_refused(sk8_rods):
-    for depth in (0.0, sk8_rods.total_length, -5.0):
-        with pytest.raises(PredictionError, match="the break must lie between"):
+    """Outside the string, or leaving less than the shortest pony rod (2 ft, [API11B]) above or below
+    the break: a break 1e-300 m down left a section of no length."""
+    for depth in (0.0, 1e-300, 0.5, sk8_rods.total_length - 0.5, sk8_rods.total_length, -5.0, math.nan):
+        with pytest.raises(PredictionError, match="the break must lie a rod's length"):
             parted_string(sk8_rods, depth)
+    assert parted_string(sk8_rods, 0.7).total_length == pytest.approx(0.7, rel=1e-12)
 
 
 def test_faults_are_simulated_at_uniform_speed_only(sk8_unit, sk8_rods, sk8_pump):
