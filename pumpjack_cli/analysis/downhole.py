@@ -165,12 +165,22 @@ def downholes(unit: UnitConfig, cards: list, spm: float | None, crank_motion: st
     marks = dead_position_marks(linkage)
     for i, k in enumerate(good):
         with collected_warnings() as noted:
+            points = surfaces[k][0].load.size
+            if points < CONDITION_POINTS:
+                warn(f"{cards[k].name}: {points} points a stroke are too few to read the pump's condition at the "
+                     f"stroke's ends (tagging, valve leaks; at least {CONDITION_POINTS}): pump_condition "
+                     f"{conditions.label[i]} rests on a card that does not resolve them")
             found[k] = _downhole_result(unit, cards[k], surfaces[k][1], pumps[k], string, method, rows, i, deviation,
                                         marks if tables else None)
         said[k] += noted
     return [(result, tuple(notes)) for result, notes in zip(found, said)]
 
 
+#: Fewest points of a surface card per stroke for its pump's condition to be read without a word: the
+#: ends of the stroke, where tagging and leaks show (a tenth of the travel each, about a fifth of the
+#: cycle), need five points each (a spike's 3-point mean with a neighbour either side); a 16-point
+#: card's Fourier ringing at the load's pickup read as a tag.
+CONDITION_POINTS = 25
 #: A pump card may do no less work on the fluid than minus this share of (surface stroke x surface load
 #: range): a pump takes no energy from the fluid column, and below it the damping or the card is wrong.
 #: The margin leaves a card of little work (a pump nearly off, gas-locked) to its diagnosis when a

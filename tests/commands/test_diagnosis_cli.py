@@ -12,6 +12,7 @@ import csv
 import io
 import json
 import math
+import re
 import sqlite3
 from dataclasses import replace
 from pathlib import Path
@@ -23,6 +24,8 @@ from pumpjack_cli.config import load_unit
 from pumpjack_cli.core.rods.predict import predict_cards
 from pumpjack_cli.core.rods.pump import pump_pressures
 from pumpjack_cli.core.rods.pump_faults import hanging_pump, parted_damping, parted_string
+
+from helpers import sample_card
 
 UNIT = "c-80d-133-48"        # the API unit of [Guo2007] without link masses: the API torque, quick
 SPM = 8.0
@@ -257,3 +260,22 @@ def test_a_pump_whose_leaks_outrun_it_lifts_nothing_and_both_leaking_drain_the_t
     rate = json.loads(out)["summary"]["pump_displacement_m3_d"]
     assert code == 0 and rate < 0
     assert f"the tubing drains back into the well through it ({rate:.4g} m³/d" in err
+
+
+def test_a_card_of_few_points_is_said_to_be_too_coarse_for_the_condition(run_cli, tmp_path):
+    """SK8's sample card cut to 16 and to 24 points a stroke: too few to resolve the ends of the
+    stroke, where tagging and leaks show (the 16-point card's Fourier ringing at the load's pickup
+    read as a tag); the label is printed with a warning saying so. The card as shipped (360 points)
+    has no such warning."""
+    lines = sample_card("sk8-3.5-4000").read_text(encoding="utf-8").splitlines()
+    header = [line for line in lines if line.startswith("#") or not line[:1].isdigit()]
+    rows = [line for line in lines if line[:1].isdigit()]
+    for points in (16, 24):
+        path = tmp_path / f"few-{points}.csv"
+        path.write_text("\n".join(header + rows[::-(-len(rows) // points)]) + "\n", encoding="utf-8")
+        code, _, err = run_cli("downhole", "sk8-3.5-4000", "--card", path, "--what", "summary", "-f", "json")
+        said = re.search(r"(\d+) points a stroke are too few to read the pump's condition", err)
+        assert code == 0 and said and points - 1 <= int(said[1]) <= points, err   # a closing repeat is dropped
+    code, _, err = run_cli("downhole", "sk8-3.5-4000", "--card", sample_card("sk8-3.5-4000"), "--what", "summary",
+                           "-f", "json")
+    assert code == 0 and "too few to read the pump's condition" not in err
