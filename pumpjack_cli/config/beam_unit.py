@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # the core's models are imported when a command uses them
     from ..core.rods.string import RodString
     from ..core.well import WellLoad
 from .quantities import (Angle, Area, AreaMoment, Force, Length, Pressure, RotationalStiffness, Section,
-                         Torque, at_least)
+                         Text, Torque, at_least)
 
 
 def _kind_geometry(value: Any, info: ValidationInfo) -> BeamLetters:
@@ -197,10 +197,10 @@ class UnitConfig(Section):
     """A whole pumping unit: identification, geometry and optional masses, drive, well."""
 
     kind: Literal["beam-pump"] = Field(default="beam-pump", description="machine kind (see UNIT_KINDS)")
-    name: str = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
-    description: str = Field(default="", description="one line shown by `pumpjack units`")
+    name: Text = Field(min_length=1, description="designation, e.g. SK8-3,5-4000")
+    description: Text = Field(default="", description="one line shown by `pumpjack units`")
     sources: tuple[str, ...] = Field(default=(), description="where the data come from")
-    designation: str | None = Field(
+    designation: Text | None = Field(
         default=None, description="API 11E or GOST 5866 designation (C-228D-213-86, SK8-3,5-4000); ratings come from it")
     rating: Rating = Rating()
     counterbalance: CounterbalanceConfig | None = None

@@ -32,6 +32,17 @@ def dimension_of(metadata: Iterable[Any]) -> str | None:
     return next((item.func.dimension for item in metadata if hasattr(getattr(item, "func", None), "dimension")), None)
 
 
+def _printable(text: str) -> str:
+    """Text shown on a terminal (a unit's name, description, designation): no control characters,
+    which would move the cursor or recolour the terminal when a message or table prints them."""
+    if not text.isprintable():
+        raise ValueError("must be printable text, without control characters (escape sequences, tabs, line breaks)")
+    return text
+
+
+#: Text of a unit file that the commands print.
+Text = Annotated[str, AfterValidator(_printable)]
+
 Length = Annotated[float, _quantity("length")]
 Mass = Annotated[float, _quantity("mass")]
 MomentOfInertia = Annotated[float, _quantity("moment_of_inertia")]

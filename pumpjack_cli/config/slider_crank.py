@@ -13,7 +13,7 @@ from ..core.slider_crank.geometry import SliderCrank, check_slider_crank
 from ..core.slider_crank.support_friction import slider_length
 from ..errors import GeometryError
 from .geometry_names import slider_crank_of
-from .quantities import Angle, Length, Mass, Number, Pressure, RotationalSpeed, Section
+from .quantities import Angle, Length, Mass, Number, Pressure, RotationalSpeed, Section, Text
 
 
 class SliderCrankGeometry(Section):
@@ -101,8 +101,8 @@ class SliderCrankConfig(Section):
     """A reciprocating machine with a slider-crank drive (drill pump, compressor; [InertiaUNB600A])."""
 
     kind: Literal["slider-crank"] = Field(default="slider-crank", description="machine kind (see UNIT_KINDS)")
-    name: str = Field(min_length=1, description="designation, e.g. UNB-600A")
-    description: str = Field(default="", description="one line shown by `pumpjack units`")
+    name: Text = Field(min_length=1, description="designation, e.g. UNB-600A")
+    description: Text = Field(default="", description="one line shown by `pumpjack units`")
     sources: tuple[str, ...] = Field(default=(), description="where the data come from")
     geometry: SliderCrankGeometry
     reciprocating: Reciprocating

@@ -399,3 +399,17 @@ def test_a_yaml_error_names_the_file_once(tmp_path):
     with pytest.raises(ConfigError) as info:
         load_unit(str(path))
     assert str(info.value).count(str(path)) == 1 and "given twice" in str(info.value)
+
+
+@pytest.mark.parametrize("key, text", [("name", "SK8\x1b[31mRED"), ("description", "two\nlines"),
+                                       ("designation", "C-228D\x07-213-86")])
+def test_text_a_command_prints_has_no_control_characters(tmp_path, key, text):
+    """A unit's name, description and designation reach the terminal in tables and messages: an
+    escape sequence in them would recolour it or move the cursor, so the file is refused naming the
+    key, and the message does not carry the character itself."""
+    source = (REPO_ROOT / "configs" / "sk8-3.5-4000.toml").read_text(encoding="utf-8")
+    data = tomllib.loads(source)
+    data[key] = text
+    with pytest.raises(ConfigError, match=f"{key}: must be printable text") as error:
+        parse_unit(data, "unit.toml")
+    assert str(error.value).isprintable()
