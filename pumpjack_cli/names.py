@@ -254,7 +254,8 @@ SECTIONS: tuple[Section, ...] = (
         E("breakdown_torque_margin", "ratio", "motor pull-out torque / largest motor torque"),
         E("shooting_iterations", "count", "integrations of the cycle to find the periodic start speed"),
         E("periodicity_error", "ratio", "how far the computed cycle is from periodic: relative change over the last "
-          "cycle (crank speed of the rigid-rod model; pump card of the wave model)"),
+          "cycle (crank speed of the rigid-rod model; pump card of the wave model, over the repeat_strokes last "
+          "strokes)"),
         E("rtol", "ratio", "relative tolerance of the integration (DOP853)"),
         E("{stroke_part}_rod_load", "force", "polished-rod load of the rigid-rod well model on the {stroke_part}"),
         E("rod_weight", "force", "weight of the rods in the well fluid (rigid-rod well model)"),
