@@ -488,6 +488,7 @@ def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None, deviati
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     found = predicted(unit, None, "dynamic", samples, damping)
     both, cards = found.coupled, found.cards
+    _warn_alternating(unit.name, cards.summary)
     summary = [Scalar("damping_factor", found.damping),
                Scalar("period", cards.summary.period),
                Scalar("strokes_per_minute", 2.0 * np.pi / cards.summary.period),

@@ -286,22 +286,22 @@ class _CoupledMarch:
                        float(np.max(np.abs(block.omega - previous.omega))) / self.omega,
                        abs(block.step - previous.step) / block.step)
 
+        volumes: list[float] = []
         for revolution in range(max_revolutions):
             discharged = self.chamber.discharge
             block = self._revolution(revolution)
             blocks = [*blocks[-LONGEST_REPEAT:], block]
+            volumes = [*volumes[-LONGEST_REPEAT:], self.chamber.discharge - discharged]
             if len(blocks) > 1:
                 changes.append(change(block, blocks[-2]))
-                if changes[-1] <= tolerance:
-                    convergence = Convergence(len(changes) + 1, tuple(changes), tolerance, self.model.modes.count)
-                    return self._result(block, self.chamber.discharge - discharged, convergence)
-                repeat = next((k for k in range(2, len(blocks)) if change(block, blocks[-1 - k]) <= tolerance), None)
-                if repeat is not None and changes[-1] > DISTINCT_STROKES:
-                    raise PredictionError(
-                        f"the coupled machine and rods settle into a cycle of {repeat} unlike revolutions (a pump "
-                        f"pounding fluid where the rods' vibration from the stroke before leaves it, the crank's speed "
-                        f"following): the coupled solution is of a state repeating every revolution; predict at "
-                        f"uniform speed (--crank-motion uniform) reports strokes that alternate")
+                repeats = [1] if changes[-1] <= tolerance else [
+                    k for k in range(2, len(blocks)) if changes[-1] > DISTINCT_STROKES
+                    and change(block, blocks[-1 - k]) <= tolerance]
+                if repeats:
+                    k = repeats[0]
+                    convergence = Convergence(len(changes) + 1, (*changes[:-1], change(block, blocks[-1 - k])),
+                                              tolerance, self.model.modes.count, k)
+                    return self._result(blocks[-k:], volumes[-k:], convergence)
         raise PredictionError(
             f"the coupled machine and rods did not reach a periodic state in {max_revolutions} revolutions "
             f"(last change {changes[-1]:.3g}, tolerance {tolerance:g})")
@@ -371,25 +371,38 @@ class _CoupledMarch:
         self.step = h * target / (theta_p - start)
         return _Revolution(h, rows, load, drive)
 
-    def _result(self, block: "_Revolution", discharged: float, convergence: Convergence) -> CoupledPrediction:
-        """Cards on the revolution's samples (shifted to start at its crank angle), machine outputs and summary."""
-        model = self.model
-        n, h = self.samples, block.step
-        period = n * h
-        rows = np.roll(block.rows, 1, axis=0)
+    def _result(self, blocks: list["_Revolution"], volumes: list[float],
+                convergence: Convergence) -> CoupledPrediction:
+        """Cards on the revolutions' samples (shifted to start at crank angle 0), machine outputs and
+        summary: of the one revolution that repeats, or of the one of the highest polished-rod load
+        among revolutions that repeat together (their rods' response periodic over all of them, at
+        their mean step, :func:`~pumpjack_cli.core.rods.predict.assemble`)."""
+        model, n = self.model, self.samples
+        h = float(np.mean([block.step for block in blocks]))
+        # the revolutions in turn, each from crank angle 0: the state there is the one the revolution
+        # before ended with (the cycle's last for the first)
+        rows = np.roll(np.concatenate([block.rows for block in blocks]), 1, axis=0)
         theta, omega, eps, position, velocity = rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3], rows[:, 4]
-        angle = theta % (2.0 * np.pi)
-        time = np.arange(n) * h
-        cards = assemble(with_step(model, h, n), time, angle, position, velocity, np.roll(block.drive, 1), np.roll(block.load, 1),
-                         discharged, period, convergence)
-        return machine_result(self.machine, self.tables, cards, theta, omega, eps, h, convergence)
+        time = np.concatenate([np.arange(n) * block.step for block in blocks])
+        drive = np.roll(np.concatenate([block.drive for block in blocks]), 1)
+        load = np.roll(np.concatenate([block.load for block in blocks]), 1).reshape(len(blocks), n)
+        cards = assemble(with_step(model, h, n), time, theta % (2.0 * np.pi), position, velocity, drive, load,
+                         tuple(volumes), n * h, convergence)
+        shown = int(np.argmax(cards.summary.stroke_peak_loads))
+        window = slice(shown * n, (shown + 1) * n)
+        return machine_result(self.machine, self.tables, cards, theta[window], omega[window], eps[window],
+                              blocks[shown].step, convergence, end_speed=float(np.roll(omega, -n)[window][0]))
 
 
 def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: np.ndarray, omega: np.ndarray,
-                   eps: np.ndarray, h: float, convergence: Convergence) -> CoupledPrediction:
+                   eps: np.ndarray, h: float, convergence: Convergence,
+                   end_speed: float | None = None) -> CoupledPrediction:
     """The machine's side of a coupled solution from its cards and crank motion at the samples
     (crank angle theta [rad], speed omega [1/s], acceleration eps [1/s^2], on a time grid of step h [s]):
-    motor, gearbox, load, gravity and inertia torques and the summary."""
+    motor, gearbox, load, gravity and inertia torques and the summary. ``end_speed`` [1/s]: the
+    crank's speed at the revolution's end when it differs from its start (revolutions that repeat
+    together): the machine's kinetic energy then changes over it, 1/2 I(theta_0) (end^2 - omega_0^2),
+    and the energy residual is the motor's work less the polished rod's and that change."""
     n = theta.size
     period = n * h
     angle = theta % (2.0 * np.pi)
@@ -402,6 +415,8 @@ def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: 
     inertia_torque = inertia * eps + 0.5 * rate * omega**2
     gearbox = drive_torque - machine.drive_inertia * eps
     motor_work = float(np.sum(drive_torque * omega) * h)
+    end = float(omega[0]) if end_speed is None else end_speed
+    kinetic = 0.5 * float(inertia[0]) * (end**2 - float(omega[0]) ** 2)
     rod_work = float(np.sum(cards.polished_rod_load * velocity) * h)
     mean = 2.0 * np.pi / period
     summary = CoupledSummary(
@@ -420,7 +435,7 @@ def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: 
         period=period,
         motor_work=motor_work,
         polished_rod_work=rod_work,
-        energy_residual=(motor_work - rod_work) / motor_work,
+        energy_residual=(motor_work - rod_work - kinetic) / motor_work,
         breakdown_torque_margin=machine.motor.breakdown_torque / float(np.max(np.abs(drive_torque)) / machine.drive_ratio),
         convergence=convergence,
     )

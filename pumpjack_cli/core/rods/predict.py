@@ -202,24 +202,33 @@ def assemble(model: WellModel, time: np.ndarray, angle: np.ndarray, position: np
     stroke with the highest polished-rod load (the one the rods and the gearbox must bear),
     the works, dissipation and production per stroke the means of the strokes, so that the
     energy balance holds as for one stroke (the rods store different energies at the
-    strokes' starts).
+    strokes' starts). ``time``, ``angle``, ``position``, ``velocity`` and ``top_drive`` are one
+    stroke's samples, the same for every stroke, or every stroke's in turn (a machine whose
+    speed follows the strokes); ``period`` [s] is a stroke's.
     """
     pump = model.pump
     loads = np.atleast_2d(load)
     strokes, samples = loads.shape
     volumes = np.atleast_1d(np.asarray(discharged, dtype=float))
+
+    def every(values: np.ndarray) -> np.ndarray:
+        """Every stroke's samples in turn."""
+        return values if values.size == loads.size else np.tile(values, strokes)
+
     step = period / samples
     if strokes > 1:
         model = with_step(model, step, strokes * samples)
-    fields = periodic_fields(model, loads.ravel(), -np.tile(position, strokes), -np.tile(velocity, strokes),
-                             np.tile(top_drive, strokes))
+    velocities = every(velocity)
+    fields = periodic_fields(model, loads.ravel(), -every(position), -velocities, every(top_drive))
     joint = (fields.joint_force + model.weight_below[:, None]).reshape(-1, strokes, samples)
     peaks = joint[0].max(axis=1)
     shown = int(np.argmax(peaks))
+    window = slice(shown * samples, (shown + 1) * samples)
+    time, angle, position, velocity = (every(values)[window] for values in (time, angle, position, velocity))
     polished, load = joint[0, shown], loads[shown]
     plungers = -fields.plunger_down
-    plunger = plungers.reshape(strokes, samples)[shown]
-    surface = float(np.sum(fields.joint_force[0] * np.tile(velocity, strokes)) * step) / strokes
+    plunger = plungers[window]
+    surface = float(np.sum(fields.joint_force[0] * velocities) * step) / strokes
     pump_work = float(np.sum(0.5 * (loads.ravel() + np.roll(loads.ravel(), -1))
                              * (np.roll(plungers, -1) - plungers))) / strokes
     dissipation = fields.dissipation / strokes
