@@ -122,6 +122,23 @@ def _fail(message: str) -> int:
     return 2
 
 
+def _foreign_number(args: list[str]) -> str | None:
+    """The message for a number written with digits other than 0-9 (Python reads ``٥`` or ``５``
+    as 5; the quantity options and the card readers refuse them, and so do the plain numeric
+    options), else None."""
+    for i, arg in enumerate(args):
+        option, _, value = arg.partition("=") if arg.startswith("--") else ("", "", arg)
+        if value.isascii():
+            continue
+        try:
+            float(value)
+        except ValueError:
+            continue
+        name = option or (args[i - 1] if i and args[i - 1].startswith("-") else "argument")
+        return f"{name}: '{ascii(value)[1:-1]}': write numbers with the digits 0-9"
+    return None
+
+
 def main(argv: list[str] | None = None, *, whole_process: bool = False) -> int:
     """Run the CLI; return the exit code (console-script entry point).
 
@@ -137,6 +154,9 @@ def main(argv: list[str] | None = None, *, whole_process: bool = False) -> int:
     args = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in args
     args = [arg for arg in args if arg != "--debug"] or ["--help"]
+    foreign = _foreign_number(args)
+    if foreign:
+        return _fail(foreign)
     command = _built_group()
     forget_inputs()
     with collected_warnings() as noted:
