@@ -367,7 +367,7 @@ def _comparison(unit: UnitConfig, found: Predicted, samples: int) -> list[Scalar
     return rows
 
 
-def _warn_alternating(name: str, summary) -> None:
+def _warn_periodic_state(name: str, summary) -> None:
     """Say so when the pump's state repeats only after several strokes, or only to more than the
     tolerance (:func:`~pumpjack_cli.core.rods.predict_solver.converge`)."""
     c = summary.convergence
@@ -399,7 +399,7 @@ def predict(unit: UnitConfig, spm: float | None, crank_motion: str, samples: int
              f"{np.degrees(low.crank_angle):.4g} deg, below zero: the rods would push the carrier bar, which cannot "
              f"hold them down (rod float: the clamp lifts off); the card beyond that is not what the unit would see. "
              f"Slow the unit down")
-    _warn_alternating(unit.name, cards.summary)
+    _warn_periodic_state(unit.name, cards.summary)
     if cards.summary.pump_displacement < 0.0:
         warn(f"unit {unit.name}: the pump's valves leak more than it lifts, and the tubing drains back into the well "
              f"through it ({cards.summary.pump_rate * 86400.0:.4g} m³/d, a negative pump_displacement): with the "
@@ -488,7 +488,7 @@ def wave_dynamics(unit: UnitConfig, samples: int, damping: float | None, deviati
     unit = with_survey(unit, deviation.survey, deviation.friction, deviation.guide_limit)
     found = predicted(unit, None, "dynamic", samples, damping)
     both, cards = found.coupled, found.cards
-    _warn_alternating(unit.name, cards.summary)
+    _warn_periodic_state(unit.name, cards.summary)
     summary = [Scalar("damping_factor", found.damping),
                Scalar("period", cards.summary.period),
                Scalar("strokes_per_minute", 2.0 * np.pi / cards.summary.period),

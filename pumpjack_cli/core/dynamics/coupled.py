@@ -29,8 +29,8 @@ from ...errors import PredictionError
 from ..constants import STEEL_DENSITY
 from ..rods.predict import DEFAULT_TOLERANCE, CardExtreme, Prediction, assemble, card_extreme, predict
 from ..rods.predict_modes import periodic_states, step_response
-from ..rods.predict_solver import (DISTINCT_STROKES, LONGEST_REPEAT, STEERING, Convergence, WellModel,
-                                   carried_response, modal_velocity, spectral_derivatives, well_model, with_step)
+from ..rods.predict_solver import (LONGEST_REPEAT, STEERING, Convergence, WellModel, carried_response,
+                                   modal_velocity, shortest_repeat, spectral_derivatives, well_model, with_step)
 from ..rods.pump import Pump, PumpChamber
 from ..rods.string import RodString
 from .coefficients import Machine, gravity_torque, reduced_inertia
@@ -294,13 +294,11 @@ class _CoupledMarch:
             volumes = [*volumes[-LONGEST_REPEAT:], self.chamber.discharge - discharged]
             if len(blocks) > 1:
                 changes.append(change(block, blocks[-2]))
-                repeats = [1] if changes[-1] <= tolerance else [
-                    k for k in range(2, len(blocks)) if changes[-1] > DISTINCT_STROKES
-                    and change(block, blocks[-1 - k]) <= tolerance]
-                if repeats:
-                    k = repeats[0]
-                    convergence = Convergence(len(changes) + 1, (*changes[:-1], change(block, blocks[-1 - k])),
-                                              tolerance, self.model.modes.count, k)
+                found = shortest_repeat(blocks, change, changes[-1], tolerance)
+                if found is not None:
+                    k, value = found
+                    convergence = Convergence(len(changes) + 1, (*changes[:-1], value), tolerance,
+                                              self.model.modes.count, k)
                     return self._result(blocks[-k:], volumes[-k:], convergence)
         raise PredictionError(
             f"the coupled machine and rods did not reach a periodic state in {max_revolutions} revolutions "
@@ -391,7 +389,7 @@ class _CoupledMarch:
         shown = int(np.argmax(cards.summary.stroke_peak_loads))
         window = slice(shown * n, (shown + 1) * n)
         return machine_result(self.machine, self.tables, cards, theta[window], omega[window], eps[window],
-                              blocks[shown].step, convergence, end_speed=float(np.roll(omega, -n)[window][0]))
+                              blocks[shown].step, convergence, end_speed=float(omega[window.stop % omega.size]))
 
 
 def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: np.ndarray, omega: np.ndarray,

@@ -127,6 +127,14 @@ def _running_median(values: np.ndarray, top: np.ndarray, window: int) -> np.ndar
     return medians[rows, np.where(index <= top, index, index + 2 * half)]
 
 
+def _cyclic_mean(values: np.ndarray, window: int) -> np.ndarray:
+    """The mean over ``window`` (odd) samples centred on each sample, around the cycle, by cumulative sums."""
+    half = window // 2
+    sums = np.cumsum(np.concatenate((values[:, values.shape[1] - half - 1:], values, values[:, :half]), axis=1),
+                     axis=1)
+    return (sums[:, window:] - sums[:, :-window]) / window
+
+
 def _masked_median(values: np.ndarray, mask: np.ndarray) -> np.ndarray:
     """The median of each row's values over its mask; NaN for an empty row."""
     count = mask.sum(axis=1)
@@ -239,12 +247,10 @@ def _features(pump_position, pump_load, reference_load) -> CardFeatures:
     closing, midway_up, opening = (_first_crossing(x, y, upstroke, level, True) for level in TRANSFER_LEVELS)
     released, fillage, drained = (_first_crossing(x, y, downstroke, level, False) for level in TRANSFER_LEVELS[::-1])
     pickup, unloading = opening - closing, released - drained
-    # the plunger's velocity / its mean speed 2 S / T, from its position averaged over the window
-    # (cyclically): noise on a card's load makes the computed plunger jitter where it rests at a
-    # turn, and a resting plunger is neither rising nor falling slowly
-    half = window // 2
-    padded = np.cumsum(np.concatenate((x[:, samples - half - 1:], x, x[:, :half]), axis=1), axis=1)
-    steady = (padded[:, window:] - padded[:, :-window]) / window
+    # the plunger's velocity / its mean speed 2 S / T, from its position averaged over the window:
+    # noise on a card's load makes the computed plunger jitter where it rests at a turn, and a
+    # resting plunger is neither rising nor falling slowly
+    steady = _cyclic_mean(x, window)
     velocity = (ahead(steady) - behind(steady)) * samples / 4.0
     slow = (np.abs(velocity) >= SLOW[0]) & (np.abs(velocity) <= SLOW[1])
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -7,7 +7,9 @@ wave equation ([Gibbs1963]).
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, replace
+from typing import TypeVar
 
 import numpy as np
 
@@ -250,6 +252,8 @@ def periodic_carry(model: WellModel, pump_load: np.ndarray) -> np.ndarray:
     return states[:, 0] - model.response.hat[:, 0] * m.bottom * pump_load[0]
 
 
+#: A stroke (or revolution) marched, as :func:`shortest_repeat` compares them.
+T = TypeVar("T")
 #: Most strokes after which a pump's marched state may repeat and be taken as its periodic state.
 LONGEST_REPEAT = 4
 #: Smallest change over one stroke [-] for a state repeating after several strokes to be taken
@@ -262,13 +266,30 @@ DISTINCT_STROKES = 1e-4
 USABLE_CHANGE = 1e-2
 
 
+def shortest_repeat(marched: Sequence[T], change: Callable[[T, T], float], last_change: float,
+                    tolerance: float) -> tuple[int, float] | None:
+    """The fewest strokes k after which the last of ``marched`` (the strokes or revolutions marched,
+    at most :data:`LONGEST_REPEAT` + 1 of them) repeats to ``tolerance``, with the change over them:
+    1 when the last repeats the one before (``last_change``, ``change(last, before)``); else 2 or more
+    when the strokes differ from each other by more than :data:`DISTINCT_STROKES`; None when none does."""
+    if last_change <= tolerance:
+        return 1, last_change
+    if last_change > DISTINCT_STROKES:
+        for k in range(2, len(marched)):
+            value = change(marched[-1], marched[-1 - k])
+            if value <= tolerance:
+                return k, value
+    return None
+
+
 def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale: float, tolerance: float,
              max_cycles: int) -> tuple[np.ndarray, np.ndarray, tuple[float, ...], Convergence]:
     """March cycles until the pump load and plunger position repeat to ``tolerance`` (largest
     relative change), after one stroke or, failing that, after 2 to :data:`LONGEST_REPEAT`
-    strokes that differ from each other by more than :data:`DISTINCT_STROKES`: a pump that
-    pounds fluid can settle into alternating strokes, each hitting the fluid where the rods'
-    vibration from the stroke before leaves it, and then has no state repeating every stroke.
+    strokes that differ from each other by more than :data:`DISTINCT_STROKES`
+    (:func:`shortest_repeat`): a pump that pounds fluid can settle into alternating strokes, each
+    hitting the fluid where the rods' vibration from the stroke before leaves it, and then has no
+    state repeating every stroke.
 
     After ``max_cycles``, when the rods' transient has decayed below the tolerance (every mode
     decays as e^{-c t / 2}: e^{-c T max_cycles / 2} <= tolerance) and each of the last
@@ -282,38 +303,33 @@ def converge(march: PumpMarch, known: Fields, load_scale: float, position_scale:
     if not max_cycles >= 2:
         raise PredictionError(f"at least 2 cycles are needed to see the state repeat, got max_cycles {max_cycles}")
     changes: list[float] = []
-    repeats: list[dict[int, float]] = []
     marched: list[tuple[np.ndarray, np.ndarray, float]] = []
 
-    def change(k: int) -> float:
-        (load, position, _), (before, before_position, _) = marched[-1], marched[-1 - k]
-        shift = position - before_position
-        return max(float(np.max(np.abs(load - before))) / load_scale,
+    def change(later: tuple, earlier: tuple) -> float:
+        shift = later[1] - earlier[1]
+        return max(float(np.max(np.abs(later[0] - earlier[0]))) / load_scale,
                    float(np.max(np.abs(shift - np.mean(shift)))) / position_scale)
 
-    def state(strokes: int) -> tuple[np.ndarray, np.ndarray, tuple[float, ...], Convergence]:
+    def state(strokes: int, value: float) -> tuple[np.ndarray, np.ndarray, tuple[float, ...], Convergence]:
         last = marched[-strokes:]
         return (np.stack([row[0] for row in last]), np.stack([row[1] for row in last]), tuple(row[2] for row in last),
-                Convergence(len(changes) + 1, (*changes[:-1], repeats[-1][strokes]), tolerance,
-                            march.model.modes.count, strokes))
+                Convergence(len(changes) + 1, (*changes[:-1], value), tolerance, march.model.modes.count, strokes))
 
     for _ in range(max_cycles):
         discharged = march.chamber.discharge
         load, position = march.cycle(known.plunger_velocity_down, known.plunger_down)
         marched = [*marched[-LONGEST_REPEAT:], (load, position, march.chamber.discharge - discharged)]
         if len(marched) > 1:
-            repeats.append({k: change(k) for k in range(1, len(marched))})
-            changes.append(repeats[-1][1])
-            found = [k for k, value in repeats[-1].items() if (k == 1 or changes[-1] > DISTINCT_STROKES)
-                     and value <= tolerance]
-            if found:
-                return state(found[0])
+            changes.append(change(marched[-1], marched[-2]))
+            found = shortest_repeat(marched, change, changes[-1], tolerance)
+            if found is not None:
+                return state(*found)
         if march.model.pump.gas_exponent is not None:
             march.chamber.rebase(float(position.min()))
     period = march.model.response.step * march.samples
     if (np.exp(-0.5 * march.model.modes.damping * period * max_cycles) <= tolerance
             and max(changes[-2 * LONGEST_REPEAT:]) <= USABLE_CHANGE):
-        return state(1)
+        return state(1, changes[-1])
     raise PredictionError(
         f"the periodic pump cycle did not converge in {max_cycles} cycles (last change {changes[-1]:.3g}, "
         f"tolerance {tolerance:g}, no repeat within {LONGEST_REPEAT} strokes either); raise the damping factor "
