@@ -204,8 +204,12 @@ class PumpMarch:
         self.last_load, self.last_position = last_load, last_position
         n = model.response.hat.shape[1] - 1
         # the velocity and position kernels of the past samples, reversed, in two rows: one
-        # product with the cycle's loads so far gives both sums of a step
-        self.past = np.stack([model.velocity_kernel[n:0:-1], model.position_kernel[n:0:-1]])
+        # product with the cycle's loads so far gives both sums of a step; the views of step k
+        # (kernels of lags k .. 1, the loads before k) are made once, not at every step
+        past = np.stack([model.velocity_kernel[n:0:-1], model.position_kernel[n:0:-1]])
+        self.load = np.zeros(n)
+        self.kernels = [past[:, n - k:] for k in range(n)]
+        self.loads = [self.load[:k] for k in range(n)]
         self.tail = model.response.hat[:, n:0:-1].copy()
         self.samples = n
 
@@ -226,22 +230,24 @@ class PumpMarch:
         velocity = known_velocity + carried_velocity
         velocity[0] -= model.modes.residual_compliance / h * self.last_load
         velocity, position_base = velocity.tolist(), (known_position + carried_position).tolist()
-        past, chamber, p0 = self.past, self.chamber, float(model.position_kernel[0])
+        chamber, p0, steering = self.chamber, float(model.position_kernel[0]), STEERING
         stretch, give = model.pump.fluid_load / model.pump.tubing_stiffness, 1.0 / model.pump.tubing_stiffness
-        load = np.zeros(n)
-        position = np.empty(n)
+        load, kernels, loads, step = self.load, self.kernels, self.loads, chamber.step
+        load.fill(0.0)
+        position = [0.0] * n
         previous, down = self.last_load, self.last_position
         for k in range(n):
-            v_past, p_past = (past[:, n - k:] @ load[:k]).tolist()
+            v_past, p_past = (kernels[k] @ loads[k]).tolist()
             rate = tubing * previous - velocity[k] - v_past
-            exact = stretch - give * previous - down
-            previous, position[k] = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate)
+            at = chamber.position
+            previous, position[k] = step(at + steering * (stretch - give * previous - down - at) + h * rate)
             load[k] = previous
             down = position_base[k] + p_past + p0 * previous
+        load = load.copy()
         m = model.modes
         self.carry = model.response.powers[:, n] * self.carry + m.bottom * (self.tail @ load)
         self.last_load, self.last_position = previous, down
-        return load, position
+        return load, np.array(position)
 
 
 def periodic_carry(model: WellModel, pump_load: np.ndarray) -> np.ndarray:
