@@ -43,6 +43,8 @@ MAX_REVOLUTIONS = 200
 STALL_FRACTION = 1e-3
 #: Newton steps at most in the machine's implicit step.
 _PASSES = 12
+#: One turn [rad].
+_TWO_PI = 2.0 * np.pi
 
 
 @dataclass(frozen=True)
@@ -99,7 +101,12 @@ class CoupledPrediction:
 
 
 class _Tables:
-    """s, TF, TF', I, I', M_gravity on a uniform crank-angle grid, interpolated linearly (Python floats)."""
+    """s, TF, TF', I, I', M_gravity on a uniform crank-angle grid, interpolated linearly (Python floats).
+
+    ``intervals`` holds, per grid interval, TF, TF', I, I', M_gravity at its start and their
+    increments over it: the march's lookup, written out, takes one list item per evaluation
+    and does the arithmetic of :meth:`at`.
+    """
 
     def __init__(self, machine: Machine):
         theta = np.linspace(0.0, 2.0 * np.pi, TABLE_STEPS + 1)
@@ -111,10 +118,11 @@ class _Tables:
         if not (np.all(np.isfinite(columns)) and np.all(inertia > 0)):
             raise PredictionError("the machine's inertia or gravity torque is not finite and positive; check the unit data")
         self.rows = columns.tolist()
+        self.intervals = np.concatenate([columns[:-1, 1:], np.diff(columns[:, 1:], axis=0)], axis=1).tolist()
         self.scale = TABLE_STEPS / (2.0 * np.pi)
 
     def at(self, theta: float) -> tuple[float, float, float, float, float, float]:
-        x = (theta % (2.0 * np.pi)) * self.scale
+        x = (theta % _TWO_PI) * self.scale
         i = min(int(x), TABLE_STEPS - 1)
         f = x - i
         (s0, t0, d0, i0, r0, g0), (s1, t1, d1, i1, r1, g1) = self.rows[i], self.rows[i + 1]
@@ -244,7 +252,7 @@ def _shape_change(position: np.ndarray, previous: np.ndarray) -> float:
 
 def _positions(tables: _Tables, samples: int) -> np.ndarray:
     """Polished-rod position [m] at uniform crank angles from 0."""
-    return np.array([tables.at(t)[0] for t in np.arange(samples) * (2.0 * np.pi / samples)])
+    return np.array([tables.at(t)[0] for t in (np.arange(samples) * (2.0 * np.pi / samples)).tolist()])
 
 
 class _CoupledMarch:
@@ -267,10 +275,12 @@ class _CoupledMarch:
         if model.pump.faulty:
             raise PredictionError("valve leaks and stops are modelled at uniform crank speed (predict), not coupled "
                                   "with the machine")
-        self.chamber = PumpChamber(model.pump, 0.0, (f_o - load[0]) / model.pump.tubing_stiffness
-                                   + uniform.plunger_position[0])
-        self.theta, self.omega, self.epsilon = 0.0, omega, 0.0
-        self.step = period / samples
+        # the state is kept in Python floats: the march's per-step arithmetic on numpy scalars costs
+        # several times more
+        self.chamber = PumpChamber(model.pump, 0.0, float((f_o - load[0]) / model.pump.tubing_stiffness
+                                                          + uniform.plunger_position[0]))
+        self.theta, self.omega, self.epsilon = 0.0, float(omega), 0.0
+        self.step = float(period / samples)
 
     def run(self, tolerance: float, max_revolutions: int) -> CoupledPrediction:
         if not max_revolutions >= 2:
@@ -306,7 +316,10 @@ class _CoupledMarch:
 
     def _revolution(self, revolution: int) -> "_Revolution":
         """March N steps from the current state, then set the step so that the next N steps end
-        at crank angle 2 pi (revolution + 2), at the mean speed of this revolution."""
+        at crank angle 2 pi (revolution + 2), at the mean speed of this revolution.
+
+        The steps work on Python floats, with the lookup of :meth:`_Tables.at` written out (the
+        same arithmetic) and the constants of a step taken out of the loops."""
         n, h = self.samples, self.step
         model, machine, tables = self.model, self.machine, self.tables
         m = model.modes
@@ -324,10 +337,16 @@ class _CoupledMarch:
         c = m.damping
         a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
         history = np.zeros(2 * n)   # pump load and top drive of the block's samples so far, interleaved
-        rows = np.empty((n, 8))
+        rows: list[tuple[float, ...]] = []
         theta_p, omega_p, eps_p, load_p, down = self.theta, self.omega, self.epsilon, self.last_load, self.last_position
         start = theta_p
         chamber = self.chamber
+        step_chamber = chamber.step
+        intervals, table_rows, scale, last, two_pi, passes = (tables.intervals, tables.rows, tables.scale,
+                                                              TABLE_STEPS - 1, _TWO_PI, _PASSES)
+        append = rows.append
+        half = 0.5 * h
+        stall = STALL_FRACTION * self.omega
         for k in range(n):
             v_past, f_past, p_past = (past[:, 2 * (n - k):] @ history[:2 * k]).tolist()
             v_known = carry_velocity[k] + v_past
@@ -335,31 +354,42 @@ class _CoupledMarch:
             omega = omega_p + h * eps_p
             f_k = load_p
             for sweep in range(2):
-                for _ in range(_PASSES):
-                    theta = theta_p + 0.5 * h * (omega_p + omega)
-                    s, tf, tf1, inertia, rate, grav = tables.at(theta)
+                known_force = f_known + fl0 * f_k
+                for _ in range(passes):
+                    theta = theta_p + half * (omega_p + omega)
+                    x = (theta % two_pi) * scale
+                    i = int(x)
+                    if i > last:
+                        i = last
+                    f = x - i
+                    tf, tf1, inertia, rate, grav, dtf, dtf1, dinertia, drate, dgrav = intervals[i]
+                    tf, tf1, inertia, rate, grav = (tf + f * dtf, tf1 + f * dtf1, inertia + f * dinertia,
+                                                    rate + f * drate, grav + f * dgrav)
                     mass = inertia - fd0 * tf * tf
-                    force = f_known + fl0 * f_k - fd0 * (tf1 * omega * omega + c * tf * omega)
+                    force = known_force - fd0 * (tf1 * omega * omega + c * tf * omega)
                     eps = (a_u + b_u2 * omega - grav - tf * force - 0.5 * rate * omega * omega) / mass
                     slope = (b_u2 + tf * fd0 * (2.0 * tf1 * omega + c * tf) - rate * omega) / mass
-                    residual = omega - omega_p - 0.5 * h * (eps_p + eps)
-                    omega -= residual / (1.0 - 0.5 * h * slope)
+                    residual = omega - omega_p - half * (eps_p + eps)
+                    omega -= residual / (1.0 - half * slope)
                     if abs(residual) <= 1e-14 * omega:
                         break
-                omega = omega_p + 0.5 * h * (eps_p + eps)
-                theta = theta_p + 0.5 * h * (omega_p + omega)
+                omega = omega_p + half * (eps_p + eps)
+                theta = theta_p + half * (omega_p + omega)
                 a_k = -(tf1 * omega * omega + tf * eps + c * tf * omega)
                 if sweep == 0:
                     rate_zeta = tubing * load_p - (v_known - tf * omega + vd0 * a_k)
                     exact = stretch - give * load_p - down
-                    f_k, zeta = chamber.step(chamber.position + STEERING * (exact - chamber.position) + h * rate_zeta)
-            if not omega > STALL_FRACTION * self.omega:
+                    position = chamber.position
+                    f_k, zeta = step_chamber(position + STEERING * (exact - position) + h * rate_zeta)
+            if not omega > stall:
                 raise PredictionError(
                     f"the crank stalls (omega1 {omega:.3g} 1/s at crank angle {np.degrees(theta) % 360:.1f} deg): "
                     f"the motor cannot turn the unit with this well")
+            s0 = table_rows[i][0]
+            s = s0 + f * (table_rows[i + 1][0] - s0)
             history[2 * k], history[2 * k + 1] = f_k, a_k
             down = carry_position[k] - s + p_past + pl0 * f_k + pd0 * a_k
-            rows[k] = (theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav)
+            append((theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav))
             theta_p, omega_p, eps_p, load_p = theta, omega, eps, f_k
         load, drive = history[0::2], history[1::2]
         forcing_sum = m.bottom * (ch.tail @ load) - m.participation * (ch.tail @ drive)
@@ -367,7 +397,7 @@ class _CoupledMarch:
         self.theta, self.omega, self.epsilon, self.last_load, self.last_position = theta_p, omega_p, eps_p, load_p, down
         target = 2.0 * np.pi * (revolution + 2) - theta_p
         self.step = h * target / (theta_p - start)
-        return _Revolution(h, rows, load, drive)
+        return _Revolution(h, np.array(rows), load, drive)
 
     def _result(self, blocks: list["_Revolution"], volumes: list[float],
                 convergence: Convergence) -> CoupledPrediction:
@@ -406,7 +436,7 @@ def machine_result(machine: Machine, tables: _Tables, cards: Prediction, theta: 
     angle = theta % (2.0 * np.pi)
     time = np.arange(n) * h
     velocity = cards.polished_rod_velocity
-    table = np.array([tables.at(t) for t in theta])
+    table = np.array([tables.at(t) for t in theta.tolist()])
     tf, inertia, rate, gravity = table[:, 1], table[:, 3], table[:, 4], table[:, 5]
     drive_torque = np.asarray(machine.drive_torque(omega))
     rod_load_torque = cards.polished_rod_load * tf

@@ -17,7 +17,7 @@ the mean speed of the energy balance (a u + b u^2 <omega>_theta = E / 2 pi).
 from __future__ import annotations
 
 from bisect import bisect_right
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING
@@ -82,18 +82,38 @@ class _Stroke:
         (scipy's call checks its argument for some 10 µs, and the integration asks for every
         right-hand side); made once per stroke for all the shots."""
         breaks = self.spline.x.tolist()
-        # [piece][column][c3, c2, c1, c0]; a contiguous copy first: tolist walks it in a third of the time
-        pieces = np.ascontiguousarray(np.transpose(self.spline.c, (1, 2, 0))).tolist()
+        # [piece][c3, c2, c1, c0 of each column in turn], one flat row a piece (one unpacking a call);
+        # a contiguous copy first: tolist walks it in a third of the time
+        c = self.spline.c
+        pieces = np.ascontiguousarray(np.transpose(c, (1, 2, 0))).reshape(c.shape[1], -1).tolist()
         last = len(pieces) - 1
 
         def at(theta: float) -> tuple[float, float, float]:
-            i = min(max(bisect_right(breaks, theta) - 1, 0), last)
+            i = bisect_right(breaks, theta) - 1
+            if i < 0:
+                i = 0
+            elif i > last:
+                i = last
             x = theta - breaks[i]
-            (a3, a2, a1, a0), (b3, b2, b1, b0), (c3, c2, c1, c0) = pieces[i]
+            a3, a2, a1, a0, b3, b2, b1, b0, c3, c2, c1, c0 = pieces[i]
             return (((a3 * x + a2) * x + a1) * x + a0, ((b3 * x + b2) * x + b1) * x + b0,
                     ((c3 * x + c2) * x + c1) * x + c0)
 
         return at
+
+    def rhs(self, a_u: float, b_u2: float) -> Callable[[float, Sequence[float]], tuple[float, float, float]]:
+        """The equation of motion over this stroke ([SK8Rotation2013] eqs. 27 and 29) for the
+        drive torque a_u + b_u2 omega: (d(omega)/dtheta, dt/dtheta, dE/dtheta) at crank angle
+        theta and state (omega, t, E)."""
+        at = self.at
+
+        def rhs(theta: float, y: Sequence[float]) -> tuple[float, float, float]:
+            inertia, rate, torque = at(theta)
+            w = y[0]
+            drive = a_u + b_u2 * w
+            return (drive - torque - 0.5 * w * w * rate) / (inertia * w), 1.0 / w, drive
+
+        return rhs
 
 
 @dataclass(frozen=True)
@@ -293,21 +313,15 @@ class _Shooter:
         self.atol = [self.integration_rtol * a for a in (scale, 2.0 * np.pi / scale, max(abs(energy), 1.0))]
         self.floor = STALL_FRACTION * scale
         self.evaluations = 0
+        a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
+        self.rhs = [stroke.rhs(a_u, b_u2) for stroke in strokes]
 
     def run(self, omega0: float):
         """States (omega, t, E) at the end of the cycle and the two strokes' dense solutions."""
-        machine = self.machine
-        a_u, b_u2 = machine.motor.a * machine.drive_ratio, machine.motor.b * machine.drive_ratio**2
         floor = self.floor
         y = [omega0, 0.0, 0.0]
         solutions = []
-        for stroke in self.strokes:
-            def rhs(theta, y, spline=stroke.at):
-                inertia, rate, torque = spline(theta)
-                w = y[0]
-                drive = a_u + b_u2 * w
-                return (drive - torque - 0.5 * w * w * rate) / (inertia * w), 1.0 / w, drive
-
+        for stroke, rhs in zip(self.strokes, self.rhs):
             try:
                 sol = integrate(rhs, stroke.start, stroke.start + stroke.travel, y, self.integration_rtol, self.atol,
                                 event=lambda theta, y: y[0] - floor)

@@ -149,11 +149,17 @@ class StringGrid:
         static load of a frictionless string (the datum of the dynamic loads)."""
         return float(self.static_node[0] + 0.5 * self.axial_weight[0])
 
-    def side_force(self, tension: Any) -> np.ndarray:
+    def side_force(self, tension: Any, out: np.ndarray | None = None) -> np.ndarray:
         """N_i l_i [N] of each cell for the node tensions ``tension`` [N] (nodes on the last axis
-        or the first: broadcast against the node arrays as given)."""
+        or the first: broadcast against the node arrays as given); into ``out`` when given (a
+        time march's buffer, the same operations in place)."""
         t = np.asarray(tension, dtype=float)
-        return np.sqrt(np.maximum(self.side_a * t * t - 2.0 * self.side_b * t + self.side_c, 0.0))
+        side = np.multiply(self.side_a, t, out=out)
+        side *= t
+        side -= (2.0 * self.side_b) * t
+        side += self.side_c
+        np.maximum(side, 0.0, out=side)
+        return np.sqrt(side, out=side)
 
 
 def grid_segments(rods: RodString, time_step: float, max_segment: float = MAX_SEGMENT) -> np.ndarray:

@@ -55,6 +55,12 @@ MAX_CYCLES = 400
 SPECTRAL_RADIUS = 0.8
 #: Active-set passes of one step at most.
 _PASSES = 30
+#: Rows of :attr:`StringMarch.rows`: node position, velocity, acceleration, the springs' force
+#: (K w)_i = k_i (w_i - w_{i+1}) - k_{i-1} (w_{i-1} - w_i) (unknown nodes), tension, side load.
+_W, _V, _A, _ELASTIC, _TENSION, _SIDE = range(6)
+_ROWS = 6
+#: Steps a :class:`Recorder` holds before folding them into its envelopes.
+_BLOCK = 64
 
 
 @dataclass(frozen=True)
@@ -99,7 +105,14 @@ class TopMotion:
 class StringMarch:
     """The string and pump stepped in time (module docstring): state of the nodes (position,
     velocity, acceleration, up), the pump load and chamber, each node's drag regime, and the
-    node tensions the side loads are taken from."""
+    node tensions the side loads are taken from.
+
+    The nodes' state is one array ``rows`` (rows :data:`_W` .. :data:`_SIDE`, a column per
+    node), a new one each step: besides position, velocity and acceleration it holds what the
+    next step and the recorder take from the positions (the springs' net force on each unknown
+    node, the tensions and the cells' side loads), computed once per step rather than where
+    each is used.
+    """
 
     def __init__(self, grid: StringGrid, pump: Pump, step: float, friction_coefficient: float, band: float,
                  rho: float = SPECTRAL_RADIUS):
@@ -110,9 +123,10 @@ class StringMarch:
         self.k, self.m = grid.segment_stiffness, grid.node_mass
         self.columns = np.zeros((grid.nodes - 1, 2), order="F")  # right-hand sides: known forces, unit pump load
         self.columns[-1, 1] = -(1.0 - self.alpha.alpha_f)
-        self.elastic = np.zeros(grid.nodes - 1)
         self.first_pull = (1.0 - self.alpha.alpha_f) * self.k[0]
         self.rubbing = (friction_coefficient > 0.0) & ((grid.side_a > 0.0) | (grid.side_c > 0.0))
+        self.top_mass, self.top_rubs = float(grid.node_mass[0]), bool(self.rubbing[0])
+        self.drag_scale = friction_coefficient * self.rubbing[1:]  # mu where the unknown node's cell rubs, else 0
         self.mode = np.zeros(grid.nodes - 1)
         self.chamber: PumpChamber | None = None
         self.set_step(step)
@@ -134,16 +148,49 @@ class StringMarch:
         v_w, v_v, v_a = -(1.0 - af) * g / (b * h), (1.0 - af) * (1.0 - g / b) + af, (1.0 - af) * h * (1.0 - 0.5 * g / b)
         mass = m[1:]
         self.known = (-mass * (a_w + c * v_w), -mass * (a_v + c * v_v), -mass * (a_a + c * v_a), v_w, v_v, v_a)
+        # the known forces (less the springs' share alpha_f of the last step) and v_known in one product and sum
+        # over the rows w, v, a, elastic of the unknown nodes
+        self.combine = np.zeros((4, 2, mass.size))
+        self.combine[:3, 0] = self.known[:3]
+        self.combine[3, 0] = -af
+        self.combine[:3, 1] = np.reshape(self.known[3:], (3, 1))
+        self.stiffening = self.c_v / self.band
+        self.newmark = (h, b * h * h, 0.5 / b - 1.0, 1.0 - g, g)
+
+    @property
+    def w(self) -> np.ndarray:
+        """Node positions [m]."""
+        return self.rows[_W]
+
+    @property
+    def v(self) -> np.ndarray:
+        """Node velocities [m/s]."""
+        return self.rows[_V]
+
+    @property
+    def a(self) -> np.ndarray:
+        """Node accelerations [m/s^2]."""
+        return self.rows[_A]
+
+    @property
+    def tension(self) -> np.ndarray:
+        """Node tensions [N] (:meth:`_settle`)."""
+        return self.rows[_TENSION]
+
+    @property
+    def side(self) -> np.ndarray:
+        """The cells' side loads N_i l_i [N] of the node tensions."""
+        return self.rows[_SIDE]
 
     def state(self) -> tuple:
         """What a step changes, to :meth:`restore` it (for a step tried again)."""
         assert self.chamber is not None
-        return self.w, self.v, self.a, self.load, self.tension, self.mode, dict(self.chamber.__dict__)
+        return self.rows, self.load, self.top_dynamic, self.mode, dict(self.chamber.__dict__)
 
     def restore(self, state: tuple) -> None:
         """The march as :meth:`state` saved it."""
         assert self.chamber is not None
-        self.w, self.v, self.a, self.load, self.tension, self.mode, chamber = state
+        self.rows, self.load, self.top_dynamic, self.mode, chamber = state
         self.chamber.__dict__.update(chamber)
 
     def start(self, top: TopMotion, load: float) -> None:
@@ -151,88 +198,126 @@ class StringMarch:
         ``load`` [N] on it; the chamber at the plunger's position."""
         grid = self.grid
         stretch = np.concatenate([[0.0], np.cumsum(1.0 / grid.segment_stiffness)])
-        self.w = top.position[0] - load * stretch
-        self.v = np.full(grid.nodes, top.velocity[0])
-        self.a = np.zeros(grid.nodes)
+        self.rows = np.zeros((_ROWS, grid.nodes))
+        self.rows[_W] = top.position[0] - load * stretch
+        self.rows[_V] = top.velocity[0]
         self.load = float(load)
-        self.tension = self._tension(self.w, self.load, self.top_force(self.w, top, 0))
+        self._settle(self.rows, self.load, top, 0)
         f_o, k_t = self.pump.fluid_load, self.pump.tubing_stiffness
         self.chamber = PumpChamber(self.pump, 0.0, float(self.w[-1]) + (f_o - load) / k_t)
 
     def top_force(self, w: np.ndarray, top: TopMotion, n: int) -> float:
         """The polished rod's dynamic load P - W [N] at step ``n``: the first spring, the top half
         cell's inertia and damping and its drag."""
-        grid = self.grid
-        force = grid.segment_stiffness[0] * (w[0] - w[1])
-        force += grid.node_mass[0] * (top.acceleration[n] + grid.damping * top.velocity[n])
+        return self._top_force(self.grid.segment_stiffness[0] * (w[0] - w[1]), top, n)
+
+    def _top_force(self, spring: float, top: TopMotion, n: int) -> float:
+        """:meth:`top_force` with the first spring's force ``spring`` [N] given."""
+        force = spring + self.top_mass * (float(top.acceleration[n]) + self.grid.damping * float(top.velocity[n]))
         return float(force + self.top_drag(force, top, n))
 
     def top_drag(self, force: float, top: TopMotion, n: int) -> float:
         """The drag of the top half cell [N] at step ``n`` (its tension about W + ``force``)."""
         grid = self.grid
-        if not self.rubbing[0]:
+        if not self.top_rubs:
             return 0.0
         size = self.mu * float(np.sqrt(max(grid.side_a[0] * (grid.static_node[0] + force) ** 2
                                            - 2.0 * grid.side_b[0] * (grid.static_node[0] + force) + grid.side_c[0], 0.0)))
         return size * float(friction_sign(top.velocity[n], self.band))
 
-    def _tension(self, w: np.ndarray, load: float, top: float) -> np.ndarray:
-        """Node tensions [N]: static along the hole plus the mean dynamic force on the cell's faces."""
-        force = self.grid.segment_stiffness * (w[:-1] - w[1:])
-        faces = np.concatenate([[top], force]) + np.concatenate([force, [load]])
-        return self.grid.static_node + 0.5 * faces
+    def _settle(self, rows: np.ndarray, load: float, top: TopMotion, n: int) -> None:
+        """Fill ``rows``' springs' net force, tensions and side loads from its positions, the pump
+        load ``load`` [N] and the polished rod at step ``n``; set ``top_dynamic``, the polished
+        rod's dynamic load P - W [N] (:meth:`top_force`).
+
+        Node tensions: static along the hole plus the mean dynamic force on the cell's faces; side
+        loads: :meth:`~.deviated.StringGrid.side_force` of them.
+        """
+        grid, w = self.grid, rows[_W]
+        force = np.subtract(w[:-1], w[1:])
+        force *= self.k
+        elastic = rows[_ELASTIC]
+        elastic[0] = 0.0
+        np.subtract(force[1:], force[:-1], out=elastic[1:-1])
+        elastic[-1] = 0.0 - force[-1]
+        self.top_dynamic = self._top_force(force[0], top, n)
+        tension = rows[_TENSION]
+        np.add(force[:-1], force[1:], out=tension[1:-1])
+        tension[0], tension[-1] = self.top_dynamic + force[0], force[-1] + load
+        tension *= 0.5
+        tension += grid.static_node
+        grid.side_force(tension, out=rows[_SIDE])
 
     def advance(self, top: TopMotion, n: int) -> tuple[float, float, np.ndarray, np.ndarray]:
         """One step to step ``n`` (from n - 1): the new pump load [N] and plunger position relative
         to the barrel [m], the drag [N] and the velocities [m/s] of the unknown nodes at the
         generalized midpoint (for the work of drag and damping)."""
-        w, v, a = self.w, self.v, self.a
-        known = self.known
-        v_known = known[3] * w[1:] + known[4] * v[1:] + known[5] * a[1:]
-        force = self.k * (w[:-1] - w[1:])
-        elastic = self.elastic
-        elastic[:-1] = force[1:]
-        elastic[-1] = 0.0
-        elastic -= force
-        rhs = known[0] * w[1:] + known[1] * v[1:] + known[2] * a[1:] - self.alpha.alpha_f * elastic
+        old = self.rows
+        rhs, v_known = np.add.reduce(self.combine * old[:_TENSION, None, 1:], axis=0)
         rhs[0] += self.first_pull * top.position[n]
         rhs[-1] -= self.alpha.alpha_f * self.load
-        drag_size = self.mu * self.grid.side_force(self.tension)[1:] * self.rubbing[1:]
-        stiff = drag_size * (self.c_v / self.band)
-        held = drag_size * v_known / self.band
+        drag_size = old[_SIDE, 1:] * self.drag_scale
+        rubs = drag_size != 0.0
+        stiff = drag_size * self.stiffening
+        held = drag_size * v_known
+        held /= self.band
         f_o, give = self.pump.fluid_load, 1.0 / self.pump.tubing_stiffness
         mode, chamber, columns = self.mode, self.chamber, self.columns
         assert chamber is not None
         saved = dict(chamber.__dict__)
+        rows = np.empty_like(old)
+        x, velocity = rows[_W, 1:], np.empty(v_known.size)
         for _ in range(_PASSES):
             band = mode == 0.0
-            columns[:, 0] = rhs - np.where(band, held, drag_size * mode)
+            np.subtract(rhs, np.where(band, held, drag_size * mode), out=columns[:, 0])
             solved = lapack.dgtsv(self.off, self.diagonal + stiff * band, self.off, columns)[3]
             per_load = solved[:, 1]
             chamber.compliance = give - float(per_load[-1])
             load, zeta = chamber.step(float(solved[-1, 0]) + f_o * give)
-            x = solved[:, 0] + load * per_load
-            velocity = self.c_v * x + v_known
-            # sliding nodes that stop pass through the band, never straight to the other direction
-            found = np.where(band, np.where(np.abs(velocity) <= self.band, 0.0, np.sign(velocity)),
-                             np.where(velocity * mode > self.band, mode, 0.0))
-            found[drag_size == 0.0] = 0.0
-            if np.array_equal(found, mode):
+            np.multiply(per_load, load, out=x)
+            x += solved[:, 0]
+            np.multiply(x, self.c_v, out=velocity)
+            velocity += v_known
+            found = self._regimes(velocity, mode, rubs)
+            if not (found != mode).any():
                 break
             mode = found
             chamber.__dict__.update(saved)
+        else:
+            band = mode == 0.0
         self.mode = mode
-        drag = drag_size * np.where(mode == 0.0, velocity / self.band, mode)
-        al, h = self.alpha, self.step
-        new = np.empty_like(w)
-        new[0], new[1:] = top.position[n], x
-        acceleration = (new - w - h * v) / (al.beta * h * h) - (0.5 / al.beta - 1.0) * a
-        acceleration[0] = top.acceleration[n]
-        velocity_new = v + h * ((1.0 - al.gamma) * a + al.gamma * acceleration)
-        velocity_new[0] = top.velocity[n]
-        self.w, self.v, self.a, self.load = new, velocity_new, acceleration, load
-        self.tension = self._tension(new, load, self.top_force(new, top, n))
+        drag = np.where(band, velocity / self.band, mode)
+        drag *= drag_size
+        self._move(old, rows, top, n)
+        self._settle(rows, load, top, n)
+        self.rows, self.load = rows, load
         return load, zeta, drag, velocity
+
+    def _regimes(self, velocity: np.ndarray, mode: np.ndarray, rubs: np.ndarray) -> np.ndarray:
+        """Each node's drag regime for its ``velocity`` after the step solved with ``mode``: 0 in
+        the band (|v| <= band), the sign of v sliding; sliding nodes that stop pass through the
+        band, never straight to the other direction; 0 where the cell does not rub (``rubs``)."""
+        sliding = np.abs(velocity) > self.band
+        sliding &= rubs
+        found = np.copysign(sliding, velocity)
+        found *= found * mode >= 0.0
+        return found
+
+    def _move(self, old: np.ndarray, rows: np.ndarray, top: TopMotion, n: int) -> None:
+        """The generalized-alpha update of ``rows``' velocities and accelerations from the state
+        ``old`` and ``rows``' new positions of the unknown nodes; the top node follows ``top``."""
+        h, beta_hh, back, keep, gamma = self.newmark
+        w, v, a = old[_W, 1:], old[_V, 1:], old[_A, 1:]
+        rows[_W, 0], rows[_V, 0], rows[_A, 0] = top.position[n], top.velocity[n], top.acceleration[n]
+        acceleration, velocity = rows[_A, 1:], rows[_V, 1:]
+        np.subtract(rows[_W, 1:], w, out=acceleration)
+        acceleration -= np.multiply(v, h, out=velocity)
+        acceleration /= beta_hh
+        acceleration -= np.multiply(a, back, out=velocity)
+        np.multiply(a, keep, out=velocity)
+        velocity += gamma * acceleration
+        velocity *= h
+        velocity += v
 
 
 def top_motion(position: np.ndarray, period: float) -> TopMotion:
@@ -267,6 +352,8 @@ class Recorder:
         grid = march.grid
         assert march.chamber is not None
         self.march, self.steps, self.start = march, steps, march.chamber.discharge
+        self.hanging_weight = grid.hanging_weight
+        self.masses, self.top_mass = grid.node_mass[1:], grid.node_mass[0]
         self.pump_load, self.relative, self.plunger, self.top_load = (np.empty(steps) for _ in range(4))
         self.joint_tension = np.empty((grid.joints.size, steps))
         self.high = np.full(grid.nodes, -np.inf)
@@ -274,26 +361,44 @@ class Recorder:
         self.side = np.zeros(grid.nodes)
         self.drag_work = np.zeros(grid.nodes)
         self.damping_work = 0.0
+        self.held: list[np.ndarray] = []
+        self.samples: list[int] = []
 
     def record(self, k: int, top: TopMotion, n: int, load: float, zeta: float, drag: np.ndarray,
                velocity: np.ndarray) -> None:
-        """The state after a step as sample ``k``, the step driven by ``top`` at index ``n``."""
+        """The state after a step as sample ``k``, the step driven by ``top`` at index ``n`` (the
+        march's last :meth:`~StringMarch.advance`, whose polished-rod load and side loads it takes)."""
         march = self.march
         grid, h = march.grid, march.step
-        top_force = march.top_force(march.w, top, n)
+        top_force = march.top_dynamic
         self.pump_load[k], self.relative[k], self.plunger[k] = load, zeta, march.w[-1]
-        self.top_load[k] = grid.hanging_weight + top_force
-        tension = march.tension
-        np.maximum(self.high, tension, out=self.high)
-        np.minimum(self.low, tension, out=self.low)
-        np.maximum(self.side, grid.side_force(tension), out=self.side)
-        self.joint_tension[:, k] = tension[grid.joints]
+        self.top_load[k] = self.hanging_weight + top_force
+        self.held.append(march.rows)
+        self.samples.append(k)
+        if len(self.held) == _BLOCK:
+            self._fold()
         self.drag_work[1:] += drag * velocity * h
-        self.drag_work[0] += march.top_drag(top_force, top, n) * top.velocity[n] * h
-        self.damping_work += grid.damping * h * (float(np.dot(grid.node_mass[1:], velocity * velocity))
-                                                 + grid.node_mass[0] * top.velocity[n] ** 2)
+        if march.top_rubs:
+            self.drag_work[0] += march.top_drag(top_force, top, n) * top.velocity[n] * h
+        self.damping_work += grid.damping * h * (float(np.dot(self.masses, velocity * velocity))
+                                                 + self.top_mass * top.velocity[n] ** 2)
+
+    def _fold(self) -> None:
+        """The held steps' tensions and side loads into the envelopes and the joint tensions (a
+        block of steps at a time: fewer, larger array operations than one step at a time)."""
+        if not self.held:
+            return
+        rows = np.array(self.held)
+        tension = rows[:, _TENSION]
+        np.maximum(self.high, tension.max(axis=0), out=self.high)
+        np.minimum(self.low, tension.min(axis=0), out=self.low)
+        np.maximum(self.side, rows[:, _SIDE].max(axis=0), out=self.side)
+        self.joint_tension[:, self.samples] = tension[:, self.march.grid.joints].T
+        self.held.clear()
+        self.samples.clear()
 
     def finish(self) -> Cycle:
+        self._fold()
         joint_tension = self.joint_tension
         joint_tension[0], joint_tension[-1] = self.top_load, self.pump_load
         assert self.march.chamber is not None

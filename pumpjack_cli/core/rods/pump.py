@@ -207,8 +207,10 @@ class PumpChamber:
         self.fillage = pump.fillage
         self.exponent = 0.0 if pump.gas_exponent is None else pump.gas_exponent
         self.dead_volume = pump.dead_volume
-        self.compliance = compliance
-        self.position = position
+        # plain floats: the chamber is stepped one sample at a time, where a numpy scalar's every
+        # operation would cost a dispatch (a start position read from an array is one)
+        self.compliance = float(compliance)
+        self.position = float(position)
         self.volume = pump.dead_volume
         self.liquid = pump.dead_volume
         self.gas = 0.0
