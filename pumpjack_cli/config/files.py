@@ -11,6 +11,7 @@ units (name, kind, designation, exact stroke) without building any model, for
 
 from __future__ import annotations
 
+import functools
 import importlib
 import math
 import typing
@@ -20,7 +21,7 @@ from typing import TYPE_CHECKING, Any, Callable
 
 from ..errors import ConfigError
 from ..quantities import SI_LABELS, parse_quantity
-from ..readers.unit_files import bundled_units, read_table, unit_source
+from ..readers.unit_files import bundled_units, parse_table, read_table, read_unit_text, unit_source
 from .geometry_names import slider_crank_of
 from .unit_classes import UNIT_CLASSES, raw_stroke
 
@@ -153,8 +154,17 @@ def parse_unit(data: Any, source: str, place: Callable[[tuple], str] = field_pat
 
 
 def read_unit_file(path: Path):
-    """Read and validate one unit file."""
-    return parse_unit(read_table(path), str(path), folder=path.parent)
+    """Read and validate one unit file (read each time; validated once per text, :func:`_unit_of_text`)."""
+    return _unit_of_text(path, read_unit_text(path))
+
+
+@functools.lru_cache(maxsize=64)
+def _unit_of_text(path: Path, text: str):
+    """The validated unit of a file's ``text``, kept for the next time the same file holds the
+    same text: a unit config is frozen and depends on nothing else (a survey it names is a path
+    beside the file, read where it is used), and parsing and validating a unit file costs about a
+    millisecond, which a batch's or a library user's repeated loads of one unit would pay each time."""
+    return parse_unit(parse_table(path, text), str(path), folder=path.parent)
 
 
 def unit_listing() -> list[dict[str, Any]]:

@@ -95,7 +95,9 @@ def _flow_depth(text: str) -> int:
     return deepest
 
 
-def _parse_text(path: Path, text: str) -> Any:
+def parse_table(path: Path, text: str) -> Any:
+    """The parsed content of a unit file's ``text`` (``path``: its name, whose suffix says the
+    format), not validated: :func:`read_table` without the reading."""
     suffix = path.suffix.lower()
     formats = {".toml": "TOML", ".json": "JSON", ".yaml": "YAML", ".yml": "YAML"}
     if suffix not in formats:
@@ -137,10 +139,15 @@ def _parse_text(path: Path, text: str) -> Any:
     return data
 
 
+def read_unit_text(path: Path) -> str:
+    """The text of a unit file (bounded, UTF-8)."""
+    return read_text(path, MAX_BYTES, "unit file", ConfigError)
+
+
 def read_table(path: Path) -> Any:
     """The parsed content of a TOML, YAML or JSON file of the unit-file kind (bounded, UTF-8,
     duplicate keys refused), not validated."""
-    return _parse_text(path, read_text(path, MAX_BYTES, "unit file", ConfigError))
+    return parse_table(path, read_unit_text(path))
 
 
 def bundled_units() -> dict[str, Path]:
