@@ -8,7 +8,9 @@ never an encoding error.
 
 from __future__ import annotations
 
+import io
 import os
+import select
 import stat
 import sys
 from contextlib import contextmanager
@@ -45,17 +47,45 @@ def plain(text: str, encoding: str) -> str:
 
 class EncodedText:
     """A text stream that writes only what its encoding can encode: a text that it cannot
-    (rare: the stream raised before writing any of it) is written again made :func:`plain`."""
+    (rare: the stream raised before writing any of it) is written again made :func:`plain`.
+
+    A stream without a buffer below its text (``python -u``, ``PYTHONUNBUFFERED``) is written
+    here, to the end: its text layer hands each text to the file in one write and drops what a
+    short write leaves (a pipe whose reader has gone takes what fits and says so with a short
+    count, not an error), so that a table cut off by ``| head`` would end the run as a success.
+    Written to the end, the next write finds the closed pipe (BrokenPipeError, exit code 1).
+    """
 
     def __init__(self, stream):
         self.stream = stream
         self.encoding = getattr(stream, "encoding", None) or "utf-8"
+        raw = getattr(stream, "buffer", None)
+        self.raw = raw if isinstance(raw, io.RawIOBase) else None
 
     def write(self, text: str) -> int:
+        if self.raw is not None:
+            try:
+                data = text.encode(self.encoding)
+            except UnicodeEncodeError:
+                data = plain(text, self.encoding).encode(self.encoding)
+            _write_all(self.raw, data)
+            return len(text)
         try:
             return self.stream.write(text)
         except UnicodeEncodeError:
             return self.stream.write(plain(text, self.encoding))
+
+
+def _write_all(raw, data: bytes) -> None:
+    """Every byte of ``data`` to the unbuffered stream ``raw``, write after write (a stream that
+    would block, ``None`` written, is waited for)."""
+    view = memoryview(data)
+    while view:
+        written = raw.write(view)
+        if written is None:
+            select.select([], [raw], [])
+            continue
+        view = view[written:]
 
 
 #: Output paths written in place, never replaced by a rename (devices, /dev/stdout, /proc/self/fd/N).

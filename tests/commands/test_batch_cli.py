@@ -25,8 +25,10 @@ from helpers import stored_results as stored
 
 
 def single(run_cli, folder: Path, command: str, unit: str, card: str):
-    """The single-card command's JSON document, or its error message."""
-    argv = [command, unit, "--card", str(folder / card), "-f", "json"] + (["--steps", "4"] if command == "torque" else [])
+    """The single-card command's JSON summary (``--what summary``: the same summary without the
+    columns, tests/test_cli.py), or its error message."""
+    argv = [command, unit, "--card", str(folder / card), "-f", "json", "--what", "summary"] + (
+        ["--steps", "4"] if command == "torque" else [])
     code, out, err = run_cli(*argv)
     if code:
         return err.removeprefix("pumpjack: error: ").strip()
