@@ -162,26 +162,6 @@ class StringMarch:
         """Node positions [m]."""
         return self.rows[_W]
 
-    @property
-    def v(self) -> np.ndarray:
-        """Node velocities [m/s]."""
-        return self.rows[_V]
-
-    @property
-    def a(self) -> np.ndarray:
-        """Node accelerations [m/s^2]."""
-        return self.rows[_A]
-
-    @property
-    def tension(self) -> np.ndarray:
-        """Node tensions [N] (:meth:`_settle`)."""
-        return self.rows[_TENSION]
-
-    @property
-    def side(self) -> np.ndarray:
-        """The cells' side loads N_i l_i [N] of the node tensions."""
-        return self.rows[_SIDE]
-
     def state(self) -> tuple:
         """What a step changes, to :meth:`restore` it (for a step tried again)."""
         assert self.chamber is not None
