@@ -32,7 +32,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
-from typing import cast
 
 import numpy as np
 
@@ -428,20 +427,33 @@ def _steps(augmented: np.ndarray) -> np.ndarray:
     diagonal are exact zeros). A J of fewer rows than columns, or whose R has a diagonal
     entry below n eps times its largest (rank-deficient to working precision), is solved
     by ``numpy.linalg.lstsq`` instead (the minimum-norm solution by the SVD), one card at a time.
+    The triangle comes from ``numpy.linalg.qr(..., mode="raw")`` (the factorised matrix, R on and
+    above its diagonal) with zeros put below the diagonal by a mask made once per size: the R of
+    ``mode="r"`` bit for bit, without ``numpy.triu`` building its mask at every Gauss-Newton step.
     """
     rows, size = augmented.shape[1], augmented.shape[2] - 1
-    triangle = cast(np.ndarray, np.linalg.qr(augmented, mode="r"))  # numpy's stubs type every mode as (Q, R)
-    diagonal = np.abs(np.diagonal(triangle[:, :size, :size], axis1=1, axis2=2))
-    full_rank = (rows >= size) & (diagonal.min(axis=1) > _EPSILON * rows * diagonal.max(axis=1))
-    steps = np.empty((augmented.shape[0], size))
-    if full_rank.all():
-        steps[:] = -np.linalg.solve(triangle[:, :size, :size], triangle[:, :size, size:])[:, :, 0]
-        return steps
+    full_rank = np.zeros(len(augmented), dtype=bool)
     if rows >= size:
-        steps[full_rank] = -np.linalg.solve(triangle[full_rank, :size, :size], triangle[full_rank, :size, size:])[:, :, 0]
+        factored = np.linalg.qr(augmented, mode="raw")[0].swapaxes(1, 2)  # R on and above the diagonal
+        triangle = np.where(_upper(size), factored[:, :size], 0.0)
+        diagonal = np.abs(np.diagonal(triangle, axis1=1, axis2=2))
+        full_rank = diagonal.min(axis=1) > _EPSILON * rows * diagonal.max(axis=1)
+        if full_rank.all():
+            return -np.linalg.solve(triangle[:, :, :size], triangle[:, :, size:])[:, :, 0]
+    steps = np.empty((augmented.shape[0], size))
+    if full_rank.any():
+        steps[full_rank] = -np.linalg.solve(triangle[full_rank, :, :size], triangle[full_rank, :, size:])[:, :, 0]
     for card in np.flatnonzero(~full_rank):
         steps[card] = np.linalg.lstsq(augmented[card, :, :size], -augmented[card, :, size], rcond=None)[0]
     return steps
+
+
+@lru_cache(maxsize=8)
+def _upper(size: int) -> np.ndarray:
+    """The mask (size, size + 1) of the entries on and above the diagonal (``numpy.triu``'s)."""
+    mask = ~np.tri(size, size + 1, -1, dtype=bool)
+    mask.flags.writeable = False
+    return mask
 
 
 def _solved(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np.ndarray, bound: np.ndarray | None,
@@ -455,19 +467,22 @@ def _solved(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np.ndarra
     augmented matrices are factorised while they are still in a core's cache. Each card's
     figures are its own, whatever the block.
     """
-    cost, steps, evaluated = np.empty(len(params)), np.empty(params.shape), np.empty((3,) + tc.shape)
-    for start in range(0, len(params), _BLOCK):
-        block = slice(start, start + _BLOCK)
-        augmented, cost[block] = _evaluate(linkage, tc[block], p[block], params[block],
-                                           None if known is None else known[:, block])
-        evaluated[0, block], evaluated[1:, block] = augmented[0], augmented[-2:]
-        matrices = augmented.transpose(1, 2, 0)
-        wanted = None if bound is None else cost[block] <= bound[block]
-        if wanted is None or wanted.all():
-            steps[block] = _steps(matrices)
-        elif wanted.any():
-            steps[start + np.flatnonzero(wanted)] = _steps(matrices[wanted])
-    return cost, steps, evaluated
+    if len(params) > _BLOCK:
+        blocks = [_solved(linkage, tc[block], p[block], params[block], None if bound is None else bound[block],
+                          None if known is None else known[:, block])
+                  for block in (slice(start, start + _BLOCK) for start in range(0, len(params), _BLOCK))]
+        return (np.concatenate([cost for cost, _, _ in blocks]), np.concatenate([steps for _, steps, _ in blocks]),
+                np.concatenate([evaluated for _, _, evaluated in blocks], axis=1))
+    augmented, cost = _evaluate(linkage, tc, p, params, known)
+    matrices = augmented.transpose(1, 2, 0)
+    wanted = None if bound is None else cost <= bound
+    if wanted is None or wanted.all():
+        steps = _steps(matrices)
+    else:
+        steps = np.empty(params.shape)
+        if wanted.any():
+            steps[wanted] = _steps(matrices[wanted])
+    return cost, steps, augmented[[0, -2, -1]]
 
 
 def _least_squares(linkage: Mechanism, tc: np.ndarray, p: np.ndarray, params: np.ndarray,

@@ -38,7 +38,7 @@ import numpy as np
 
 from ..constants import STANDARD_GRAVITY
 from .masses import MassModel
-from .spatial import Z, SpatialLinkage, SpatialMotion, cross, spatial_motion
+from .spatial import Z, SpatialLinkage, SpatialMotion, cross, dot, norm, spatial_motion
 
 
 
@@ -62,11 +62,24 @@ class LinkLoads:
 
     def resultant(self) -> np.ndarray:
         """Sum of the forces, shape (N, 3) [N]."""
-        return self.forces.sum(axis=1)
+        return _sum_points(self.forces.swapaxes(0, 1))
 
     def moment_about_origin(self) -> np.ndarray:
         """Moment about the centre bearing C, sum p x F + couple, shape (N, 3) [N·m]."""
-        return cross(self.points, self.forces).sum(axis=1) + self.moment
+        return _sum_points(cross(self.points.swapaxes(0, 1), self.forces.swapaxes(0, 1))) + self.moment
+
+
+def _sum_points(per_point: np.ndarray) -> np.ndarray:
+    """Sum over the first axis (the k points of a link, (k, N, 3) -> (N, 3)), term by term.
+
+    The same additions in the same order as numpy's reduction over the short axis,
+    0.0 + x_0 + x_1 + ... (so the same bits, the sign of a zero included), without the
+    reduction's per-row overhead on an axis of a few entries.
+    """
+    total = 0.0 + per_point[0]
+    for term in per_point[1:]:
+        total += term
+    return total
 
 
 @dataclass(frozen=True)
@@ -184,10 +197,13 @@ def applied_loads(
     linkage = spatial.planar
     b = spatial.crank_half_spacing
 
-    def body(masses_and_points, accelerations, moment) -> LinkLoads:
-        m = np.array(masses_and_points[0])[None, :, None]
+    # A link's k points are held point by point, arrays (k, N, 3), while they are computed
+    # (the per-angle vectors then broadcast over the points at full speed) and handed on as
+    # the views (N, k, 3) that LinkLoads documents: the same numbers, element by element.
+    def body(link_masses, points, accelerations, moment) -> LinkLoads:
+        m = np.array(link_masses)[:, None, None]
         forces = m * g - k_in * m * accelerations
-        return LinkLoads(forces=forces, points=masses_and_points[1], moment=k_in * moment)
+        return LinkLoads(forces=forces.swapaxes(0, 1), points=points.swapaxes(0, 1), moment=k_in * moment)
 
     # Crank: two arms and the counterweights (half on each arm), points in the arm planes.
     theta = sm.crank_angle
@@ -199,53 +215,59 @@ def applied_loads(
     arm3 = theta + spatial.arm_phase_offset  # side 3's arm (at -b), turned with its blocks by a whole-arm error
     rel = np.stack([masses.crank_arm_cg * along(theta), masses.crank_arm_cg * along(arm3),
                     masses.counterweight_radius * along(theta + masses.counterweight_phase),
-                    masses.counterweight_radius * along(arm3 + masses.counterweight_phase)], axis=1)
-    offsets = np.array([b, -b, b, -b])[None, :, None] * Z
-    acc = _point_acceleration(sm.e1[:, None, :], sm.w1[:, None, :], rel)
+                    masses.counterweight_radius * along(arm3 + masses.counterweight_phase)])
+    offsets = np.array([b, -b, b, -b])[:, None, None] * Z
+    acc = _point_acceleration(sm.e1, sm.w1, rel)
     half_cw = 0.5 * masses.counterweight_mass
-    crank = body(([masses.crank_arm_mass] * 2 + [half_cw] * 2, sm.crank_shaft[:, None, :] + offsets + rel),
+    crank = body([masses.crank_arm_mass] * 2 + [half_cw] * 2, sm.crank_shaft + offsets + rel,
                  acc, -2.0 * masses.crank_arm_inertia * sm.e1)
 
     def pitman(pin: np.ndarray, top: np.ndarray, w: np.ndarray, eps: np.ndarray) -> LinkLoads:
         axis = top - pin
-        rel_s = masses.pitman_cg / np.linalg.norm(axis, axis=-1, keepdims=True) * axis
+        rel_s = masses.pitman_cg / norm(axis)[:, None] * axis
         a_pin = _point_acceleration(sm.e1, sm.w1, pin - sm.crank_shaft)  # w1, e1 along z: z offset drops out
         a_s = _point_acceleration(eps, w, rel_s, a_pin)
-        return body(([masses.pitman_mass], (pin + rel_s)[:, None, :]), a_s[:, None, :], -masses.pitman_inertia * eps)
+        return body([masses.pitman_mass], (pin + rel_s)[None], a_s[None], -masses.pitman_inertia * eps)
 
     pitman2 = pitman(sm.pin_a, sm.pin_b, sm.w2, sm.e2)
     pitman3 = pitman(sm.pin_a1, sm.pin_b1, sm.w3, sm.e3)
 
     # Equalizer: centre of mass at D on the beam; inertia about its pin line u goes to the beam.
     u = sm.pin_b - sm.pin_b1
-    u = u / np.linalg.norm(u, axis=-1, keepdims=True)
-    spin = np.sum(sm.e4 * u, axis=-1, keepdims=True) * u
+    u = u / norm(u)[:, None]
+    spin = dot(sm.e4, u)[:, None] * u
     axial_moment = -masses.equalizer_inertia * spin
-    gyro = (masses.equalizer_inertia - masses.equalizer_transverse_inertia) * np.sum(
-        sm.w4 * u, axis=-1, keepdims=True) * cross(sm.w4, u)
+    gyro = (masses.equalizer_inertia - masses.equalizer_transverse_inertia) * dot(sm.w4, u)[:, None] * cross(sm.w4, u)
     a_d = _point_acceleration(sm.e5, sm.w5, sm.pin_d)
-    equalizer = body(([masses.equalizer_mass], sm.pin_d[:, None, :]), a_d[:, None, :],
+    equalizer = body([masses.equalizer_mass], sm.pin_d[None], a_d[None],
                      -masses.equalizer_transverse_inertia * (sm.e4 - spin) - gyro)
 
     # Beam body and horsehead on the beam line; rod load at the horsehead tangent point E.
     line = np.stack([np.cos(sm.beam_angle), np.sin(sm.beam_angle), np.zeros(n)], axis=-1)
-    parts = np.stack([masses.beam_cg * line, masses.horsehead_cg * line], axis=1)
-    acc_parts = _point_acceleration(sm.e5[:, None, :], sm.w5[:, None, :], parts)
-    beam_parts = body(([masses.beam_mass, masses.horsehead_mass], parts), acc_parts,
-                      -(masses.beam_inertia + masses.horsehead_inertia) * sm.e5 + axial_moment)
-    rod = np.stack([np.zeros(n), -np.asarray(rod_load, dtype=float), np.zeros(n)], axis=-1)
-    e_point = np.broadcast_to(np.array([linkage.front_arm, 0.0, 0.0]), (n, 3))
-    beam = LinkLoads(
-        forces=np.concatenate([beam_parts.forces, rod[:, None, :]], axis=1),
-        points=np.concatenate([beam_parts.points, e_point[:, None, :]], axis=1),
-        moment=beam_parts.moment,
-    )
+    parts = np.stack([masses.beam_cg * line, masses.horsehead_cg * line])
+    acc_parts = _point_acceleration(sm.e5, sm.w5, parts)
+    m = np.array([masses.beam_mass, masses.horsehead_mass])[:, None, None]
+    forces = np.empty((3, n, 3))
+    np.subtract(m * g, k_in * m * acc_parts, out=forces[0:2])
+    forces[2, :, 0], forces[2, :, 2] = 0.0, 0.0
+    np.negative(np.asarray(rod_load, dtype=float), out=forces[2, :, 1])
+    points = np.zeros((3, n, 3))
+    points[0:2] = parts
+    points[2, :, 0] = linkage.front_arm
+    beam = LinkLoads(forces=forces.swapaxes(0, 1), points=points.swapaxes(0, 1),
+                     moment=k_in * (-(masses.beam_inertia + masses.horsehead_inertia) * sm.e5 + axial_moment))
     return AppliedLoads(crank=crank, pitman2=pitman2, pitman3=pitman3, equalizer=equalizer, beam=beam)
 
 
-def _moment_about(loads: LinkLoads, point: np.ndarray) -> np.ndarray:
-    """Moment of a link's applied loads about ``point``: M_O - P x F."""
-    return loads.moment_about_origin() - cross(point, loads.resultant())
+def _cross_z(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The z component of a x b alone, as :func:`.spatial.cross` computes it."""
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _max_abs(v: np.ndarray) -> np.ndarray:
+    """max |v_i| over the last axis (three components), exact in any order."""
+    mag = np.abs(v)
+    return np.maximum(np.maximum(mag[..., 0], mag[..., 1]), mag[..., 2])
 
 
 def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: AppliedLoads) -> Reactions:
@@ -291,53 +313,57 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     [Spatial7SK12] eqs. 17-48 (closed by eqs. 38-39 for the whole group);
     [PopovychSenchishak] eqs. 1-9.
     """
+    n = sm.pin_d.shape[0]
+    # Each link's resultant and moment about C, once (they serve the solution and the residual).
+    links = (loads.pitman2, loads.pitman3, loads.equalizer, loads.beam)
+    (f2, m2), (f3, m3), (f4, m4), (f5, beam_moment) = ((link.resultant(), link.moment_about_origin()) for link in links)
     w2, w3 = sm.pin_b - sm.pin_a, sm.pin_b1 - sm.pin_a1
-    n2 = w2 / np.linalg.norm(w2, axis=-1, keepdims=True)
-    n3 = w3 / np.linalg.norm(w3, axis=-1, keepdims=True)
-    r24_perp = cross(_moment_about(loads.pitman2, sm.pin_a), w2) / np.sum(w2 * w2, axis=-1, keepdims=True)
-    r34_perp = cross(_moment_about(loads.pitman3, sm.pin_a1), w3) / np.sum(w3 * w3, axis=-1, keepdims=True)
-    f4 = loads.equalizer.resultant()
+    n2 = w2 / norm(w2)[:, None]
+    n3 = w3 / norm(w3)[:, None]
+    r24_perp = cross(m2 - cross(sm.pin_a, f2), w2) / dot(w2, w2)[:, None]
+    r34_perp = cross(m3 - cross(sm.pin_a1, f3), w3) / dot(w3, w3)[:, None]
     d = sm.pin_d
     arm2, arm3 = sm.pin_b - d, sm.pin_b1 - d
-    q_equalizer = -(_moment_about(loads.equalizer, d) + cross(arm2, r24_perp) + cross(arm3, r34_perp))
-    beam_moment = loads.beam.moment_about_origin()
-    q_beam = -(beam_moment[:, 2] + cross(d, r24_perp + r34_perp + f4)[:, 2])
-    g = np.stack([
-        np.concatenate([cross(arm2, n2), cross(d, n2)[:, 2:]], axis=-1),
-        np.concatenate([cross(arm3, n3), cross(d, n3)[:, 2:]], axis=-1),
-    ], axis=-1)  # (N, 4, 2)
-    q = np.concatenate([q_equalizer, q_beam[:, None]], axis=-1)
-    gtg = np.einsum("nki,nkj->nij", g, g)
-    gtq = np.einsum("nki,nk->ni", g, q)
-    det = gtg[:, 0, 0] * gtg[:, 1, 1] - gtg[:, 0, 1] ** 2
-    t2 = (gtg[:, 1, 1] * gtq[:, 0] - gtg[:, 0, 1] * gtq[:, 1]) / det
-    t3 = (gtg[:, 0, 0] * gtq[:, 1] - gtg[:, 0, 1] * gtq[:, 0]) / det
+    q = np.empty((n, 4))
+    np.negative(m4 - cross(d, f4) + cross(arm2, r24_perp) + cross(arm3, r34_perp), out=q[:, 0:3])
+    np.negative(beam_moment[:, 2] + _cross_z(d, r24_perp + r34_perp + f4), out=q[:, 3])
+    # The columns of g (N, 4, 2), one per axial force: rows of the equalizer's moments and the beam's.
+    g2, g3 = np.empty((n, 4)), np.empty((n, 4))
+    for column, arm, axis in ((g2, arm2, n2), (g3, arm3, n3)):
+        cross(arm, axis, out=column[:, 0:3])
+        column[:, 3] = _cross_z(d, axis)
+    gtg00, gtg01, gtg11 = dot(g2, g2), dot(g2, g3), dot(g3, g3)
+    gtq0, gtq1 = dot(g2, q), dot(g3, q)
+    det = gtg00 * gtg11 - gtg01 ** 2
+    t2 = (gtg11 * gtq0 - gtg01 * gtq1) / det
+    t3 = (gtg00 * gtq1 - gtg01 * gtq0) / det
     r24 = r24_perp + t2[:, None] * n2
     r34 = r34_perp + t3[:, None] * n3
     r45 = r24 + r34 + f4
-    r05 = -r45 - loads.beam.resultant()
-    n = d.shape[0]
+    r05 = -r45 - f5
     across = cross(d, r45) + beam_moment
-    m05 = -np.stack([across[:, 0], across[:, 1], np.zeros(n)], axis=-1)
-    r12 = r24 - loads.pitman2.resultant()
-    r13 = r34 - loads.pitman3.resultant()
+    m05 = np.empty((n, 3))
+    np.negative(across[:, 0:2], out=m05[:, 0:2])
+    m05[:, 2] = -0.0  # M_R05 = -(D x R45 + M) across z only: the negated zero along it
+    r12 = r24 - f2
+    r13 = r34 - f3
 
     origin = np.zeros_like(d)
     equations = (
-        (loads.pitman2, ((r12, sm.pin_a), (-r24, sm.pin_b)), 0.0),
-        (loads.pitman3, ((r13, sm.pin_a1), (-r34, sm.pin_b1)), 0.0),
-        (loads.equalizer, ((r24, sm.pin_b), (r34, sm.pin_b1), (-r45, d)), 0.0),
-        (loads.beam, ((r45, d), (r05, origin)), m05),
+        (f2, m2, ((r12, sm.pin_a), (-r24, sm.pin_b)), 0.0),
+        (f3, m3, ((r13, sm.pin_a1), (-r34, sm.pin_b1)), 0.0),
+        (f4, m4, ((r24, sm.pin_b), (r34, sm.pin_b1), (-r45, d)), 0.0),
+        (f5, beam_moment, ((r45, d), (r05, origin)), m05),
     )
-    force_ref = max(float(np.max(np.abs(link.forces))) for link in (loads.pitman2, loads.pitman3, loads.equalizer, loads.beam))
+    force_ref = max(float(np.max(np.abs(link.forces))) for link in links)
     force_ref = force_ref if force_ref > 0 else 1.0
     size = spatial.planar.frame_length + spatial.planar.front_arm
     residual = np.zeros(n)
-    for link, reactions, couple in equations:
-        force = link.resultant() + sum(f for f, _ in reactions)
-        moment = link.moment_about_origin() + sum(cross(p, f) for f, p in reactions) + couple
-        residual = np.maximum(residual, np.max(np.abs(force), axis=-1) / force_ref)
-        residual = np.maximum(residual, np.max(np.abs(moment), axis=-1) / (force_ref * size))
+    for resultant, moment_c, reactions, couple in equations:
+        force = resultant + sum(f for f, _ in reactions)
+        moment = moment_c + sum(cross(p, f) for f, p in reactions) + couple
+        residual = np.maximum(residual, _max_abs(force) / force_ref)
+        residual = np.maximum(residual, _max_abs(moment) / (force_ref * size))
 
     r01, m01, torque = crank_reactions(spatial, sm, loads.crank, r12, r13)
     return Reactions(
@@ -377,9 +403,10 @@ def crank_reactions(
     ----------
     [PopovychSenchishak] eqs. 8-9.
     """
-    r01 = r12 + r13 - crank.resultant()
+    resultant = crank.resultant()
+    r01 = r12 + r13 - resultant
     o = sm.crank_shaft
-    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + _moment_about(crank, o)
+    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + (crank.moment_about_origin() - cross(o, resultant))
     drive = -moment
     spin = spatial.crank_spin
     torque = drive @ spin

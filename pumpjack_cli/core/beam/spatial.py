@@ -152,13 +152,18 @@ class SpatialMotion:
     e5: np.ndarray
 
 
-def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def cross(a: np.ndarray, b: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Cross product a x b over the last axis (length 3), np.cross without its per-call overhead.
+
+    Each component is written into one output array (no stacking of three temporaries):
+    each component is still a_i b_j - a_j b_i, so the bits are those of np.cross.
 
     Parameters
     ----------
     a, b : numpy.ndarray
         Vectors, shape (..., 3) (any units).
+    out : numpy.ndarray, optional
+        Where to write a x b, of the broadcast shape (a view into a larger array will do).
 
     Returns
     -------
@@ -172,7 +177,65 @@ def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
     b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+    if out is None:
+        out = np.empty(np.broadcast_shapes(np.shape(a), np.shape(b)), dtype=np.result_type(a, b))
+    c0, c1, c2 = out[..., 0], out[..., 1], out[..., 2]
+    np.multiply(a1, b2, out=c0)
+    c0 -= a2 * b1
+    np.multiply(a2, b0, out=c1)
+    c1 -= a0 * b2
+    np.multiply(a0, b1, out=c2)
+    c2 -= a1 * b0
+    return out
+
+
+def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Dot product a . b over the last axis, np.sum(a * b, axis=-1) term by term.
+
+    numpy adds a reduction over a short axis in order, 0.0 + a_0 b_0 + a_1 b_1 + ...; the
+    same additions on whole component arrays give the same bits (the sign of a zero
+    included) without the reduction's per-row overhead.
+
+    Parameters
+    ----------
+    a, b : numpy.ndarray
+        Vectors, shape (..., k) (any units).
+
+    Returns
+    -------
+    numpy.ndarray
+        a . b, shape (...) (product of the units).
+
+    Examples
+    --------
+    >>> dot(np.array([[1.0, 2.0, 3.0]]), np.array([[4.0, 5.0, 6.0]])).tolist()
+    [32.0]
+    """
+    total = 0.0 + a[..., 0] * b[..., 0]
+    for i in range(1, a.shape[-1]):
+        total += a[..., i] * b[..., i]
+    return total
+
+
+def norm(a: np.ndarray) -> np.ndarray:
+    """Length |a| over the last axis as np.linalg.norm computes it, sqrt(:func:`dot` (a, a)).
+
+    Parameters
+    ----------
+    a : numpy.ndarray
+        Vectors, shape (..., k) (any unit).
+
+    Returns
+    -------
+    numpy.ndarray
+        |a|, shape (...) (the same unit).
+
+    Examples
+    --------
+    >>> norm(np.array([[3.0, 4.0, 0.0]])).tolist()
+    [5.0]
+    """
+    return np.sqrt(dot(a, a))
 
 
 def skew(v: np.ndarray) -> np.ndarray:
@@ -207,15 +270,22 @@ def _loop_matrix(l2: np.ndarray, l3: np.ndarray, l4: np.ndarray, l41: np.ndarray
 
     Rows 0-2: loop O-A-B-D-C; rows 3-5: loop O1-A1-B1-D-C; w x l = -[l]x w, and the
     equalizer's w4 = w5z z + k l. Rows 6-7: no pitman spin, w2 . l2 = 0, w3 . l3 = 0.
+    The blocks -[l]x are written entry by entry, the same values as -skew(l) (the
+    diagonal -0.0 included), without building skew(l) first.
     """
     n = l2.shape[0]
     k = np.zeros((n, 8, 8))
-    k[:, 0:3, 0:3] = -skew(l2)
-    k[:, 0:3, 6] = cross(line, l4)
-    k[:, 0:3, 7] = cross(Z, l4 + l5)
-    k[:, 3:6, 3:6] = -skew(l3)
-    k[:, 3:6, 6] = cross(line, l41)
-    k[:, 3:6, 7] = cross(Z, l41 + l5)
+    for row, vec in ((0, l2), (3, l3)):
+        v0, v1, v2 = vec[:, 0], vec[:, 1], vec[:, 2]
+        block = k[:, row:row + 3, row:row + 3]
+        block[:, 0, 0] = block[:, 1, 1] = block[:, 2, 2] = -0.0
+        block[:, 0, 1], block[:, 0, 2] = v2, -v1
+        block[:, 1, 0], block[:, 1, 2] = -v2, v0
+        block[:, 2, 0], block[:, 2, 1] = v1, -v0
+    cross(line, l4, out=k[:, 0:3, 6])
+    cross(Z, l4 + l5, out=k[:, 0:3, 7])
+    cross(line, l41, out=k[:, 3:6, 6])
+    cross(Z, l41 + l5, out=k[:, 3:6, 7])
     k[:, 6, 0:3] = l2
     k[:, 7, 3:6] = l3
     return k
@@ -265,9 +335,9 @@ def _pose(spatial: SpatialLinkage, theta: np.ndarray) -> _Pose:
             residual, jac = np.empty((n, 2)), np.empty((n, 2, 2))
             for row, (sign, crank_pin, length) in enumerate(((1.0, a, lengths[0]), (-1.0, a1, lengths[1]))):
                 w = d + sign * e * u - crank_pin
-                residual[:, row] = np.sum(w * w, axis=-1) - length**2
-                jac[:, row, 0] = 2.0 * np.sum(w * (d_psi + sign * e * u_psi), axis=-1)
-                jac[:, row, 1] = 2.0 * np.sum(w * (sign * e * u_gamma), axis=-1)
+                residual[:, row] = dot(w, w) - length**2
+                jac[:, row, 0] = 2.0 * dot(w, d_psi + sign * e * u_psi)
+                jac[:, row, 1] = 2.0 * dot(w, sign * e * u_gamma)
             step = np.linalg.solve(jac, residual[..., None])[..., 0]
             psi, gamma = psi - step[:, 0], gamma - step[:, 1]
             if np.max(np.abs(step)) < 1e-14:
@@ -351,7 +421,10 @@ def spatial_motion(
     e1 = crank_acceleration[:, None] * spin
     k = _loop_matrix(l2, l3, l4, l41, l5, line)
 
-    rhs_v = np.concatenate([-cross(w1, l1), -cross(w1, l11), np.zeros((n, 2))], axis=1)
+    rhs_v = np.zeros((n, 8))
+    cross(w1, l1, out=rhs_v[:, 0:3])
+    cross(w1, l11, out=rhs_v[:, 3:6])
+    np.negative(rhs_v[:, 0:6], out=rhs_v[:, 0:6])
     x = np.linalg.solve(k, rhs_v[..., None])[..., 0]
     w2, w3, roll_rate = x[:, 0:3], x[:, 3:6], x[:, 6]
     w5 = np.stack([zeros, zeros, x[:, 7]], axis=-1)
@@ -362,12 +435,16 @@ def spatial_motion(
 
     # Second derivative of each loop: sum(eps x l + w x (w x l)) = 0 ([Spatial7SK12] eqs. 11-12).
     # eps4 = eps5z z + k' l + k w5z (z x l): the last term is known and goes to the right side.
+    # The beam's term w5 x (w5 x l5) is common to both loops.
     known4 = (roll_rate * x[:, 7])[:, None] * normal
+    beam_term = centripetal(w5, l5)
     loop1 = (cross(e1, l1) + centripetal(w1, l1) + centripetal(w2, l2) + centripetal(w4, l4)
-             + cross(known4, l4) + centripetal(w5, l5))
+             + cross(known4, l4) + beam_term)
     loop2 = (cross(e1, l11) + centripetal(w1, l11) + centripetal(w3, l3) + centripetal(w4, l41)
-             + cross(known4, l41) + centripetal(w5, l5))
-    rhs_a = np.concatenate([-loop1, -loop2, np.zeros((n, 2))], axis=1)
+             + cross(known4, l41) + beam_term)
+    rhs_a = np.zeros((n, 8))
+    np.negative(loop1, out=rhs_a[:, 0:3])
+    np.negative(loop2, out=rhs_a[:, 3:6])
     y = np.linalg.solve(k, rhs_a[..., None])[..., 0]
     e5 = np.stack([zeros, zeros, y[:, 7]], axis=-1)
     return SpatialMotion(

@@ -35,7 +35,7 @@ q_k' = Re(eta_k) - (c/2) q_k.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -113,7 +113,12 @@ def _transfer(rods: RodString, omega: np.ndarray) -> tuple[list[np.ndarray], lis
 
 
 def _frequencies(rods: RodString, omega_cut: float) -> np.ndarray:
-    """The roots of N(L; omega) = 0 (free end) up to omega_cut [rad/s], by a fine scan and bisection."""
+    """The roots of N(L; omega) = 0 (free end) up to omega_cut [rad/s], by a fine scan and bisection.
+
+    A bracket's lower end keeps the sign of N it started with, so that sign is taken once. A step
+    that moves no bracket end (every midpoint is an end: the ends are adjacent numbers) leaves the
+    steps after it the same midpoints and nothing to move either, so the bisection stops there,
+    with the roots that all ``BISECTION_STEPS`` steps would give."""
     tau = travel_time(rods)
     step = SCAN_FRACTION * np.pi / tau
     grid = np.arange(1, int(np.ceil(omega_cut / step)) + 2) * step
@@ -121,13 +126,14 @@ def _frequencies(rods: RodString, omega_cut: float) -> np.ndarray:
     sign = np.signbit(value)
     brackets = np.flatnonzero(sign[:-1] != sign[1:])
     lo, hi = grid[brackets], grid[brackets + 1]
-    f_lo = _transfer(rods, lo)[3]
+    sign_lo = np.signbit(_transfer(rods, lo)[3])
     for _ in range(BISECTION_STEPS):
         mid = 0.5 * (lo + hi)
-        f_mid = _transfer(rods, mid)[3]
-        left = np.signbit(f_mid) == np.signbit(f_lo)
-        lo, f_lo = np.where(left, mid, lo), np.where(left, f_mid, f_lo)
-        hi = np.where(left, hi, mid)
+        left = np.signbit(_transfer(rods, mid)[3]) == sign_lo
+        new_lo, new_hi = np.where(left, mid, lo), np.where(left, hi, mid)
+        if np.array_equal(new_lo, lo) and np.array_equal(new_hi, hi):
+            break
+        lo, hi = new_lo, new_hi
     roots = 0.5 * (lo + hi)
     return roots[roots <= omega_cut]
 
@@ -146,13 +152,17 @@ def rod_modes(rods: RodString, damping: float, omega_cut: float) -> RodModes:
     [1.0, 3.0, 5.0]
     """
     c = damping_coefficient(rods, damping)
-    first = float(_frequencies(rods, 4.0 * np.pi / travel_time(rods))[0])
+    # one scan finds the first mode and the kept ones: up to either cut-off, the roots of the longer
+    # scan are those of the shorter one (the same grid points, brackets and bisection steps)
+    first_cut = 4.0 * np.pi / travel_time(rods)
+    roots = _frequencies(rods, max(omega_cut, first_cut))
+    first = float(roots[roots <= first_cut][0])
     if not first > 0.5 * c:
         raise PredictionError(
             f"damping factor {damping:g} is too large: c = {c:.4g} 1/s makes the first mode "
             f"({first:.4g} rad/s) overdamped (needs c / 2 < omega_1)"
         )
-    omega = _frequencies(rods, omega_cut)
+    omega = roots[roots <= omega_cut]
     tops_phi, tops_force, bottom_phi, _ = _transfer(rods, omega)
     norm = np.zeros_like(omega)
     taper_integrals = []
@@ -197,12 +207,28 @@ class StepResponse:
 
     powers[k, n] = e^{lambda_k h n}; hat[k, n]: state of mode k at sample n after a unit
     hat-shaped forcing sample at 0 (hat[:, 0] = I1, hat[:, n] = e^{lambda h (n-1)}
-    (e^{lambda h} I1 + I0)), n = 0 .. samples.
+    (e^{lambda h} I1 + I0)), n = 0 .. samples. ``spectra`` keeps the kernel's spectra of
+    :meth:`periodic_spectrum` by period: the solvers find several periodic states with one
+    response, each needing the same spectrum.
     """
 
     step: float
     powers: np.ndarray
     hat: np.ndarray
+    spectra: dict[int, np.ndarray] = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    def periodic_spectrum(self, samples: int) -> np.ndarray:
+        """FFT over n of the kernel of a forcing repeating every N = ``samples`` samples: hat[:, n]
+        with the past periods' hat[:, n + p N] added (:func:`periodic_states`), taken once (read-only)."""
+        spectrum = self.spectra.get(samples)
+        if spectrum is None:
+            kernel = self.hat
+            closure = 1.0 / (1.0 - self.powers[:, samples])
+            wrapped = kernel[:, :samples] * closure[:, None]
+            wrapped[:, 0] = kernel[:, 0] + kernel[:, samples] * closure
+            spectrum = self.spectra[samples] = np.fft.fft(wrapped, axis=1)
+            spectrum.flags.writeable = False
+        return spectrum
 
 
 def step_response(modes: RodModes, step: float, samples: int) -> StepResponse:
@@ -216,7 +242,7 @@ def step_response(modes: RodModes, step: float, samples: int) -> StepResponse:
     powers = np.exp(np.outer(lh, np.arange(samples + 1)))
     hat = np.empty_like(powers)
     hat[:, 0] = i1
-    hat[:, 1:] = powers[:, :-1] * (growth * i1 + i0)[:, None]
+    np.multiply(powers[:, :-1], (growth * i1 + i0)[:, None], out=hat[:, 1:])
     return StepResponse(step, powers, hat)
 
 
@@ -225,11 +251,9 @@ def periodic_states(response: StepResponse, forcing: np.ndarray) -> np.ndarray:
 
     Past periods add hat[:, n + p N] = e^{lambda h p N} hat[:, n] for n >= 1 (and
     hat[:, N] e^{lambda h (p-1) N} at n = 0): a geometric series closed with
-    1 / (1 - e^{lambda h N}); the circular convolution is done by FFT.
+    1 / (1 - e^{lambda h N}); the circular convolution is done by FFT, with the kernel's
+    spectrum kept by the response (:meth:`StepResponse.periodic_spectrum`).
     """
-    samples = forcing.shape[1]
-    kernel = response.hat
-    closure = 1.0 / (1.0 - response.powers[:, samples])
-    wrapped = kernel[:, :samples] * closure[:, None]
-    wrapped[:, 0] = kernel[:, 0] + kernel[:, samples] * closure
-    return np.fft.ifft(np.fft.fft(wrapped, axis=1) * np.fft.fft(forcing, axis=1), axis=1)
+    states = np.fft.fft(forcing, axis=1)
+    np.multiply(response.periodic_spectrum(forcing.shape[1]), states, out=states)
+    return np.fft.ifft(states, axis=1, out=states)

@@ -80,8 +80,11 @@ class WellModel:
 
 
 def modal_velocity(modes: RodModes, states: np.ndarray) -> np.ndarray:
-    """Modal velocities q_k' = Re(eta_k) - (c/2) Im(eta_k) / omega_dk from the complex states (any trailing shape)."""
-    return states.real - 0.5 * modes.damping * states.imag / modes.damped_frequency[:, None]
+    """Modal velocities q_k' = Re(eta_k) - (c/2) Im(eta_k) / omega_dk from the complex states (modes x samples),
+    computed in the one array returned (the states of a whole cycle are large)."""
+    velocity = np.multiply(0.5 * modes.damping, states.imag)
+    np.divide(velocity, modes.damped_frequency[:, None], out=velocity)
+    return np.subtract(states.real, velocity, out=velocity)
 
 
 def well_model(rods: RodString, pump: Pump, *, damping: float, step: float, samples: int,
@@ -166,7 +169,8 @@ def periodic_fields(model: WellModel, pump_load: np.ndarray, top_down: np.ndarra
     left out); the sum over a cycle of samples is exact for a trigonometric polynomial.
     """
     m = model.modes
-    forcing = m.bottom[:, None] * pump_load[None, :] - m.participation[:, None] * top_drive[None, :]
+    forcing = m.bottom[:, None] * pump_load[None, :]
+    forcing -= m.participation[:, None] * top_drive[None, :]
     states = periodic_states(model.response, forcing)
     q = states.imag / m.damped_frequency[:, None]
     qdot = modal_velocity(m, states)
