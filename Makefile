@@ -5,10 +5,15 @@ STAMP := $(VENV)/.installed-stamp
 
 .PHONY: demo test bench
 
+# The package's bytecode is compiled as `pip install` (not editable) compiles an installed
+# package's: every interpreter then reads it instead of compiling the modules it imports, which
+# an environment with PYTHONDONTWRITEBYTECODE would do in every process (the test suite starts
+# some sixty; docs/performance.md). A module edited later is compiled again where it is imported.
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/python -m pip install --quiet --upgrade pip
 	$(VENV)/bin/python -m pip install --quiet -e '.[test]'
+	$(VENV)/bin/python -m compileall -q pumpjack_cli
 	touch $(STAMP)
 
 # The main job on a bundled unit: exact kinematics of SK8-3,5-4000 ([SK8Rotation2013]).
