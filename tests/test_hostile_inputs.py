@@ -372,6 +372,22 @@ def test_broken_pipe_is_quiet(fmt):
     assert process.wait(timeout=120) == 1 and err == b""
 
 
+def test_an_unbuffered_non_blocking_pipe_gets_every_row(run_cli):
+    """A pipe set non-blocking by whoever made it (the flag is shared with the child): an
+    unbuffered standard output that would block is waited for, not dropped; all 320 kB of the
+    table arrive, as the command prints them in-process."""
+    read_end, write_end = os.pipe()
+    os.set_blocking(write_end, False)
+    argv = ["kinematics", "sk8-3.5-4000", "--steps", "4000", "-f", "csv"]
+    process = subprocess.Popen([_script_path(), *argv], stdout=write_end, stderr=subprocess.PIPE, cwd=REPO_ROOT,
+                               env={**os.environ, "PYTHONUNBUFFERED": "1"})
+    os.close(write_end)
+    with open(read_end, "rb") as pipe:
+        received = pipe.read()
+    assert process.wait(timeout=120) == 0 and process.stderr.read() == b""
+    assert received.decode() == run_cli(*argv)[1]
+
+
 # --- a standard output that cannot encode the text, a file name that is not UTF-8 -----------
 
 #: An ASCII standard output: by Python's variable, or by a locale without UTF-8 (Python's
