@@ -103,9 +103,9 @@ class CoupledPrediction:
 class _Tables:
     """s, TF, TF', I, I', M_gravity on a uniform crank-angle grid, interpolated linearly (Python floats).
 
-    ``intervals`` holds, per grid interval, TF, TF', I, I', M_gravity at its start and their
-    increments over it: the march's lookup, written out, takes one list item per evaluation
-    and does the arithmetic of :meth:`at`.
+    ``intervals`` holds, per grid interval, the six values at its start and their increments
+    over it: :meth:`at` and the march's lookup, written out in its loop, take one list item per
+    evaluation.
     """
 
     def __init__(self, machine: Machine):
@@ -117,17 +117,15 @@ class _Tables:
                             gravity_torque(linkage, machine.masses, m, machine.gravity)], axis=1)
         if not (np.all(np.isfinite(columns)) and np.all(inertia > 0)):
             raise PredictionError("the machine's inertia or gravity torque is not finite and positive; check the unit data")
-        self.rows = columns.tolist()
-        self.intervals = np.concatenate([columns[:-1, 1:], np.diff(columns[:, 1:], axis=0)], axis=1).tolist()
+        self.intervals = np.concatenate([columns[:-1], np.diff(columns, axis=0)], axis=1).tolist()
         self.scale = TABLE_STEPS / (2.0 * np.pi)
 
     def at(self, theta: float) -> tuple[float, float, float, float, float, float]:
         x = (theta % _TWO_PI) * self.scale
         i = min(int(x), TABLE_STEPS - 1)
         f = x - i
-        (s0, t0, d0, i0, r0, g0), (s1, t1, d1, i1, r1, g1) = self.rows[i], self.rows[i + 1]
-        return (s0 + f * (s1 - s0), t0 + f * (t1 - t0), d0 + f * (d1 - d0), i0 + f * (i1 - i0), r0 + f * (r1 - r0),
-                g0 + f * (g1 - g0))
+        s, t, d, inertia, r, g, ds, dt, dd, di, dr, dg = self.intervals[i]
+        return s + f * ds, t + f * dt, d + f * dd, inertia + f * di, r + f * dr, g + f * dg
 
 
 class _Channels:
@@ -342,8 +340,7 @@ class _CoupledMarch:
         start = theta_p
         chamber = self.chamber
         step_chamber = chamber.step
-        intervals, table_rows, scale, last, two_pi, passes = (tables.intervals, tables.rows, tables.scale,
-                                                              TABLE_STEPS - 1, _TWO_PI, _PASSES)
+        intervals, scale, last, two_pi, passes = tables.intervals, tables.scale, TABLE_STEPS - 1, _TWO_PI, _PASSES
         append = rows.append
         half = 0.5 * h
         stall = STALL_FRACTION * self.omega
@@ -362,7 +359,7 @@ class _CoupledMarch:
                     if i > last:
                         i = last
                     f = x - i
-                    tf, tf1, inertia, rate, grav, dtf, dtf1, dinertia, drate, dgrav = intervals[i]
+                    s0, tf, tf1, inertia, rate, grav, ds, dtf, dtf1, dinertia, drate, dgrav = intervals[i]
                     tf, tf1, inertia, rate, grav = (tf + f * dtf, tf1 + f * dtf1, inertia + f * dinertia,
                                                     rate + f * drate, grav + f * dgrav)
                     mass = inertia - fd0 * tf * tf
@@ -385,8 +382,7 @@ class _CoupledMarch:
                 raise PredictionError(
                     f"the crank stalls (omega1 {omega:.3g} 1/s at crank angle {np.degrees(theta) % 360:.1f} deg): "
                     f"the motor cannot turn the unit with this well")
-            s0 = table_rows[i][0]
-            s = s0 + f * (table_rows[i + 1][0] - s0)
+            s = s0 + f * ds
             history[2 * k], history[2 * k + 1] = f_k, a_k
             down = carry_position[k] - s + p_past + pl0 * f_k + pd0 * a_k
             append((theta, omega, eps, s, tf * omega, f_known + fl0 * f_k + fd0 * a_k, zeta, grav))
