@@ -38,7 +38,7 @@ import numpy as np
 
 from ..constants import STANDARD_GRAVITY
 from .masses import MassModel
-from .spatial import Z, SpatialLinkage, SpatialMotion, cross, dot, norm, spatial_motion
+from .spatial import Z, SpatialLinkage, SpatialMotion, cross, dot, norm, ordered_sum, spatial_motion
 
 
 
@@ -62,24 +62,11 @@ class LinkLoads:
 
     def resultant(self) -> np.ndarray:
         """Sum of the forces, shape (N, 3) [N]."""
-        return _sum_points(self.forces.swapaxes(0, 1))
+        return ordered_sum(self.forces.swapaxes(0, 1))
 
     def moment_about_origin(self) -> np.ndarray:
         """Moment about the centre bearing C, sum p x F + couple, shape (N, 3) [N·m]."""
-        return _sum_points(cross(self.points.swapaxes(0, 1), self.forces.swapaxes(0, 1))) + self.moment
-
-
-def _sum_points(per_point: np.ndarray) -> np.ndarray:
-    """Sum over the first axis (the k points of a link, (k, N, 3) -> (N, 3)), term by term.
-
-    The same additions in the same order as numpy's reduction over the short axis,
-    0.0 + x_0 + x_1 + ... (so the same bits, the sign of a zero included), without the
-    reduction's per-row overhead on an axis of a few entries.
-    """
-    total = 0.0 + per_point[0]
-    for term in per_point[1:]:
-        total += term
-    return total
+        return ordered_sum(cross(self.points.swapaxes(0, 1), self.forces.swapaxes(0, 1))) + self.moment
 
 
 @dataclass(frozen=True)
