@@ -16,8 +16,6 @@ import re
 from collections import Counter
 from pathlib import Path
 
-import pytest
-
 from helpers import REPO_ROOT
 
 TESTS = REPO_ROOT / "tests"
@@ -79,14 +77,22 @@ def test_the_citations_are_found_at_all():
         ("test_a.py", "test_b"), ("test_a.py", "test_c*"), ("test_d.py", None)]
 
 
-@pytest.mark.parametrize("path", _citing_files(), ids=lambda p: p.relative_to(REPO_ROOT).as_posix())
-def test_every_cited_test_exists(path):
-    paths, tests = _citations(path.read_text(encoding="utf-8"))
-    missing = [p for p in paths if not (REPO_ROOT / p).exists()]
-    assert not missing, f"{path.relative_to(REPO_ROOT)} cites {missing}, which do not exist"
+def test_every_cited_test_exists():
+    """Every citing file's cited paths, test files and tests, each offending file named with what it cites."""
     by_name = {p.name: p for p in _test_files()}
-    unknown = sorted({name for name, _ in tests if name not in by_name})
-    assert not unknown, f"{path.relative_to(REPO_ROOT)} cites {unknown}, which are no test files"
-    undefined = sorted(f"{name}::{test}" for name, test in tests
-                       if test and not fnmatch.filter(_defined(by_name[name]), test))
-    assert not undefined, f"{path.relative_to(REPO_ROOT)} cites {undefined}, which are not defined"
+    defined = {name: _defined(path) for name, path in by_name.items()}
+    found = []
+    for path in _citing_files():
+        paths, tests = _citations(path.read_text(encoding="utf-8"))
+        where = path.relative_to(REPO_ROOT)
+        missing = [p for p in paths if not (REPO_ROOT / p).exists()]
+        if missing:
+            found.append(f"{where} cites {missing}, which do not exist")
+        unknown = sorted({name for name, _ in tests if name not in by_name})
+        if unknown:
+            found.append(f"{where} cites {unknown}, which are no test files")
+        undefined = sorted(f"{name}::{test}" for name, test in tests
+                           if test and name in by_name and not fnmatch.filter(defined[name], test))
+        if undefined:
+            found.append(f"{where} cites {undefined}, which are not defined")
+    assert not found, "; ".join(found)

@@ -10,6 +10,7 @@ neither numpy nor a unit model.
 from __future__ import annotations
 
 import ast
+import functools
 import os
 import subprocess
 import sys
@@ -25,11 +26,18 @@ from helpers import REPO_ROOT
 PACKAGE = REPO_ROOT / "pumpjack_cli"
 
 
-def _imports(path: Path) -> set[str]:
+@functools.cache
+def _tree(path: Path) -> ast.Module:
+    """A file's syntax tree, parsed once for the checks below."""
+    return ast.parse(path.read_text(encoding="utf-8"))
+
+
+@functools.cache
+def _imports(path: Path) -> frozenset[str]:
     """Absolute module names a file imports (relative imports resolved against its package)."""
     package = path.relative_to(REPO_ROOT).with_suffix("").parts[:-1]
-    found = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    found: set[str] = set()
+    for node in ast.walk(_tree(path)):
         if isinstance(node, ast.Import):
             found |= {alias.name for alias in node.names}
         elif isinstance(node, ast.ImportFrom):
@@ -37,17 +45,23 @@ def _imports(path: Path) -> set[str]:
             module = ".".join(base + ([node.module] if node.module else []))
             found.add(module)
             found |= {f"{module}.{alias.name}" for alias in node.names}
-    return found
+    return frozenset(found)
 
 
 def _modules(folder: str) -> list[Path]:
     return sorted((PACKAGE / folder).rglob("*.py"))
 
 
-@pytest.mark.parametrize("path", _modules("commands"), ids=lambda p: p.name)
-def test_commands_never_import_each_other(path):
-    others = {f"pumpjack_cli.commands.{p.stem}" for p in _modules("commands") if p != path and p.stem != "__init__"}
-    assert not _imports(path) & others
+def _offences(paths, offending) -> list[str]:
+    """``file: what`` for each of ``paths`` for which ``offending(path)`` finds something."""
+    return [f"{path.relative_to(REPO_ROOT)}: {found}" for path in paths if (found := offending(path))]
+
+
+def test_commands_never_import_each_other():
+    commands = _modules("commands")
+    names = {path: f"pumpjack_cli.commands.{path.stem}" for path in commands if path.stem != "__init__"}
+    bad = _offences(commands, lambda path: sorted(_imports(path) & (set(names.values()) - {names.get(path)})))
+    assert not bad, "; ".join(bad)
 
 
 FORBIDDEN = {
@@ -60,11 +74,10 @@ FORBIDDEN = {
 }
 
 
-@pytest.mark.parametrize("layer,path", [(layer, p) for layer in FORBIDDEN for p in _modules(layer)],
-                         ids=lambda x: x if isinstance(x, str) else x.name)
-def test_layers_import_only_downwards(layer, path):
-    bad = {name for name in _imports(path) if name.startswith(FORBIDDEN[layer])}
-    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
+def test_layers_import_only_downwards():
+    bad = [offence for layer, forbidden in FORBIDDEN.items() for offence in _offences(
+        _modules(layer), lambda path: sorted(name for name in _imports(path) if name.startswith(forbidden)))]
+    assert not bad, f"imports of a layer above: {'; '.join(bad)}"
 
 
 #: What the readers (pumpjack_cli/readers/) may import of this package: nothing but these and each other
@@ -73,17 +86,17 @@ READERS_IMPORT = ("pumpjack_cli.errors", "pumpjack_cli.quantities", "pumpjack_cl
                   "pumpjack_cli.readers")
 
 
-@pytest.mark.parametrize("path", _modules("readers"), ids=lambda p: p.name)
-def test_readers_import_only_errors_quantities_and_text_input(path):
-    bad = {name for name in _imports(path) if name.startswith(("pumpjack_cli", "pydantic", "typer", "rich"))
-           and not name.startswith(READERS_IMPORT)}
-    assert not bad, f"{path.relative_to(REPO_ROOT)} imports {sorted(bad)}"
+def test_readers_import_only_errors_quantities_and_text_input():
+    bad = _offences(_modules("readers"), lambda path: sorted(
+        name for name in _imports(path) if name.startswith(("pumpjack_cli", "pydantic", "typer", "rich"))
+        and not name.startswith(READERS_IMPORT)))
+    assert not bad, "; ".join(bad)
 
 
-@pytest.mark.parametrize("path", sorted((REPO_ROOT / "tests").rglob("test_*.py")),
-                         ids=lambda p: p.relative_to(REPO_ROOT / "tests").as_posix())
-def test_tests_do_not_import_command_modules(path):
-    assert not {name for name in _imports(path) if name.startswith("pumpjack_cli.commands")}
+def test_tests_do_not_import_command_modules():
+    bad = _offences(sorted((REPO_ROOT / "tests").rglob("test_*.py")), lambda path: sorted(
+        name for name in _imports(path) if name.startswith("pumpjack_cli.commands")))
+    assert not bad, "; ".join(bad)
 
 
 @pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"],
@@ -142,25 +155,33 @@ def _names(node: ast.AST) -> set[str]:
         n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
 
 
-@pytest.mark.parametrize("path", _seam_modules(), ids=lambda p: str(p.relative_to(PACKAGE)))
-def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor(path):
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    read = sorted({f"{node.attr} (line {node.lineno})" for node in ast.walk(tree)  # a section's own field is not one
+def _class_i_reads(tree: ast.AST) -> list[str]:
+    """The class-I dimensions a module reads, with their lines (a section's own field is not one)."""
+    return sorted({f"{node.attr} (line {node.lineno})" for node in ast.walk(tree)
                    if isinstance(node, ast.Attribute) and node.attr in CLASS_I_ATTRIBUTES
                    and not (isinstance(node.value, ast.Name) and node.value.id == "self")})
-    assert not read, f"{path.relative_to(REPO_ROOT)} reads class-I dimensions: {read}; use the Mechanism protocol"
-    products = [node.lineno for node in ast.walk(tree) if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult)
-                and ({"beam_rate", "beam_rate2"} & _names(node.left) and ARMS & _names(node.right)
-                     or {"beam_rate", "beam_rate2"} & _names(node.right) and ARMS & _names(node.left))]
-    assert not products, f"{path.relative_to(REPO_ROOT)} computes a torque factor at lines {products}; ask the mechanism"
 
 
-def test_the_seam_test_sees_a_torque_factor(tmp_path):
-    """The check above fails on the pattern it forbids (a test that can fail)."""
-    tree = ast.parse("tf = unit.front_arm * m.beam_rate\nother = m.beam_rate * q.horsehead_arm\n")
-    found = [n for n in ast.walk(tree) if isinstance(n, ast.BinOp) and isinstance(n.op, ast.Mult)
-             and {"beam_rate"} & (_names(n.left) | _names(n.right)) and ARMS & (_names(n.left) | _names(n.right))]
-    assert len(found) == 2
+def _torque_factors(tree: ast.AST) -> list[int]:
+    """The lines where a module multiplies a beam rate by an arm: a torque factor computed."""
+    return [node.lineno for node in ast.walk(tree) if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Mult)
+            and ({"beam_rate", "beam_rate2"} & _names(node.left) and ARMS & _names(node.right)
+                 or {"beam_rate", "beam_rate2"} & _names(node.right) and ARMS & _names(node.left))]
+
+
+def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor():
+    modules = _seam_modules()
+    read = _offences(modules, lambda path: _class_i_reads(_tree(path)))
+    assert not read, f"class-I dimensions read outside the mechanisms (use the Mechanism protocol): {'; '.join(read)}"
+    products = _offences(modules, lambda path: _torque_factors(_tree(path)))
+    assert not products, f"a torque factor computed outside the mechanisms (ask the mechanism): {'; '.join(products)}"
+
+
+def test_the_seam_test_sees_a_torque_factor():
+    """The checks above fail on the patterns they forbid (a test that can fail)."""
+    tree = ast.parse("tf = unit.front_arm * m.beam_rate\nother = m.beam_rate * q.horsehead_arm\nr = unit.crank_radius\n")
+    assert _torque_factors(tree) == [1, 2]
+    assert _class_i_reads(tree) == ["crank_radius (line 3)", "front_arm (line 1)"]
 
 
 def test_the_core_type_checks(tmp_path):
