@@ -103,6 +103,37 @@ def assert_same_summary(found: dict, expected: dict, rel: float, absolute: float
     return len(expected)
 
 
+def command_result(*argv):
+    """The result a command run in-process with ``argv`` hands to the renderer, and what it wrote
+    (``-f json`` in SI): the unit systems and text formats differ in the writing only, so one run
+    serves them all (:func:`written`)."""
+    import io
+    from contextlib import redirect_stderr, redirect_stdout
+    from unittest import mock
+
+    from pumpjack_cli.cli import main
+    from pumpjack_cli.render import Outputs
+
+    emitted, emit = [], Outputs.emit
+    out, err = io.StringIO(), io.StringIO()
+    with mock.patch.object(Outputs, "emit", lambda self, result: (emitted.append(result), emit(self, result))[1]), \
+            redirect_stdout(out), redirect_stderr(err):
+        code = main([str(a) for a in argv] + ["-f", "json", "--units", "si"])
+    assert code == 0 and len(emitted) == 1, err.getvalue()
+    return emitted[0], out.getvalue()
+
+
+def written(result, system: str, file_format: str = "json") -> str:
+    """A result as ``-f FORMAT --units SYSTEM`` writes it to standard output."""
+    import io
+
+    from pumpjack_cli.render.delimited import write_csv, write_json
+
+    stream = io.StringIO()
+    {"json": write_json, "csv": write_csv}[file_format](result, system, stream)
+    return stream.getvalue()
+
+
 def one_line_error(code: int, out: str, err: str, *fragments: str) -> None:
     """A refusal as the CLI prints it: exit code 2, nothing on stdout, one line on stderr
     holding every fragment, no traceback."""

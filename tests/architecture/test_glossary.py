@@ -9,7 +9,6 @@ alternatives, ``r{12,13}_{x,y}``, expanded here).
 
 from __future__ import annotations
 
-import io
 import itertools
 import json
 import re
@@ -19,10 +18,8 @@ import pytest
 
 from pumpjack_cli.names import SECTIONS, catalogue, glossary_sections, lookup
 from pumpjack_cli.quantities import OUTPUT_QUANTITIES
-from pumpjack_cli.render import Outputs
-from pumpjack_cli.render.delimited import write_json
 
-from helpers import REPO_ROOT, SK8_CARD, sample_card
+from helpers import REPO_ROOT, SK8_CARD, command_result, sample_card, written
 
 GLOSSARY = REPO_ROOT / "docs" / "glossary.md"
 #: A deviated well's sample card and survey (samples/make_deviated.py).
@@ -81,33 +78,21 @@ def test_brace_expansion():
 
 
 @pytest.mark.parametrize("argv", RUNS, ids=lambda argv: " ".join(argv[:2]))
-def test_every_output_name_is_in_the_glossary(run_cli, monkeypatch, sk8_drivable_card, argv):
-    """The command's result as ``-f json`` writes it in each unit system (run once: the systems
-    differ in the writing only). DRIVABLE: the SK8 sample card light enough for the seed's motor
-    (conftest)."""
-    argv = [sk8_drivable_card if arg == "DRIVABLE" else arg for arg in argv]
-    emitted = []
-    emit = Outputs.emit
-    monkeypatch.setattr(Outputs, "emit", lambda self, result: (emitted.append(result), emit(self, result))[1])
-    code, out, err = run_cli(*argv, "-f", "json", "--units", "si")
-    assert code == 0, err
-    assert json.loads(out) == _json(emitted[0], "si")  # the written result is the one emitted
+def test_every_output_name_is_in_the_glossary(sk8_drivable_card, argv):
+    """The command's result as ``-f json`` writes it in each unit system (the command run once:
+    the systems differ in the writing only). DRIVABLE: the SK8 sample card light enough for the
+    seed's motor (conftest)."""
+    result, out = command_result(*(sk8_drivable_card if arg == "DRIVABLE" else arg for arg in argv))
+    assert json.loads(out) == json.loads(written(result, "si"))  # the result written is the one emitted
     names = glossary_names()
     for system in ("si", "field"):
-        document = _json(emitted[0], system)
+        document = json.loads(written(result, system))
         keys = list(document["summary"]) + list(document["columns"])
         missing = sorted({key for key in keys if _base(key, system, names) not in names})
         assert not missing, f"not in docs/glossary.md ({system}): {missing}"
         for key, column in document["columns"].items():  # the quantity the catalogue declares is the one shown
             quantity = lookup(_base(key, system, names))[0]
             assert column["unit"] == ("" if quantity == "text" else OUTPUT_QUANTITIES[quantity][system].label), key
-
-
-def _json(result, system: str) -> dict:
-    """The JSON document of a result in a unit system, as ``-f json`` writes it."""
-    stream = io.StringIO()
-    write_json(result, system, stream)
-    return json.loads(stream.getvalue())
 
 
 def test_batch_store_names_are_in_the_glossary(run_cli, tmp_path):

@@ -30,7 +30,7 @@ from pumpjack_cli.errors import CardError
 from pumpjack_cli.readers import cards
 from pumpjack_cli.readers.cards import read_card
 
-from helpers import INCH, POUND_FORCE, REPO_ROOT, SK8, SK8_CARD
+from helpers import INCH, POUND_FORCE, REPO_ROOT, SK8, SK8_CARD, command_result, written
 
 MECHANISM = load_unit(SK8).geometry.mechanism()
 #: The sample's columns in SI, read with numpy: time [s], position [m], load [N].
@@ -301,19 +301,10 @@ def test_bad_json_cards_are_refused_in_one_line(text, fragment):
 
 
 @pytest.fixture(scope="module")
-def predicted(run_json):
-    """`pumpjack predict` in both unit systems as -f json, and as -f csv text."""
-    from contextlib import redirect_stderr, redirect_stdout
-
-    from pumpjack_cli.cli import main
-
-    outputs = {}
-    for system in ("si", "field"):
-        out = io.StringIO()
-        with redirect_stdout(out), redirect_stderr(io.StringIO()):
-            assert main(["predict", SK8, "--units", system, "-f", "csv"]) == 0
-        outputs[system] = (run_json("predict", SK8, "--units", system), out.getvalue())
-    return outputs
+def predicted():
+    """`pumpjack predict`'s result as -f json (parsed) and -f csv (text) write it in both unit systems."""
+    result, _ = command_result("predict", SK8)
+    return {system: (json.loads(written(result, system)), written(result, system, "csv")) for system in ("si", "field")}
 
 
 @pytest.mark.parametrize("system", ["si", "field"])
