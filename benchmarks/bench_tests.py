@@ -1,12 +1,12 @@
 """Time of the README's test command: wall clock and the CPU of every process it starts.
 
-Run: .venv/bin/python benchmarks/bench_tests.py [--split]
+Run: .venv/bin/python benchmarks/bench_tests.py [--split] [-- PYTEST_ARGUMENTS]
 
 Prints the CPU of a fixed pure-Python loop (the machine's calibration), then runs
-``python -m pytest -q`` (the Makefile's ``make test`` after the install; two xdist workers
-from pyproject.toml) in the repository and prints the tests counted, the wall time and the user
-and system CPU of the run and its workers (``resource.getrusage(RUSAGE_CHILDREN)``, what
-``/usr/bin/time`` reports). With ``--split`` the tests run with the plugin
+``python -m pytest -q`` (the Makefile's ``make test`` after the install; one process, or the
+workers of ``-n`` when given after ``--``) in the repository and prints the tests counted, the
+wall time and the user and system CPU of the run and every process it started
+(``resource.getrusage(RUSAGE_CHILDREN)``, what ``/usr/bin/time`` reports). With ``--split`` the tests run with the plugin
 ``cpu_per_test.py`` (the CPU of each test, its own and its children's), and the CPU is
 also printed by the groups of :data:`GROUPS`, the other tests, and what no test counts
 (the interpreters' start-up, imports and collection in the pytest processes).
@@ -63,11 +63,13 @@ def reference_cpu() -> float:
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--split", action="store_true", help="also the CPU by groups of tests (cpu_per_test.py)")
-    split = parser.parse_args().split
+    parser.add_argument("pytest_args", nargs="*", help="more arguments of pytest (after --), e.g. -n auto")
+    arguments = parser.parse_args()
+    split = arguments.split
     print(f"machine: {machine()}")
     print(f"reference loop: {reference_cpu():.3f} s of CPU")
     with tempfile.TemporaryDirectory() as folder:
-        command, environment = [sys.executable, "-m", "pytest", "-q"], dict(os.environ)
+        command, environment = [sys.executable, "-m", "pytest", "-q", *arguments.pytest_args], dict(os.environ)
         if split:
             command += ["-p", "cpu_per_test"]
             environment["PUMPJACK_CPU_SPLIT"] = folder

@@ -3,7 +3,7 @@
 For each test it takes the CPU time of the process running it (``time.process_time``) and
 that of the children the test started and waited for (``resource.getrusage(RUSAGE_CHILDREN)``)
 before and after the test, and on the session's end writes them as JSON to the folder named by the environment variable ``PUMPJACK_CPU_SPLIT`` (one
-file per xdist worker).
+file per process: the run's, or each xdist worker's under ``-n``).
 """
 
 from __future__ import annotations

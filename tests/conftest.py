@@ -15,10 +15,10 @@ import sys
 from contextlib import redirect_stderr, redirect_stdout
 from pathlib import Path
 
-# One BLAS thread per process, set before numpy is first imported (here, or by the xdist workers
-# that inherit it): the suite already runs a test on every core, and one test's arrays are small,
-# so OpenBLAS's own threads would only contend for the cores (the console script does the same,
-# pumpjack_cli/__main__.py).
+# One BLAS thread per process, set before numpy is first imported (here, and in the processes the
+# tests start, which inherit it): one test's arrays are small, so OpenBLAS's own threads would only
+# wait for work, spinning, and contend for the cores with those processes (the console script does
+# the same, pumpjack_cli/__main__.py).
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import numpy as np  # noqa: E402
