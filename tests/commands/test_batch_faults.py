@@ -27,8 +27,7 @@ from helpers import (children_of, field_cards, field_manifest, gone, one_line_er
 
 def _wells(folder: Path, cards: int, wells: int, name: str = "wells.csv") -> Path:
     """A manifest of ``wells`` wells sharing ``cards`` card files, after 32 wells whose card
-    is missing: the first cards stored are error rows, stored at once, and the workers are
-    analysing real cards when a test has seen the store begin."""
+    is missing: the first task stored holds error rows beside whole cards."""
     rows = field_cards(folder, cards)
     missing = [(f"M-{k:02d}", rows[0][1], f"missing-{k:02d}.csv", "") for k in range(32)]
     return field_manifest(folder, missing + [(f"W-{k:04d}", *rows[k % cards][1:]) for k in range(wells)], name)
@@ -47,11 +46,11 @@ def test_kill_9_of_the_parent_leaves_whole_cards_and_no_worker(tmp_path, pumpjac
     """SIGKILL in the middle of a run on two workers: the workers end with their parent (not
     adopted by init and left computing); the same command then finishes the rest, every
     card and analysis exactly once. The parent is stopped (SIGSTOP) between the look at its
-    workers and the kill, so that the run cannot end in between; 960 wells on 24 card files
-    (tasks of 120) keep the workers busy for a second after the first rows even at a
-    millisecond a card."""
+    workers and the kill, so that the run cannot end in between, and the store is looked at
+    every 20 ms: 480 wells on 24 card files (tasks of 60) keep the workers busy for a third of
+    a second after the first rows even at a millisecond a card."""
     rows = field_cards(tmp_path, 24)
-    path = field_manifest(tmp_path, [(f"W-{k:04d}", *rows[k % 24][1:]) for k in range(960)])
+    path = field_manifest(tmp_path, [(f"W-{k:04d}", *rows[k % 24][1:]) for k in range(480)])
     store = tmp_path / "r.sqlite"
     process = subprocess.Popen([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -61,14 +60,14 @@ def test_kill_9_of_the_parent_leaves_whole_cards_and_no_worker(tmp_path, pumpjac
     os.kill(process.pid, signal.SIGKILL)
     process.wait(timeout=60)
     assert len(workers) == 2 and gone(workers)
-    assert 0 < stored_count(store) < 1920
+    assert 0 < stored_count(store) < 960
     _whole_cards(store)
     done = subprocess.run([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     counts = sqlite3.connect(store).execute("SELECT well, card, analysis, COUNT(*) FROM results "
                                             "GROUP BY well, card, analysis").fetchall()
-    assert len(counts) == 1920 and all(n == 1 for *_, n in counts)
+    assert len(counts) == 960 and all(n == 1 for *_, n in counts)
 
 
 #: How a run is stopped (a signal to the run, to its process group, or to one of its
@@ -84,9 +83,10 @@ STOPS = {
 def test_a_stopped_run_ends_with_one_line_and_a_resumable_store(run_cli, tmp_path, pumpjack_script, how):
     """Ctrl-C (SIGINT to the whole process group), SIGTERM to the run, or one of its workers
     killed (as by the kernel when out of memory): one line, exit code 2, every worker gone,
-    whole cards in the store, and the store goes on taking cards. 4000 wells keep the workers
-    busy for seconds at a millisecond a card, so that the run is stopped before it ends."""
-    path, store = _wells(tmp_path, 4, 4000), tmp_path / "r.sqlite"
+    whole cards in the store, and the store goes on taking cards. 1000 wells (tasks of 129) keep
+    the workers busy for a third of a second after the first rows even at a millisecond a card,
+    and the store is looked at every 20 ms, so that the run is stopped before it ends."""
+    path, store = _wells(tmp_path, 4, 1000), tmp_path / "r.sqlite"
     process = subprocess.Popen([pumpjack_script, "batch", str(path), "--store", str(store), "--workers", "2"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     assert wait_for_rows(store, 2, process) >= 2
