@@ -99,20 +99,23 @@ def test_tests_do_not_import_command_modules():
     assert not bad, "; ".join(bad)
 
 
-@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"],
-                                  ["units", "--catalogue", str(REPO_ROOT / "samples" / "catalogue.csv"), "-f", "csv"]])
-def test_startup_imports_no_numpy_and_no_unit_model(argv):
+def test_startup_imports_no_numpy_and_no_unit_model():
+    """Each command line run in turn in one fresh interpreter, the heavy modules looked for after
+    each: modules only accumulate, so none found after the last means none imported by any."""
+    argvs = [["--help"], ["--version"], ["-h"], ["units", "-f", "csv"],
+             ["units", "--catalogue", str(REPO_ROOT / "samples" / "catalogue.csv"), "-f", "csv"]]
     probe = (
         "import sys, io, contextlib\n"
         "from pumpjack_cli.cli import main\n"
-        "with contextlib.redirect_stdout(io.StringIO()):\n"
-        f"    code = main({argv!r})\n"
-        "heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pydantic', 'pumpjack_cli.config.beam_unit',\n"
-        "                           'pumpjack_cli.config.slider_crank') if m in sys.modules)\n"
-        "print(code, heavy)\n"
+        f"for argv in {argvs!r}:\n"
+        "    with contextlib.redirect_stdout(io.StringIO()):\n"
+        "        code = main(argv)\n"
+        "    heavy = sorted(m for m in ('numpy', 'scipy', 'matplotlib', 'pydantic', 'pumpjack_cli.config.beam_unit',\n"
+        "                               'pumpjack_cli.config.slider_crank') if m in sys.modules)\n"
+        "    print(argv, code, heavy)\n"
     )
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True).stdout
-    assert out.strip() == "0 []"
+    assert out.splitlines() == [f"{argv} 0 []" for argv in argvs]
 
 
 @pytest.mark.parametrize("name", list(COMMANDS))
