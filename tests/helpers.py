@@ -7,6 +7,8 @@ Fixtures live in ``tests/conftest.py``.
 
 from __future__ import annotations
 
+import ast
+import functools
 import math
 import os
 import sqlite3
@@ -54,6 +56,12 @@ SK8_PUMP_DEPTH, SK8_FLUID_DENSITY = 1530.0, 820.0
 
 #: The UNB-600A drill pump of [InertiaUNB600A]: crank radius r and connecting rod l2 [m].
 UNB600A_CRANK_RADIUS, UNB600A_ROD_LENGTH = 0.2, 1.19
+
+
+@functools.cache
+def syntax_tree(path: Path) -> ast.Module:
+    """A Python file's syntax tree, parsed once for every check that reads it."""
+    return ast.parse(path.read_text(encoding="utf-8"))
 
 
 def sample_card(unit: str) -> Path:

@@ -16,7 +16,7 @@ import re
 from collections import Counter
 from pathlib import Path
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, syntax_tree
 
 TESTS = REPO_ROOT / "tests"
 #: ``tests/...`` (a folder or a file; a sentence's full stop is not part of it).
@@ -40,7 +40,7 @@ def _test_files() -> list[Path]:
 
 
 def _defined(path: Path) -> set[str]:
-    return {node.name for node in ast.parse(path.read_text(encoding="utf-8")).body
+    return {node.name for node in syntax_tree(path).body
             if isinstance(node, ast.FunctionDef)}
 
 

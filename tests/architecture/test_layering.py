@@ -21,15 +21,9 @@ import pytest
 
 from pumpjack_cli.cli import COMMANDS, command_function
 
-from helpers import REPO_ROOT
+from helpers import REPO_ROOT, syntax_tree
 
 PACKAGE = REPO_ROOT / "pumpjack_cli"
-
-
-@functools.cache
-def _tree(path: Path) -> ast.Module:
-    """A file's syntax tree, parsed once for the checks below."""
-    return ast.parse(path.read_text(encoding="utf-8"))
 
 
 @functools.cache
@@ -37,7 +31,7 @@ def _imports(path: Path) -> frozenset[str]:
     """Absolute module names a file imports (relative imports resolved against its package)."""
     package = path.relative_to(REPO_ROOT).with_suffix("").parts[:-1]
     found: set[str] = set()
-    for node in ast.walk(_tree(path)):
+    for node in ast.walk(syntax_tree(path)):
         if isinstance(node, ast.Import):
             found |= {alias.name for alias in node.names}
         elif isinstance(node, ast.ImportFrom):
@@ -174,9 +168,9 @@ def _torque_factors(tree: ast.AST) -> list[int]:
 
 def test_only_mechanisms_read_linkage_dimensions_or_compute_a_torque_factor():
     modules = _seam_modules()
-    read = _offences(modules, lambda path: _class_i_reads(_tree(path)))
+    read = _offences(modules, lambda path: _class_i_reads(syntax_tree(path)))
     assert not read, f"class-I dimensions read outside the mechanisms (use the Mechanism protocol): {'; '.join(read)}"
-    products = _offences(modules, lambda path: _torque_factors(_tree(path)))
+    products = _offences(modules, lambda path: _torque_factors(syntax_tree(path)))
     assert not products, f"a torque factor computed outside the mechanisms (ask the mechanism): {'; '.join(products)}"
 
 
