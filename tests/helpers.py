@@ -123,9 +123,13 @@ def command_result(*argv):
     from pumpjack_cli.render import Outputs
 
     emitted, emit = [], Outputs.emit
+
+    def kept(self, result) -> None:
+        emitted.append(result)
+        emit(self, result)
+
     out, err = io.StringIO(), io.StringIO()
-    with mock.patch.object(Outputs, "emit", lambda self, result: (emitted.append(result), emit(self, result))[1]), \
-            redirect_stdout(out), redirect_stderr(err):
+    with mock.patch.object(Outputs, "emit", kept), redirect_stdout(out), redirect_stderr(err):
         code = main([str(a) for a in argv] + ["-f", "json", "--units", "si"])
     assert code == 0 and len(emitted) == 1, err.getvalue()
     return emitted[0], out.getvalue()
