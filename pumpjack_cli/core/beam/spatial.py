@@ -253,13 +253,15 @@ def norm(a: np.ndarray) -> np.ndarray:
     return np.sqrt(dot(a, a))
 
 
-def skew(v: np.ndarray) -> np.ndarray:
+def skew(v: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Cross-product matrices [v]x, so that [v]x @ u = v x u.
 
     Parameters
     ----------
     v : numpy.ndarray
         Vectors, shape (..., 3).
+    out : numpy.ndarray, optional
+        Where to write them, shape (..., 3, 3) (a view into a larger array will do).
 
     Returns
     -------
@@ -272,7 +274,10 @@ def skew(v: np.ndarray) -> np.ndarray:
     >>> bool(np.allclose(skew(v) @ u, np.cross(v, u)))
     True
     """
-    out = np.zeros(v.shape[:-1] + (3, 3))
+    if out is None:
+        out = np.zeros(v.shape[:-1] + (3, 3))
+    else:
+        out[..., 0, 0] = out[..., 1, 1] = out[..., 2, 2] = 0.0
     out[..., 0, 1], out[..., 0, 2] = -v[..., 2], v[..., 1]
     out[..., 1, 0], out[..., 1, 2] = v[..., 2], -v[..., 0]
     out[..., 2, 0], out[..., 2, 1] = -v[..., 1], v[..., 0]
@@ -285,18 +290,13 @@ def _loop_matrix(l2: np.ndarray, l3: np.ndarray, l4: np.ndarray, l41: np.ndarray
 
     Rows 0-2: loop O-A-B-D-C; rows 3-5: loop O1-A1-B1-D-C; w x l = -[l]x w, and the
     equalizer's w4 = w5z z + k l. Rows 6-7: no pitman spin, w2 . l2 = 0, w3 . l3 = 0.
-    The blocks -[l]x are written entry by entry, the same values as -skew(l) (the
-    diagonal -0.0 included), without building skew(l) first.
+    The blocks -[l]x are :func:`skew` written in place and negated there.
     """
     n = l2.shape[0]
     k = np.zeros((n, 8, 8))
     for row, vec in ((0, l2), (3, l3)):
-        v0, v1, v2 = vec[:, 0], vec[:, 1], vec[:, 2]
         block = k[:, row:row + 3, row:row + 3]
-        block[:, 0, 0] = block[:, 1, 1] = block[:, 2, 2] = -0.0
-        block[:, 0, 1], block[:, 0, 2] = v2, -v1
-        block[:, 1, 0], block[:, 1, 2] = -v2, v0
-        block[:, 2, 0], block[:, 2, 1] = v1, -v0
+        np.negative(skew(vec, out=block), out=block)
     cross(line, l4, out=k[:, 0:3, 6])
     cross(Z, l4 + l5, out=k[:, 0:3, 7])
     cross(line, l41, out=k[:, 3:6, 6])
