@@ -246,6 +246,11 @@ def applied_loads(
     return AppliedLoads(crank=crank, pitman2=pitman2, pitman3=pitman3, equalizer=equalizer, beam=beam)
 
 
+def _moment_about(moment: np.ndarray, resultant: np.ndarray, point: np.ndarray) -> np.ndarray:
+    """Moment of a link's loads about ``point`` from their moment about C and resultant: M_C - P x F."""
+    return moment - cross(point, resultant)
+
+
 def _cross_z(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """The z component of a x b alone, as :func:`.spatial.cross` computes it."""
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
@@ -307,12 +312,12 @@ def rational_reactions(spatial: SpatialLinkage, sm: SpatialMotion, loads: Applie
     w2, w3 = sm.pin_b - sm.pin_a, sm.pin_b1 - sm.pin_a1
     n2 = w2 / norm(w2)[:, None]
     n3 = w3 / norm(w3)[:, None]
-    r24_perp = cross(m2 - cross(sm.pin_a, f2), w2) / dot(w2, w2)[:, None]
-    r34_perp = cross(m3 - cross(sm.pin_a1, f3), w3) / dot(w3, w3)[:, None]
+    r24_perp = cross(_moment_about(m2, f2, sm.pin_a), w2) / dot(w2, w2)[:, None]
+    r34_perp = cross(_moment_about(m3, f3, sm.pin_a1), w3) / dot(w3, w3)[:, None]
     d = sm.pin_d
     arm2, arm3 = sm.pin_b - d, sm.pin_b1 - d
     q = np.empty((n, 4))
-    np.negative(m4 - cross(d, f4) + cross(arm2, r24_perp) + cross(arm3, r34_perp), out=q[:, 0:3])
+    np.negative(_moment_about(m4, f4, d) + cross(arm2, r24_perp) + cross(arm3, r34_perp), out=q[:, 0:3])
     np.negative(beam_moment[:, 2] + _cross_z(d, r24_perp + r34_perp + f4), out=q[:, 3])
     # The columns of g (N, 4, 2), one per axial force: rows of the equalizer's moments and the beam's.
     g2, g3 = np.empty((n, 4)), np.empty((n, 4))
@@ -393,7 +398,8 @@ def crank_reactions(
     resultant = crank.resultant()
     r01 = r12 + r13 - resultant
     o = sm.crank_shaft
-    moment = cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13) + (crank.moment_about_origin() - cross(o, resultant))
+    moment = (cross(sm.pin_a - o, -r12) + cross(sm.pin_a1 - o, -r13)
+              + _moment_about(crank.moment_about_origin(), resultant, o))
     drive = -moment
     spin = spatial.crank_spin
     torque = drive @ spin
