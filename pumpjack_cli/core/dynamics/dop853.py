@@ -74,10 +74,10 @@ class Trajectory:
 
     Each step keeps its start, length, start state, end state and stage derivatives; the
     interpolation coefficients of the continuous extension are made, for all steps at once,
-    at the first call (three right-hand sides a step)."""
+    at the first call (three right-hand sides a step, of ``rhs``, which counts them)."""
 
-    def __init__(self, rhs: RightHandSide, counter: list[int]):
-        self._rhs, self._counter = rhs, counter
+    def __init__(self, rhs: RightHandSide):
+        self._rhs = rhs
         self._steps: list[tuple[float, float, list[float], list[float], list[list[float]]]] = []
         self._table: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
 
@@ -87,9 +87,7 @@ class Trajectory:
     def _coefficients(self, t: float, h: float, y: list[float], y_new: list[float],
                       columns: list[list[float]]) -> list[list[float]]:
         """F_0 .. F_6 of one step, by component (the extension's three stages evaluated)."""
-        out = _extension(len(y))(self._rhs, t, h, y, y_new, columns)
-        self._counter[0] += len(_tableau().extra_c)
-        return out
+        return _extension(len(y))(self._rhs, t, h, y, y_new, columns)
 
     def _tabled(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         if self._table is None:
@@ -276,14 +274,14 @@ def integrate(rhs: RightHandSide, t0: float, t1: float, y0: Sequence[float], rto
     counter = [0]
 
     def counted(t: float, y: Sequence[float]) -> Sequence[float]:
-        """rhs, counted, outside the steps (which count their own)."""
+        """rhs, counted: the initial step's, and the continuous extension's (the steps count their own)."""
         counter[0] += 1
         try:
             return rhs(t, y)
         except ZeroDivisionError:  # plain floats raise where numpy's arrays would give inf
             raise _divides_by_zero(t) from None
 
-    trajectory = Trajectory(counted, counter)
+    trajectory = Trajectory(counted)
     t, y = float(t0), [float(v) for v in y0]
     states, step = len(y), _stepper(len(y))
     evaluations = len(_tableau().b)   # right-hand sides a step: eleven stages and the end state's
