@@ -147,13 +147,12 @@ class StringMarch:
         a_w, a_v, a_a = -(1.0 - am) / (b * h * h), -(1.0 - am) / (b * h), am - (1.0 - am) * (0.5 / b - 1.0)
         v_w, v_v, v_a = -(1.0 - af) * g / (b * h), (1.0 - af) * (1.0 - g / b) + af, (1.0 - af) * h * (1.0 - 0.5 * g / b)
         mass = m[1:]
-        self.known = (-mass * (a_w + c * v_w), -mass * (a_v + c * v_v), -mass * (a_a + c * v_a), v_w, v_v, v_a)
         # the known forces (less the springs' share alpha_f of the last step) and v_known in one product and sum
         # over the rows w, v, a, elastic of the unknown nodes
         self.combine = np.zeros((4, 2, mass.size))
-        self.combine[:3, 0] = self.known[:3]
+        self.combine[:3, 0] = -mass * (a_w + c * v_w), -mass * (a_v + c * v_v), -mass * (a_a + c * v_a)
         self.combine[3, 0] = -af
-        self.combine[:3, 1] = np.reshape(self.known[3:], (3, 1))
+        self.combine[:3, 1] = np.reshape((v_w, v_v, v_a), (3, 1))
         self.stiffening = self.c_v / self.band
         self.newmark = (h, b * h * h, 0.5 / b - 1.0, 1.0 - g, g)
 
