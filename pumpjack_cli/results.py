@@ -136,9 +136,10 @@ class Result:
 
     def __post_init__(self) -> None:
         for kind, names in (("summary value", [s.name for s in self.summary]), ("column", [c.name for c in self.columns])):
+            if len(set(names)) == len(names):
+                continue
             twice = sorted({name for name in names if names.count(name) > 1})
-            if twice:
-                raise ValueError(f"{self.title!r}: the {kind} {', '.join(twice)} is given twice")
+            raise ValueError(f"{self.title!r}: the {kind} {', '.join(twice)} is given twice")
 
     def column(self, name: str) -> Column:
         """The column called ``name``."""
