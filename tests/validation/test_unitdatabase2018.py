@@ -1,7 +1,7 @@
 """Validation of the kinematics against an operator's unit database ([UnitDatabase2018]): the
 conventional unit C-228D-213-86 (the unit of `pumpjack report`'s example), the Mark II
-M-912D-365-168 of [LufkinM912], whose letters the database repeats independently, and seven
-Lufkin reverse-mark rows, with the sign of their crank offset.
+M-912D-365-168 of [LufkinM912], whose letters the database repeats independently, seven
+Lufkin reverse-mark rows, with the sign of their crank offset, and ten Lufkin air-balanced rows.
 
 The database gives A = 111, C = 96.05, I = 96, K = 151.34 (the centre bearing to the crank
 shaft, so H - G = sqrt(K^2 - I^2)) and P = 114 in, four crank holes 37, 32, 27 and 22 in, and
@@ -185,3 +185,38 @@ def test_a_reverse_marks_upstroke_is_shorter_than_the_mark_iis_of_its_size(tmp_p
                                 rotation=COUNTERCLOCKWISE).dead_positions().upstroke_crank_travel
     assert math.pi < reverse_mark < mark_ii
     assert math.degrees(mark_ii - reverse_mark) > 1.5
+
+
+#: Lufkin air-balanced rows of the database (class "A") whose stored stroke is not a whole number of
+#: inches, i.e. an exact stroke rather than a nominal one: row, designation, A, C, I, K, P, the first
+#: hole's R [in] and its stored stroke as printed. Row 1672 (A320D-256-120) stores 121.71 in with the
+#: letters of row 1673, which give 119.77 in and store 119.8 in: its letters are not its structure's,
+#: and it is left out.
+AIR_BALANCED = (
+    (1663, "A-114D-173-64", 115.0, 48.0, 46.5, 123.11, 114.0, 13.31, "64.63"),
+    (1664, "A-114D-190-64", 115.0, 48.0, 46.5, 123.12, 114.0, 13.31, "64.6"),
+    (1665, "A-160D-200-74", 120.0, 50.0, 48.0, 123.69, 114.0, 15.25, "74.39"),
+    (1667, "A-160D-250-74", 120.0, 50.0, 48.0, 123.69, 114.0, 15.25, "74.4"),
+    (1669, "A-228D-246-86", 131.0, 56.0, 54.0, 133.42, 122.0, 18.25, "86.98"),
+    (1673, "A-320D-302-120", 184.0, 70.0, 68.0, 148.49, 132.0, 22.38, "119.8"),
+    (1674, "A-320D-305-100", 155.0, 70.0, 68.0, 148.49, 132.0, 22.38, "100.88"),
+    (1678, "A-456D-305-144", 208.0, 77.0, 74.58, 200.39, 186.0, 26.19, "144.39"),
+    (1688, "A-640D-427-144", 200.0, 88.0, 85.0, 204.5, 186.0, 31.25, "145.2"),
+    (1695, "A-912D-470-240", 336.0, 134.5, 130.0, 297.41, 267.5, 47.0, "239.92"),
+)
+
+
+@pytest.mark.parametrize("row", AIR_BALANCED, ids=[row[1] for row in AIR_BALANCED])
+@pytest.mark.parametrize("rotation", [CLOCKWISE, COUNTERCLOCKWISE], ids=["cw", "ccw"])
+def test_an_air_balanced_row_gives_its_stored_stroke_and_an_upstroke_of_half_a_turn(row, rotation):
+    """Ten units of eight air-balanced structures, A-114D to A-912D: the exact class III stroke of the first hole
+    equals the stored one within half a unit of its last printed decimal and 0.01 in for the letters'
+    rounding (the stroke does not depend on the rotation), and either way round the upstroke takes
+    half a turn within 1 deg (the crank shaft nearly under the equalizer, I ~ C: field.md, "upstroke
+    close to 180 deg")."""
+    _, _, a, c, i, k, p, r, stored = row
+    decimals = len(stored.partition(".")[2])
+    unit = ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
+                             vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=rotation)
+    assert unit.stroke == pytest.approx(float(stored), abs=0.5 * 10.0**-decimals + 0.01)
+    assert abs(math.degrees(unit.dead_positions().upstroke_crank_travel) - 180.0) < 1.0
