@@ -10,7 +10,7 @@ its offset τ, the beam counterweight, or the air cylinder and its pin on the be
 Every position comes from the unit's mechanism (``geometry.mechanism().motion(θ)``: beam and
 pitman angles; the crank pin is the equalizer bearing minus the pitman, and is checked against
 the crank shaft plus the crank); the units are the bundled C-114D-133-54, M-912D-365-168 and
-air-balanced example, and the reverse-mark and beam-balanced files that docs/units.md shows
+A-228D-246-86, and the reverse-mark and beam-balanced files that docs/units.md shows
 (read from the page, so the figure and the page's file cannot differ).
 
 The output is deterministic: a fixed hash salt for the SVG ids, no date, text kept as text
@@ -42,7 +42,7 @@ UNITS = (
     ("reverse-mark", "rm-640d-365-168.toml"),
     ("beam-balanced", "beam-balanced-example.toml"),
     ("mark-ii", "m-912d-365-168"),
-    ("air-balanced", "air-balanced-example"),
+    ("air-balanced", "a-228d-246-86"),
 )
 #: The working crank angle drawn in black [deg], and in radians.
 THETA = 60.0
@@ -228,8 +228,9 @@ class Drawing:
                                      edgecolor=BALANCE))
         self.line((pin[0], self.base + height), pin, color=BALANCE, width=1.6)
         self.ax.plot(*pin, "o", ms=4, color=BALANCE, zorder=5)
-        self.text((pin[0] - width / 2 - 0.03 * self.A, self.base + 0.5 * height), "air cylinder", color=BALANCE,
-                  fontsize=7.5, ha="right")
+        side = 1.0 if pin[0] > self.O[0] else -1.0   # the label on the side away from the crank
+        self.text((pin[0] + side * (width / 2 + 0.03 * self.A), self.base + 0.5 * height), "air cylinder",
+                  color=BALANCE, fontsize=7.5, ha="left" if side > 0 else "right")
         self.dimension((0.0, 0.0), pin, "d", -0.11 * self.A * np.array([-p["beam"][1], p["beam"][0]]),
                        color=BALANCE)
 
@@ -260,8 +261,9 @@ class Drawing:
                       ha="right")
         else:
             self.text((0.0, 0.08 * A), "centre bearing", fontsize=7.5)
-            self.text(p["equalizer"] + np.array([-0.02 * A, 0.045 * A]), "equalizer bearing", fontsize=7.5,
-                      ha="right")
+            near = p["equalizer"][0] < 0.5 * A   # a short C: to the right, clear of the centre bearing's name
+            self.text(p["equalizer"] + np.array([0.02 * A if near else -0.02 * A, 0.045 * A]), "equalizer bearing",
+                      fontsize=7.5, ha="left" if near else "right")
         self.text(O + np.array([-0.22 * R, -0.2 * R]), "O", fontsize=9, fontweight="bold")
         pin = self.direction(THETA_RAD)
         self.text(p["pin"] + 0.25 * R * pin, "crank pin", fontsize=7.5, ha="left" if pin[0] > 0 else "right")

@@ -11,7 +11,7 @@ import pytest
 
 from helpers import REPO_ROOT, sample_card
 
-KINDS = {"m-912d-365-168": "mark-ii", "air-balanced-example": "air-balanced"}
+KINDS = {"m-912d-365-168": "mark-ii", "a-228d-246-86": "air-balanced"}
 
 
 @pytest.mark.parametrize("unit", KINDS)
@@ -22,7 +22,7 @@ def test_kinematics_of_each_kind(run_json, unit):
 
 
 @pytest.mark.parametrize("unit, variable", [("m-912d-365-168", "counterbalance_moment_n_m"),
-                                             ("air-balanced-example", "air_pressure_pa")])
+                                             ("a-228d-246-86", "air_pressure_pa")])
 def test_torque_balances_each_kind_in_its_own_terms(run_json, unit, variable):
     doc = run_json("torque", unit, "--card", sample_card(unit))
     summary = doc["summary"]
@@ -79,19 +79,19 @@ def test_the_spatial_model_is_refused_for_a_class_three_unit_with_masses(run_cli
 
 def test_batch_names_a_mark_ii_and_an_air_balanced_unit_of_a_catalogue(run_cli, tmp_path):
     """Manifest rows naming catalogue units by designation and crank hole: the Mark II of the
-    sample catalogue ([LufkinM912]) and an air-balanced row with the example's letters; the
+    sample catalogue ([LufkinM912]) and an air-balanced row with the bundled unit's letters ([UnitDatabase2018] row 1669); the
     torque of each equals the single command's on the same catalogue unit."""
     catalogue = tmp_path / "field.csv"
     sample = (REPO_ROOT / "samples" / "catalogue.csv").read_text(encoding="utf-8")
     header = next(line for line in sample.splitlines() if line and not line.startswith("#"))
     mark = next(line for line in sample.splitlines() if line.startswith("M-912D-365-168,1,"))
     catalogue.write_text(
-        "designation,crank_hole,class,rotation,A_in,C_in,I_in,P_in,H_in,G_in,R_in,B_lbf,air_piston_diameter_in,"
+        "designation,crank_hole,class,rotation,A_in,C_in,I_in,P_in,K_in,R_in,B_lbf,air_piston_diameter_in,"
         "air_bottom_volume_ft3,air_lever_in,air_pressure_psi\n"
-        "A-228D-213-86,1,air-balanced,ccw,120,70,70,100,140,45,24.5,-500,12,7,50,230\n", encoding="utf-8")
+        "A-228D-246-86,1,air-balanced,ccw,131,56,54,122,133.42,18.25,73,12,10.24,80,150\n", encoding="utf-8")
     marks = tmp_path / "marks.csv"
     marks.write_text(f"{header}\n{mark}\n", encoding="utf-8")
-    for units, name, card in ((catalogue, "A-228D-213-86/1", sample_card("air-balanced-example")),
+    for units, name, card in ((catalogue, "A-228D-246-86/1", sample_card("a-228d-246-86")),
                               (marks, "M-912D-365-168/1", sample_card("m-912d-365-168"))):
         manifest = tmp_path / "manifest.csv"
         manifest.write_text(f"well,unit,card\nw1,{name},{card}\n", encoding="utf-8")

@@ -94,9 +94,9 @@ def test_the_mark_ii_effect_follows_its_tail_counterweights(tmp_path, run_card_j
 
 
 def test_the_air_balanced_effect_sets_the_air_pressure(tmp_path, run_card_json):
-    """The kind's own balancing variable: a measured CBE of the air-balanced example gives the pressure
+    """The kind's own balancing variable: a measured CBE of the bundled air-balanced unit gives the pressure
     whose effect it is (forward through the air cylinder's own torque)."""
-    source = REPO_ROOT / "configs" / "air-balanced-example.toml"
+    source = REPO_ROOT / "configs" / "a-228d-246-86.toml"
     unit = load_unit(source)
     balance, known = unit.counterbalance_model()
     assert known

@@ -3,7 +3,7 @@ the balance of each kind's own variable, and the upstroke each kind's rotation g
 
 Unit files are written here as TOML text with API letters (C-114D-133-54's letters of
 [Guo2007] for the class I kinds, with the crank shaft moved back for the reverse-mark; the bundled
-M-912D-365-168 and the air-balanced example for class III), so each kind is read through the
+M-912D-365-168 and A-228D-246-86 for class III), so each kind is read through the
 same schema and registry a user's file is.
 """
 
@@ -35,7 +35,7 @@ FILES = {
                      'beam_counterweight = "6000 lbf"\nbeam_counterweight_arm = "60 in"\n'
                      '[counterbalance]\nstructural_unbalance = "330 lbf"\n',
 }
-BUNDLED = {"mark-ii": "m-912d-365-168", "air-balanced": "air-balanced-example"}
+BUNDLED = {"mark-ii": "m-912d-365-168", "air-balanced": "a-228d-246-86"}
 KINDS = (*FILES, *BUNDLED)
 H = 1e-5
 
