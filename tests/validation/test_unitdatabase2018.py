@@ -1,7 +1,8 @@
 """Validation of the kinematics against an operator's unit database ([UnitDatabase2018]): the
 conventional unit C-228D-213-86 (the unit of `pumpjack report`'s example), the Mark II
 M-912D-365-168 of [LufkinM912], whose letters the database repeats independently, seven
-Lufkin reverse-mark rows, with the sign of their crank offset, and ten Lufkin air-balanced rows.
+Lufkin reverse-mark rows, with the sign of their crank offset, ten Lufkin air-balanced rows and
+the one Lufkin beam-balanced row.
 
 The database gives A = 111, C = 96.05, I = 96, K = 151.34 (the centre bearing to the crank
 shaft, so H - G = sqrt(K^2 - I^2)) and P = 114 in, four crank holes 37, 32, 27 and 22 in, and
@@ -220,3 +221,22 @@ def test_an_air_balanced_row_gives_its_stored_stroke_and_an_upstroke_of_half_a_t
                              vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=rotation)
     assert unit.stroke == pytest.approx(float(stored), abs=0.5 * 10.0**-decimals + 0.01)
     assert abs(math.degrees(unit.dead_positions().upstroke_crank_travel) - 180.0) < 1.0
+
+
+def test_the_lufkin_beam_balanced_row_gives_its_stroke(tmp_path):
+    """Row 1705, LUFKIN BB-114-133-74 (class "BB"): A 81, C 50.3, I 58, K 123.7, P 109.5 in, crank
+    holes 22 and 16 in, stored stroke 74 in (a nominal one) and B +405 lb. Read as a beam-balanced
+    unit file (the database has no beam counterweight: an arm is given, the weight left to `torque`
+    to recommend), its longest hole's exact stroke is within 0.25 in of the stored 74 in, and the
+    upstroke is near half a turn either way round (the equalizer 7.7 in ahead of the crank shaft)."""
+    text = ('name = "BB-114-133-74"\n[geometry]\nclass = "beam-balanced"\n'
+            'A = "81 in"\nC = "50.3 in"\nI = "58 in"\nK = "123.7 in"\nP = "109.5 in"\nR = "22 in"\n'
+            'rotation = "{}"\nbeam_counterweight_arm = "60 in"\n[counterbalance]\nstructural_unbalance = "405 lbf"\n')
+    for rotation, (low, high) in (("clockwise", (180.0, 186.0)), ("counterclockwise", (174.0, 180.0))):
+        path = tmp_path / f"{rotation}.toml"
+        path.write_text(text.format(rotation), encoding="utf-8")
+        unit = load_unit(str(path))
+        assert unit.geometry.unit_class == "beam-balanced"
+        mechanism = unit.geometry.mechanism()
+        assert mechanism.stroke / INCH == pytest.approx(74.0, abs=0.25)
+        assert low < math.degrees(mechanism.dead_positions().upstroke_crank_travel) < high
