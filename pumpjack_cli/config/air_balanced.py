@@ -83,6 +83,9 @@ class AirBalancedGeometry(BeamLetters):
         mechanism = self.mechanism()
         dead = mechanism.dead_positions()
         air = self.air_cylinder
+        if air.lever > self.front_arm:
+            raise ConfigError(f"geometry.air_cylinder.lever {air.lever:.4g} m is beyond the beam's front arm A "
+                              f"{self.front_arm:.4g} m: the piston rod's pin is on the beam")
         if air.pressure_position > dead.stroke:
             raise ConfigError(f"geometry.air_cylinder.pressure_position {air.pressure_position:.4g} m is beyond the "
                               f"stroke {dead.stroke:.4g} m")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
@@ -183,3 +184,20 @@ def test_blocks_that_contradict_the_crank_offset_are_refused(tmp_path):
     path.write_text(mark[:start] + blocks.format(phase="-161 deg") + mark[end:], encoding="utf-8")
     balance, known = load_unit(str(path)).counterbalance_model()
     assert known and balance.offset == pytest.approx(math.radians(19.0))
+
+
+@pytest.mark.parametrize("line, message", [
+    ('lever = "132 in"', "geometry.air_cylinder.lever 3.353 m is beyond the beam's front arm A 3.327 m"),
+    ('pressure_position = "88 in"', "geometry.air_cylinder.pressure_position 2.235 m is beyond the stroke 2.209 m"),
+])
+def test_an_air_cylinder_off_its_beam_or_stroke_is_refused(tmp_path, line, message):
+    """The piston rod's pin lies on the beam (at most A = 131 in from the centre bearing), and the
+    stated pressure's position within the stroke (86.98 in): one inch beyond either is refused."""
+    text = (REPO_ROOT / "configs" / "a-228d-246-86.toml").read_text(encoding="utf-8")
+    key = line.partition(" =")[0]
+    changed = re.sub(rf"^{key} = .*$", line, text, flags=re.M)
+    assert changed != text
+    path = tmp_path / "unit.toml"
+    path.write_text(changed, encoding="utf-8")
+    with pytest.raises(ConfigError, match=re.escape(message)):
+        load_unit(str(path)).counterbalance_model()
