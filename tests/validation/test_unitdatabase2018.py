@@ -34,6 +34,13 @@ def stroke(radius: float, **changed) -> float:
     return Linkage(**{**LETTERS, **changed}, crank_radius=radius, rotation=CLOCKWISE).stroke
 
 
+def class_three(a: float, c: float, i: float, k: float, p: float, r: float, rotation: int) -> ClassThreeLinkage:
+    """The class III four-bar of a database row's letters A, C, I, K, P and crank radius R [in]
+    (K the centre bearing to the crank shaft, so H - G = sqrt(K^2 - I^2))."""
+    return ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
+                             vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=rotation)
+
+
 def test_the_longest_hole_gives_the_stored_stroke():
     assert stroke(37.0) == pytest.approx(88.35, abs=0.005)
 
@@ -164,8 +171,7 @@ def test_a_mark_ii_row_gives_its_stored_stroke_and_a_long_counterclockwise_upstr
     stored one (rounding of the letters and of the stroke), and counterclockwise an upstroke of
     more than half a turn, 188-199 deg ([LufkinMarkII]: about 195 deg)."""
     _, _, a, c, i, k, p, r, stored = row
-    mark_ii = ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
-                                vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=COUNTERCLOCKWISE)
+    mark_ii = class_three(a, c, i, k, p, r, COUNTERCLOCKWISE)
     assert mark_ii.stroke == pytest.approx(stored, abs=0.02)
     assert 188.0 < math.degrees(mark_ii.dead_positions().upstroke_crank_travel) < 199.0
 
@@ -181,9 +187,7 @@ def test_a_reverse_marks_upstroke_is_shorter_than_the_mark_iis_of_its_size(tmp_p
     path = tmp_path / "unit.toml"
     path.write_text(reverse_mark_file(reverse), encoding="utf-8")
     reverse_mark = load_unit(str(path)).geometry.mechanism().dead_positions().upstroke_crank_travel
-    mark_ii = ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
-                                vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r,
-                                rotation=COUNTERCLOCKWISE).dead_positions().upstroke_crank_travel
+    mark_ii = class_three(a, c, i, k, p, r, COUNTERCLOCKWISE).dead_positions().upstroke_crank_travel
     assert math.pi < reverse_mark < mark_ii
     assert math.degrees(mark_ii - reverse_mark) > 1.5
 
@@ -217,8 +221,7 @@ def test_an_air_balanced_row_gives_its_stored_stroke_and_an_upstroke_of_half_a_t
     close to 180 deg")."""
     _, _, a, c, i, k, p, r, stored = row
     decimals = len(stored.partition(".")[2])
-    unit = ClassThreeLinkage(front_arm=a, rear_arm=c, pitman=p, horizontal_offset=i,
-                             vertical_offset=math.sqrt(k**2 - i**2), crank_radius=r, rotation=rotation)
+    unit = class_three(a, c, i, k, p, r, rotation)
     assert unit.stroke == pytest.approx(float(stored), abs=0.5 * 10.0**-decimals + 0.01)
     assert abs(math.degrees(unit.dead_positions().upstroke_crank_travel) - 180.0) < 1.0
 
